@@ -1,0 +1,76 @@
+// In-memory model of a 2D laser log: what the CARMEN reader produces, what the simulator
+// writes, and what the SLAM engine consumes. Readings are kept exactly as recorded; how the
+// engine treats no-returns follows the Karto spec (karto-algorithm.md §2, §10 item 1).
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "slamtune/common/pose2.h"
+
+namespace slamtune::io {
+
+enum class RecordKind { kFlaser, kRobotLaser1, kRawLaser, kOdom, kParam, kComment, kUnknown };
+
+const char* RecordKindName(RecordKind kind);
+
+// One laser scan, in file order.
+struct LaserScanRecord {
+  std::size_t line = 0;  // 1-based line of the record in its file
+  RecordKind kind = RecordKind::kFlaser;
+  // Beam geometry in the laser frame: beam i is at angle_min + i * angle_increment (rad).
+  double angle_min = 0.0;
+  double angle_increment = 0.0;
+  // The value at or above which a reading means "no return" for this scan (m): the record's
+  // own maximum range (ROBOTLASER1, RAWLASER) or the log's no-return value (FLASER).
+  double max_range = std::numeric_limits<double>::infinity();
+  std::vector<double> ranges;  // as recorded, unchanged (no clipping, no NaN replacement)
+  // Odometric poses at the scan: the laser's and the robot base's. FLASER gives both
+  // (x y theta = laser, odom_x odom_y odom_theta = robot); RAWLASER takes the robot pose
+  // interpolated from ODOM records and laser = robot (+) offset.
+  Pose2 laser_pose;
+  Pose2 robot_pose;
+  // Laser mounting offset in the robot frame, Between(robot_pose, laser_pose).
+  Pose2 laser_offset;
+  double ipc_time = 0.0;     // s, the record's ipc_timestamp (relations refer to it)
+  double logger_time = 0.0;  // s
+  std::size_t no_returns = 0;  // readings >= max_range, NaN, +-inf or negative
+};
+
+struct OdomRecord {
+  std::size_t line = 0;
+  Pose2 pose;
+  double tv = 0.0, rv = 0.0, accel = 0.0;
+  double ipc_time = 0.0, logger_time = 0.0;
+};
+
+struct LaserLog {
+  std::string path;  // as given to the reader ("<memory>" for streams)
+  std::vector<LaserScanRecord> scans;  // file order
+  std::vector<OdomRecord> odometry;    // file order
+  // Records seen per type name as written in the file ("FLASER", "ODOM", "PARAM", "#" for
+  // comments, and unknown names as they appear), including skipped ones.
+  std::map<std::string, std::size_t> record_counts;
+  std::map<std::string, std::string> params;  // PARAM name -> value (last wins)
+  std::size_t unknown_records = 0;  // lines of unknown type, skipped
+  std::size_t skipped_records = 0;  // malformed records skipped under --lenient
+  std::vector<std::string> skipped_reasons;  // "LINE: reason" for the first few skipped
+  // The no-return value assumed for the log (m) and how it was found ("PARAM <name>",
+  // "most frequent maximum reading", "--no-return", "ROBOTLASER1 max_range", "none").
+  double no_return_value = std::numeric_limits<double>::infinity();
+  std::string no_return_rule = "none";
+  // Consecutive laser scans (file order) whose ipc_timestamp is earlier than the previous one.
+  std::size_t time_backward_steps = 0;
+  double largest_backward_step_s = 0.0;
+};
+
+struct LogReadOptions {
+  bool lenient = false;        // skip malformed records (and count them) instead of failing
+  double no_return_value = 0;  // > 0 overrides the detected no-return value (m)
+  std::size_t max_scans = 0;   // stop after this many laser scans (0 = all); for short slices
+};
+
+}  // namespace slamtune::io
