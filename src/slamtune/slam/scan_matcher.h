@@ -1,0 +1,71 @@
+// Karto's correlative scan matcher (karto-algorithm.md §4): a byte correlation grid with
+// Gaussian smearing built from base scans seen from the scan's position (back-face filter),
+// an exhaustive coarse search over (y, x, theta), an optional fine pass, and the response and
+// covariance rules that gate loop closure.
+//
+// One ScanMatcher per role: the mapper keeps a *sequential* matcher (CorrelationSearchSpace*
+// parameters) and a *loop* matcher (LoopSearchSpace* parameters). The matcher owns its grids
+// and lookup tables and reuses them between calls; it is a value type (copying it copies the
+// caches), so engine state can be copied and continued.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <span>
+
+#include "slamtune/slam/laser_scan.h"
+
+namespace slamtune::slam {
+
+// Parameters of one matcher. Internal units (variance penalties already squared, §9.1).
+struct ScanMatcherOptions {
+  double search_dimension = 0.3;         // m, side of the xy search window (CorrelationSearchSpaceDimension)
+  double search_resolution = 0.01;       // m, grid cell size rho
+  double smear_deviation = 0.03;         // m, sigma of the smearing kernel
+  double range_threshold = 12.0;         // m, sets the grid margin (§4.1)
+  double coarse_angle_offset = 0.349066;       // rad, +- range of the coarse angle search
+  double coarse_angle_resolution = 0.0349066;  // rad, coarse angle step
+  double fine_angle_step = 0.0034907;          // rad, FineSearchAngleOffset (a step, §4.2 item 6)
+  double distance_variance_penalty = 0.09;     // m^2 (internal, = ROS value squared)
+  double angle_variance_penalty = 0.121847;    // rad^2 (internal)
+  double minimum_distance_penalty = 0.5;
+  double minimum_angle_penalty = 0.9;
+  bool use_response_expansion = false;
+  int threads = 1;  // angle search spread over this many threads; results independent of it
+
+  // Throws InputError naming the field when D/rho is not an even integer, sigma is outside
+  // [0.5 rho, 10 rho], or a value is non-positive (§4.1 [DECIDE]).
+  void Validate() const;
+};
+
+struct MatchResult {
+  Pose2 mean;                                       // sensor pose of the best match
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
+  double response = 0.0;                            // in [0, 1]
+};
+
+class ScanMatcher {
+ public:
+  explicit ScanMatcher(const ScanMatcherOptions& options);
+  ScanMatcher(const ScanMatcher&);
+  ScanMatcher& operator=(const ScanMatcher&);
+  ScanMatcher(ScanMatcher&&) noexcept;
+  ScanMatcher& operator=(ScanMatcher&&) noexcept;
+  ~ScanMatcher();
+
+  // MatchScan(scan, baseScans, doPenalize, doRefine) of §4.2: matches `scan` (at its current
+  // sensor pose) against `base_scans` (in the given order: running buffer oldest -> newest,
+  // chains in increasing state id). Returns the mean sensor pose, the covariance (positional
+  // part from the coarse pass, angular from the fine pass when refining) and the response.
+  MatchResult Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, bool penalize,
+                    bool refine);
+
+  const ScanMatcherOptions& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace slamtune::slam
