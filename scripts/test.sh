@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Installs what slamtune needs, builds it (with tests and benchmarks) and runs the whole test suite.
+# This is the README's test command and what CI runs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"
+ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 900

@@ -1,0 +1,74 @@
+#include "slamtune/optim/evaluation_record.h"
+
+namespace slamtune::optim {
+
+std::vector<double> EvaluationRecord::Objectives() const {
+  if (status != "ok") return {1.0, 1e9, 1e9};
+  return {occupied_ratio, corner_pixels, enclosed_areas};
+}
+
+EvaluationRecord EvaluationRecord::Failed(const std::string& key, const std::map<std::string, double>& params,
+                                          const std::string& reason) {
+  EvaluationRecord r;
+  r.key = key;
+  r.params = params;
+  r.status = "failed";
+  r.reason = reason;
+  return r;
+}
+
+void to_json(nlohmann::json& j, const EvaluationRecord& r) {
+  j = nlohmann::json{{"key", r.key},
+                     {"params", r.params},
+                     {"status", r.status},
+                     {"reason", r.reason},
+                     {"objectives",
+                      {{"occupied_ratio", r.occupied_ratio},
+                       {"corner_pixels", r.corner_pixels},
+                       {"enclosed_areas", r.enclosed_areas}}},
+                     {"second",
+                      {{"occupied_ratio_known", r.occupied_ratio_known},
+                       {"corners", r.corners},
+                       {"contours", r.contours}}},
+                     {"nodes", r.nodes},
+                     {"loop_closures", r.loop_closures},
+                     {"loop_scans", r.loop_scans},
+                     {"wall_s", r.wall_s}};
+  if (r.has_gt) {
+    j["gt_error"] = {{"trans_mean_m", r.trans_mean_m},
+                     {"trans_std_m", r.trans_std_m},
+                     {"rot_mean_deg", r.rot_mean_deg},
+                     {"rot_std_deg", r.rot_std_deg},
+                     {"relations_used", r.relations_used}};
+  }
+}
+
+void from_json(const nlohmann::json& j, EvaluationRecord& r) {
+  r.key = j.at("key").get<std::string>();
+  r.params = j.at("params").get<std::map<std::string, double>>();
+  r.status = j.at("status").get<std::string>();
+  r.reason = j.at("reason").get<std::string>();
+  const auto& o = j.at("objectives");
+  r.occupied_ratio = o.at("occupied_ratio").get<double>();
+  r.corner_pixels = o.at("corner_pixels").get<double>();
+  r.enclosed_areas = o.at("enclosed_areas").get<double>();
+  const auto& s = j.at("second");
+  r.occupied_ratio_known = s.at("occupied_ratio_known").get<double>();
+  r.corners = s.at("corners").get<double>();
+  r.contours = s.at("contours").get<double>();
+  r.nodes = j.at("nodes").get<int>();
+  r.loop_closures = j.at("loop_closures").get<int>();
+  r.loop_scans = j.at("loop_scans").get<std::vector<int>>();
+  r.wall_s = j.at("wall_s").get<double>();
+  r.has_gt = j.contains("gt_error");
+  if (r.has_gt) {
+    const auto& g = j.at("gt_error");
+    r.trans_mean_m = g.at("trans_mean_m").get<double>();
+    r.trans_std_m = g.at("trans_std_m").get<double>();
+    r.rot_mean_deg = g.at("rot_mean_deg").get<double>();
+    r.rot_std_deg = g.at("rot_std_deg").get<double>();
+    r.relations_used = g.at("relations_used").get<int>();
+  }
+}
+
+}  // namespace slamtune::optim

@@ -1,0 +1,48 @@
+// What one evaluation of a parameter set produced: the three objectives of the seed paper
+// (Han et al. 2020: eta, corner pixels, enclosed areas) with their second figures, the SLAM
+// run's outcome, and ground-truth errors when relations were given. Stored one row per
+// evaluation in the run's SQLite database, so it converts to and from JSON.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace slamtune::optim {
+
+struct EvaluationRecord {
+  std::string key;                        // SearchSpace::Key of the full assignment
+  std::map<std::string, double> params;   // ROS name -> value (varied and fixed)
+  std::string status = "ok";              // "ok" or "failed"
+  std::string reason;                     // why it failed (exception text, NaN, ...)
+
+  // Objectives (minimised) and second figures (metrics/map_quality.h).
+  double occupied_ratio = 0.0;        // eta
+  double corner_pixels = 0.0;         // n_c (objective)
+  double enclosed_areas = 0.0;        // n_e
+  double occupied_ratio_known = 0.0;  // occupied / (occupied + free)
+  double corners = 0.0;               // 8-connected corner clusters
+  double contours = 0.0;              // all contours
+
+  int nodes = 0;
+  int loop_closures = 0;
+  std::vector<int> loop_scans;  // log scan index of each accepted loop closure
+  double wall_s = 0.0;
+
+  bool has_gt = false;
+  double trans_mean_m = 0.0, trans_std_m = 0.0, rot_mean_deg = 0.0, rot_std_deg = 0.0;
+  int relations_used = 0;
+
+  // The objective vector handed to NSGA-III. A failed evaluation is scored worst on every
+  // objective (eta 1, and 1e9 corner pixels and enclosed areas), so the run goes on.
+  std::vector<double> Objectives() const;
+  static EvaluationRecord Failed(const std::string& key, const std::map<std::string, double>& params,
+                                 const std::string& reason);
+};
+
+void to_json(nlohmann::json& j, const EvaluationRecord& r);
+void from_json(const nlohmann::json& j, EvaluationRecord& r);
+
+}  // namespace slamtune::optim

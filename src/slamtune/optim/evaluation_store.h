@@ -1,0 +1,57 @@
+// The run database of `slamtune optimize`: one SQLite file per run folder holding the run's
+// settings, every finished evaluation (written and committed the moment it finishes, so an
+// interruption loses nothing) and the population of every finished generation.
+//
+// Resuming replays the seeded search with every finished evaluation served from here; the
+// stored generations let the replay check that it retraces the interrupted run exactly.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "slamtune/optim/evaluation_record.h"
+
+struct sqlite3;
+
+namespace slamtune::optim {
+
+class EvaluationStore {
+ public:
+  // Opens (creating if needed) the database at `path`. Throws InputError when the file
+  // cannot be opened or is not a slamtune run database.
+  explicit EvaluationStore(const std::string& path);
+  ~EvaluationStore();
+  EvaluationStore(const EvaluationStore&) = delete;
+  EvaluationStore& operator=(const EvaluationStore&) = delete;
+
+  const std::string& path() const { return path_; }
+
+  // Run settings (JSON), written once at the start of a run and compared on --resume.
+  void SetSettings(const nlohmann::json& settings);
+  std::optional<nlohmann::json> Settings() const;
+
+  // Finished evaluations, keyed by SearchSpace::Key. Put commits at once; thread-safe.
+  void Put(const EvaluationRecord& record);
+  std::optional<EvaluationRecord> Get(const std::string& key) const;
+  std::vector<EvaluationRecord> All() const;
+  std::size_t Count() const;
+
+  // Population of a finished generation (JSON with decision and objective vectors).
+  void PutGeneration(int generation, const nlohmann::json& population);
+  std::optional<nlohmann::json> Generation(int generation) const;
+  int LastGeneration() const;  // -1 when none
+
+ private:
+  void Exec(const std::string& sql) const;
+
+  std::string path_;
+  sqlite3* db_ = nullptr;
+  struct Lock;
+  std::unique_ptr<Lock> lock_;
+};
+
+}  // namespace slamtune::optim

@@ -1,0 +1,56 @@
+// Everything `slamtune optimize` found, handed to the report writer (report/): the four
+// candidates the report compares (the paper's recommendation, the knee of the final front,
+// the worst solution and slam_karto's defaults), every evaluation, and the populations
+// in objective space for the figures.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "slamtune/io/map_image.h"
+#include "slamtune/optim/evaluation_record.h"
+#include "slamtune/optim/search_space.h"
+
+namespace slamtune::optim {
+
+struct Candidate {
+  std::string label;        // "recommended", "knee", "worst", "default"
+  std::string description;  // one line: how it was chosen
+  EvaluationRecord record;
+  io::MapImage map;         // the map of its SLAM run (empty when not rendered)
+};
+
+struct GenerationSnapshot {
+  int generation = 0;  // 1-based, as in the paper's Figure 13
+  std::vector<std::vector<double>> decisions;   // per individual, SearchSpace order
+  std::vector<std::vector<double>> objectives;  // per individual: eta, corner pixels, enclosed areas
+};
+
+struct OptimizeResult {
+  std::string log_path;
+  std::string relations_path;  // empty without --relations
+  SearchSpace space;
+  nlohmann::json settings;     // population, generations, seed, jobs, ...
+
+  std::vector<Candidate> candidates;  // recommended, knee, worst, default (in that order)
+  int recommended_share = 0;          // individuals of the final population with the recommended set
+  std::string verdict;                // plain words: is the recommendation better than the defaults?
+  std::string lowest_error_label;     // with relations: the candidate with the lowest translational error
+
+  std::vector<EvaluationRecord> evaluations;    // every finished evaluation, in order
+  std::vector<GenerationSnapshot> snapshots;    // generations 1, G/2 and G (at least)
+  std::size_t evaluation_count = 0;             // SLAM runs done (this process and earlier, resumed)
+  std::size_t cache_hits = 0;                   // requests served without a SLAM run
+  double wall_s = 0.0;
+
+  const Candidate* Find(const std::string& label) const {
+    for (const auto& c : candidates)
+      if (c.label == label) return &c;
+    return nullptr;
+  }
+};
+
+}  // namespace slamtune::optim

@@ -1,0 +1,152 @@
+#include "slamtune/optim/search_space.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::optim {
+namespace {
+
+double ReadNumber(const YAML::Node& node, const std::string& path, const std::string& what) {
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(path, node.Mark().line + 1, fmt::format("{} must be a number", what));
+  }
+}
+
+void SortRealsFirst(std::vector<Dimension>& dims) {
+  std::stable_partition(dims.begin(), dims.end(), [](const Dimension& d) { return !d.integer; });
+}
+
+}  // namespace
+
+SearchSpace SearchSpace::PaperDefault() {
+  SearchSpace s;
+  s.dimensions = {{"loop_search_maximum_distance", 2.0, 6.0, false},
+                  {"loop_match_minimum_chain_size", 6.0, 20.0, true}};
+  s.fixed = {{"loop_match_minimum_response_coarse", 0.7}, {"loop_match_maximum_variance_coarse", 0.4}};
+  return s;
+}
+
+SearchSpace SearchSpace::FromYaml(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw InputError(path, 0, "cannot open search-space file");
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.line + 1, fmt::format("not valid YAML: {}", e.msg));
+  }
+  if (!root.IsMap()) throw InputError(path, 0, "search space must be a map with keys 'vary' and 'fix'");
+  SearchSpace s;
+  for (const auto& top : root) {
+    const std::string key = top.first.as<std::string>();
+    if (key == "vary") {
+      if (!top.second.IsMap()) throw InputError(path, top.second.Mark().line + 1, "'vary' must be a map");
+      for (const auto& item : top.second) {
+        Dimension d;
+        d.name = item.first.as<std::string>();
+        const YAML::Node spec = item.second;
+        if (!spec.IsMap() || !spec["min"] || !spec["max"]) {
+          throw InputError(path, spec.Mark().line + 1,
+                           fmt::format("'{}' needs {{min: LOW, max: HIGH[, type: int|real]}}", d.name));
+        }
+        for (const auto& field : spec) {
+          const std::string f = field.first.as<std::string>();
+          if (f != "min" && f != "max" && f != "type") {
+            throw InputError(path, field.first.Mark().line + 1,
+                             fmt::format("'{}': unknown key '{}' (allowed: min, max, type)", d.name, f));
+          }
+        }
+        d.lower = ReadNumber(spec["min"], path, d.name + ".min");
+        d.upper = ReadNumber(spec["max"], path, d.name + ".max");
+        if (spec["type"]) {
+          const std::string type = spec["type"].as<std::string>();
+          if (type != "int" && type != "real") {
+            throw InputError(path, spec["type"].Mark().line + 1,
+                             fmt::format("'{}': type must be int or real, not '{}'", d.name, type));
+          }
+          d.integer = type == "int";
+        }
+        s.dimensions.push_back(d);
+      }
+    } else if (key == "fix") {
+      if (!top.second.IsMap()) throw InputError(path, top.second.Mark().line + 1, "'fix' must be a map");
+      for (const auto& item : top.second) {
+        const std::string name = item.first.as<std::string>();
+        s.fixed[name] = ReadNumber(item.second, path, name);
+      }
+    } else {
+      throw InputError(path, top.first.Mark().line + 1,
+                       fmt::format("unknown key '{}' (allowed: vary, fix)", key));
+    }
+  }
+  SortRealsFirst(s.dimensions);
+  s.Validate(path);
+  return s;
+}
+
+void SearchSpace::Validate(const std::string& source) const {
+  if (dimensions.empty()) throw InputError(source, 0, "search space is empty: 'vary' names no parameter");
+  std::set<std::string> seen;
+  for (const Dimension& d : dimensions) {
+    if (!seen.insert(d.name).second) throw InputError(source, 0, fmt::format("'{}' is listed twice", d.name));
+    if (fixed.count(d.name)) throw InputError(source, 0, fmt::format("'{}' is both varied and fixed", d.name));
+    if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
+      throw InputError(source, 0, fmt::format("'{}': bounds must be finite", d.name));
+    }
+    if (!(d.lower < d.upper)) {
+      throw InputError(source, 0,
+                       fmt::format("'{}': bounds reversed or empty (min {} must be < max {})", d.name, d.lower,
+                                   d.upper));
+    }
+    if (d.integer && (d.lower != std::floor(d.lower) || d.upper != std::floor(d.upper))) {
+      throw InputError(source, 0,
+                       fmt::format("'{}': an int parameter needs whole-number bounds, got [{}, {}]", d.name,
+                                   d.lower, d.upper));
+    }
+  }
+  for (const auto& [name, value] : fixed) {
+    if (!std::isfinite(value)) throw InputError(source, 0, fmt::format("fixed '{}' must be finite", name));
+  }
+  for (std::size_t i = 1; i < dimensions.size(); ++i) {
+    SLAMTUNE_CHECK_MSG(!(dimensions[i - 1].integer && !dimensions[i].integer), "integer genes must come last");
+  }
+}
+
+std::size_t SearchSpace::integer_count() const {
+  return static_cast<std::size_t>(
+      std::count_if(dimensions.begin(), dimensions.end(), [](const Dimension& d) { return d.integer; }));
+}
+
+std::map<std::string, double> SearchSpace::Assign(const std::vector<double>& decision) const {
+  SLAMTUNE_CHECK(decision.size() == dimensions.size());
+  std::map<std::string, double> out = fixed;
+  for (std::size_t i = 0; i < dimensions.size(); ++i) {
+    out[dimensions[i].name] = dimensions[i].integer ? std::round(decision[i]) : decision[i];
+  }
+  return out;
+}
+
+std::string SearchSpace::Key(const std::map<std::string, double>& assignment) {
+  std::string key;
+  for (const auto& [name, value] : assignment) key += fmt::format("{}={:.17g};", name, value);
+  return key;
+}
+
+std::string SearchSpace::Fingerprint() const {
+  std::string f = "vary:";
+  for (const Dimension& d : dimensions) {
+    f += fmt::format("{}[{:.17g},{:.17g}]{};", d.name, d.lower, d.upper, d.integer ? "int" : "real");
+  }
+  f += "fix:" + Key(fixed);
+  return f;
+}
+
+}  // namespace slamtune::optim

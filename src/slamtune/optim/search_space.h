@@ -1,0 +1,55 @@
+// The space NSGA-III searches: which mapper parameters vary (by ROS name, with bounds and
+// type) and which are held fixed. Defaults are the seed paper's (Han et al., Sensors 2020,
+// §4): r = loop_search_maximum_distance in [2, 6] m, g = loop_match_minimum_chain_size in
+// [6, 20] (integer), p = loop_match_minimum_response_coarse = 0.7 and
+// q = loop_match_maximum_variance_coarse = 0.4 (ROS units) fixed.
+//
+// Decision vectors follow pagmo's convention: real genes first, integer genes last (nix), so
+// dimensions are stored reals-then-integers whatever order the YAML lists them in.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace slamtune::optim {
+
+struct Dimension {
+  std::string name;  // ROS parameter name, e.g. "loop_search_maximum_distance"
+  double lower = 0.0;
+  double upper = 0.0;
+  bool integer = false;
+};
+
+struct SearchSpace {
+  std::vector<Dimension> dimensions;     // reals first, then integers
+  std::map<std::string, double> fixed;  // held constant (ROS units)
+
+  static SearchSpace PaperDefault();
+
+  // Reads a YAML search space:
+  //   vary:
+  //     loop_search_maximum_distance: {min: 2.0, max: 6.0}
+  //     loop_match_minimum_chain_size: {min: 6, max: 20, type: int}
+  //   fix:
+  //     loop_match_minimum_response_coarse: 0.7
+  // Throws InputError naming the file and the problem (empty space, reversed bounds,
+  // non-integer bounds for an int, unknown keys, a name both varied and fixed).
+  static SearchSpace FromYaml(const std::string& path);
+
+  // Rejects an empty space, reversed or non-finite bounds, integer dimensions with
+  // fractional bounds, duplicates. `source` prefixes the message (file name or "--space").
+  void Validate(const std::string& source) const;
+
+  std::size_t size() const { return dimensions.size(); }
+  std::size_t integer_count() const;
+  // The fixed values plus the decision vector's values, by name. Integer genes are
+  // rounded (they already are, after NSGA-III's repair).
+  std::map<std::string, double> Assign(const std::vector<double>& decision) const;
+  // Canonical text of a full assignment, used as the cache key: "name=%.17g;..." sorted by name.
+  static std::string Key(const std::map<std::string, double>& assignment);
+  // A stable fingerprint of the space (names, bounds, types, fixed values) for --resume checks.
+  std::string Fingerprint() const;
+};
+
+}  // namespace slamtune::optim
