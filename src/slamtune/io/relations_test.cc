@@ -1,0 +1,98 @@
+#include "slamtune/io/relations.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string TempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("slamtune_relations_test_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+std::string WriteText(const std::string& name, const std::string& text) {
+  const std::string path = TempPath(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    ReadRelations(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
+  const std::string path = WriteText("ok", "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
+                                           "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
+  const auto relations = ReadRelations(path);
+  ASSERT_EQ(relations.size(), 2u);
+  EXPECT_DOUBLE_EQ(relations[0].t1, 976052896.784509);
+  EXPECT_DOUBLE_EQ(relations[0].t2, 976052900.5);
+  EXPECT_EQ(relations[0].delta, (Pose2{1.5, -0.25, 0.125}));
+  EXPECT_EQ(relations[0].line, 3u);
+  EXPECT_EQ(relations[1].delta.theta, -3.0);
+  EXPECT_EQ(relations[1].line, 4u);
+}
+
+TEST(RelationsTest, RoundTripIsExact) {
+  std::vector<Relation> relations = {{1134864643.12418, 1134864650.5, {0.1 + 0.2, -1.0 / 3.0, 2.0 / 7.0}, 0},
+                                     {5.0, 6.0, {1e-17, 123456.789, -kPi}, 0}};
+  const std::string path = TempPath("roundtrip");
+  WriteRelations(path, relations);
+  const auto back = ReadRelations(path);
+  ASSERT_EQ(back.size(), relations.size());
+  for (std::size_t i = 0; i < back.size(); ++i) {
+    EXPECT_EQ(back[i].t1, relations[i].t1);
+    EXPECT_EQ(back[i].t2, relations[i].t2);
+    EXPECT_EQ(back[i].delta, relations[i].delta);
+    EXPECT_EQ(back[i].line, i + 1);
+  }
+}
+
+TEST(RelationsTest, EmptyFileGivesEmptyList) {
+  EXPECT_TRUE(ReadRelations(WriteText("empty", "")).empty());
+}
+
+TEST(RelationsTest, WrongColumnCountNamesFileAndLine) {
+  const std::string path = WriteText("cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
+  EXPECT_EQ(ErrorOf(path), path + ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
+}
+
+TEST(RelationsTest, NonNumberIsRejected) {
+  const std::string path = WriteText("nonnum", "1 2 abc 0 0 0 0 0\n");
+  EXPECT_EQ(ErrorOf(path), path + ":1: column 3 (x) is not a number: 'abc'");
+}
+
+TEST(RelationsTest, NanAndInfAreRejected) {
+  const std::string nan_path = WriteText("nan", "1 2 0 0 0 0 0 nan\n");
+  EXPECT_EQ(ErrorOf(nan_path), nan_path + ":1: column 8 (yaw) is not finite: nan");
+  const std::string inf_path = WriteText("inf", "# c\ninf 2 0 0 0 0 0 0\n");
+  EXPECT_EQ(ErrorOf(inf_path), inf_path + ":2: column 1 (t1) is not finite: inf");
+}
+
+TEST(RelationsTest, TruncatedLastLineIsReported) {
+  const std::string path = WriteText("trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
+  EXPECT_THAT(ErrorOf(path), HasSubstr(":2: expected 8 columns"));
+  EXPECT_THAT(ErrorOf(path), HasSubstr("truncated last line"));
+}
+
+TEST(RelationsTest, UnreadableAndUnwritablePathsThrow) {
+  EXPECT_THAT(ErrorOf("/nonexistent/dir/x.relations"), HasSubstr("/nonexistent/dir/x.relations: cannot open"));
+  EXPECT_THROW(WriteRelations("/nonexistent/dir/x.relations", {}), InputError);
+}
+
+}  // namespace
+}  // namespace slamtune::io

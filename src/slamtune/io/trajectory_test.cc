@@ -1,0 +1,79 @@
+#include "slamtune/io/trajectory.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string TempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("slamtune_trajectory_test_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+std::string WriteText(const std::string& name, const std::string& text) {
+  const std::string path = TempPath(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    ReadTrajectory(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(TrajectoryTest, ReadsPosesAndSkipsComments) {
+  const auto poses = ReadTrajectory(WriteText("ok", "# t x y theta\n  \n10.5 1 2 0.5\n\t# indented comment\n11 -1 -2 -0.5\n"));
+  ASSERT_EQ(poses.size(), 2u);
+  EXPECT_EQ(poses[0].time, 10.5);
+  EXPECT_EQ(poses[0].pose, (Pose2{1, 2, 0.5}));
+  EXPECT_EQ(poses[1].pose, (Pose2{-1, -2, -0.5}));
+}
+
+TEST(TrajectoryTest, RoundTripKeepsMicrosecondsAndNineDigits) {
+  const std::vector<TimedPose> poses = {{976052857.337284, {12.3456789, -0.000123456789, 3.14159265}},
+                                        {1134864629.895182, {-45.6789012, 7.0, -1.23456789}}};
+  const std::string path = TempPath("roundtrip");
+  WriteTrajectory(path, poses);
+  const auto back = ReadTrajectory(path);
+  ASSERT_EQ(back.size(), poses.size());
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    EXPECT_NEAR(back[i].time, poses[i].time, 5e-7);
+    EXPECT_NEAR(back[i].pose.x, poses[i].pose.x, 1e-8 * std::abs(poses[i].pose.x));
+    EXPECT_NEAR(back[i].pose.y, poses[i].pose.y, 1e-8 * std::abs(poses[i].pose.y));
+    EXPECT_NEAR(back[i].pose.theta, poses[i].pose.theta, 1e-8);
+  }
+}
+
+TEST(TrajectoryTest, ErrorsNameFileLineAndProblem) {
+  const std::string cols = WriteText("cols", "1 0 0 0\n2 0 0\n");
+  EXPECT_EQ(ErrorOf(cols), cols + ":2: expected 4 columns (timestamp x y theta), found 3");
+  const std::string text = WriteText("text", "1 0 zero 0\n");
+  EXPECT_EQ(ErrorOf(text), text + ":1: column 3 (y) is not a number: 'zero'");
+  const std::string nan = WriteText("nan", "1 0 0 0\n2 0 0 -nan\n");
+  EXPECT_EQ(ErrorOf(nan), nan + ":2: column 4 (theta) is not finite: -nan");
+  const std::string inf = WriteText("inf", "-inf 0 0 0\n");
+  EXPECT_EQ(ErrorOf(inf), inf + ":1: column 1 (timestamp) is not finite: -inf");
+  EXPECT_THAT(ErrorOf("/nonexistent/t.txt"), HasSubstr("/nonexistent/t.txt: cannot open"));
+}
+
+TEST(TrajectoryTest, EmptyFileIsEmptyTrajectory) { EXPECT_TRUE(ReadTrajectory(WriteText("empty", "# only\n")).empty()); }
+
+TEST(TrajectoryTest, UnwritablePathThrows) {
+  EXPECT_THROW(WriteTrajectory("/nonexistent/dir/t.txt", {{0, {}}}), InputError);
+}
+
+}  // namespace
+}  // namespace slamtune::io
