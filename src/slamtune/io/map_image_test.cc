@@ -1,0 +1,224 @@
+#include "slamtune/io/map_image.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::io {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+// A 6 x 4 trinary map with every class present and an asymmetric layout (catches flips).
+MapImage SmallMap() {
+  MapImage map;
+  map.width = 6;
+  map.height = 4;
+  map.resolution = 0.025;
+  map.origin = Pose2{-12.345678901234, 3.3, 0.7};
+  map.pixels = {kMapOccupied, kMapOccupied, kMapFree,    kMapFree,    kMapUnknown, kMapUnknown,
+                kMapFree,     kMapFree,     kMapFree,    kMapOccupied, kMapUnknown, kMapUnknown,
+                kMapUnknown,  kMapFree,     kMapOccupied, kMapFree,    kMapFree,    kMapUnknown,
+                kMapUnknown,  kMapUnknown,  kMapUnknown, kMapUnknown, kMapFree,    kMapOccupied};
+  return map;
+}
+
+class MapImageFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("slamtune_map_image_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string WriteText(const std::string& name, const std::string& text) const {
+    std::ofstream(Path(name), std::ios::binary) << text;
+    return Path(name);
+  }
+  // Error text of ReadMap(path), or "" if it did not throw.
+  static std::string ReadError(const std::string& path) {
+    try {
+      ReadMap(path);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  fs::path dir_;
+};
+
+TEST(ClassifyGreyTest, FollowsMapServerRule) {
+  EXPECT_EQ(ClassifyGrey(0, false, 0.65, 0.196), CellClass::kOccupied);
+  EXPECT_EQ(ClassifyGrey(254, false, 0.65, 0.196), CellClass::kFree);
+  EXPECT_EQ(ClassifyGrey(255, false, 0.65, 0.196), CellClass::kFree);
+  // 205 -> p = 50/255 = 0.19608, just above free_thresh 0.196: unknown (why ROS1 uses 0.196).
+  EXPECT_EQ(ClassifyGrey(205, false, 0.65, 0.196), CellClass::kUnknown);
+  // Around occupied_thresh: v = 89 -> p = 166/255 = 0.651 (occupied), v = 90 -> p = 0.647.
+  EXPECT_EQ(ClassifyGrey(89, false, 0.65, 0.196), CellClass::kOccupied);
+  EXPECT_EQ(ClassifyGrey(90, false, 0.65, 0.196), CellClass::kUnknown);
+  // Strictly greater: p == occupied_thresh is not occupied.
+  EXPECT_EQ(ClassifyGrey(0, false, 1.0, 0.196), CellClass::kUnknown);
+  EXPECT_EQ(ClassifyGrey(255, true, 0.65, 0.196), CellClass::kOccupied);
+  EXPECT_EQ(ClassifyGrey(0, true, 0.65, 0.196), CellClass::kFree);
+  EXPECT_EQ(ClassifyGrey(100, true, 0.65, 0.196), CellClass::kUnknown);
+}
+
+TEST_F(MapImageFileTest, MapServerRoundTripKeepsPixelsResolutionAndOrigin) {
+  const MapImage map = SmallMap();
+  WriteMapServer(map, Path("round.yaml"));
+  ASSERT_TRUE(fs::exists(Path("round.pgm")));
+  std::ifstream pgm(Path("round.pgm"), std::ios::binary);
+  std::string magic(2, '\0');
+  pgm.read(magic.data(), 2);
+  EXPECT_EQ(magic, "P5");
+  std::ifstream yaml(Path("round.yaml"));
+  const std::string text((std::istreambuf_iterator<char>(yaml)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(text, HasSubstr("image: round.pgm"));  // relative name
+  EXPECT_THAT(text, HasSubstr("negate: 0"));
+
+  const MapImage back = ReadMap(Path("round.yaml"));
+  EXPECT_EQ(back.width, map.width);
+  EXPECT_EQ(back.height, map.height);
+  EXPECT_EQ(back.pixels, map.pixels);
+  EXPECT_EQ(back.resolution, map.resolution);
+  EXPECT_EQ(back.origin, map.origin);
+  EXPECT_FALSE(back.negate);
+}
+
+TEST_F(MapImageFileTest, PngRoundTripKeepsPixelsWithDefaultGeometry) {
+  const MapImage map = SmallMap();
+  WritePng(map, Path("map.png"));
+  const MapImage back = ReadMap(Path("map.png"));
+  EXPECT_EQ(back.pixels, map.pixels);
+  EXPECT_EQ(back.resolution, 0.05);
+  EXPECT_EQ(back.origin, Pose2{});
+}
+
+TEST_F(MapImageFileTest, ForeignGreyLevelsAreClassifiedToTrinary) {
+  // Grey values as another SLAM system might save them: dark = occupied, light = free.
+  cv::Mat grey(1, 5, CV_8UC1);
+  const std::uint8_t values[] = {10, 80, 128, 210, 250};
+  for (int i = 0; i < 5; ++i) grey.at<std::uint8_t>(0, i) = values[i];
+  ASSERT_TRUE(cv::imwrite(Path("foreign.pgm"), grey));
+  const MapImage map = ReadMap(Path("foreign.pgm"));
+  const std::vector<std::uint8_t> expected = {kMapOccupied, kMapOccupied, kMapUnknown, kMapFree, kMapFree};
+  EXPECT_EQ(map.pixels, expected);
+}
+
+TEST_F(MapImageFileTest, NegatedYamlGivesTheSameMap) {
+  const MapImage map = SmallMap();
+  // Negated encoding: occupied = 255, free = 0, unknown = 128 (p = 0.502).
+  cv::Mat grey(map.height, map.width, CV_8UC1);
+  for (int r = 0; r < map.height; ++r) {
+    for (int c = 0; c < map.width; ++c) {
+      const std::uint8_t v = map.at(c, r);
+      grey.at<std::uint8_t>(r, c) = v == kMapOccupied ? 255 : v == kMapFree ? 0 : 128;
+    }
+  }
+  fs::create_directories(dir_ / "img");
+  ASSERT_TRUE(cv::imwrite(Path("img/neg.png"), grey));
+  WriteText("neg.yaml",
+            "image: img/neg.png\nresolution: 0.025\norigin: [1.5, -2, 0]\nnegate: 1\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const MapImage back = ReadMap(Path("neg.yaml"));
+  EXPECT_EQ(back.pixels, map.pixels);
+  EXPECT_FALSE(back.negate);  // pixels are now plain trinary
+  EXPECT_EQ(back.origin, (Pose2{1.5, -2.0, 0.0}));
+  // The same image read without negate flips occupied and free.
+  const MapImage plain = ReadMap(Path("img/neg.png"));
+  EXPECT_EQ(plain.pixels[0], kMapFree);
+}
+
+TEST_F(MapImageFileTest, BadInputsNameTheFileAndTheProblem) {
+  EXPECT_THAT(ReadError(Path("nope.pgm")), HasSubstr("nope.pgm: cannot open map image: no such file"));
+  EXPECT_THAT(ReadError(dir_.string()), HasSubstr("is a directory"));
+  EXPECT_THAT(ReadError(WriteText("notes.pgm", "hello, I am text\n")),
+              HasSubstr("notes.pgm: not an image"));
+  EXPECT_THAT(ReadError(WriteText("zero.pgm", std::string("P5\n0 0\n255\n"))),
+              HasSubstr("zero.pgm: cannot decode the image: truncated, corrupt or empty (0 x 0)"));
+
+  ASSERT_TRUE(cv::imwrite(Path("colour.png"), cv::Mat(4, 4, CV_8UC3, cv::Scalar(10, 200, 30))));
+  EXPECT_THAT(ReadError(Path("colour.png")),
+              HasSubstr("colour.png: is a 3-channel 8-bit image; maps must be 8-bit greyscale"));
+  ASSERT_TRUE(cv::imwrite(Path("deep.png"), cv::Mat(4, 4, CV_16UC1, cv::Scalar(1000))));
+  EXPECT_THAT(ReadError(Path("deep.png")), HasSubstr("deep.png: is a 1-channel 16-bit image"));
+}
+
+TEST_F(MapImageFileTest, BadYamlNamesTheKey) {
+  ASSERT_TRUE(cv::imwrite(Path("ok.pgm"), cv::Mat(3, 3, CV_8UC1, cv::Scalar(254))));
+  const std::string tail = "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  EXPECT_THAT(ReadError(WriteText("a.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n" + tail)),
+              HasSubstr("a.yaml: missing required key 'image'"));
+  EXPECT_THAT(ReadError(WriteText("b.yaml", "image: ok.pgm\norigin: [0, 0, 0]\n" + tail)),
+              HasSubstr("b.yaml: missing required key 'resolution'"));
+  EXPECT_THAT(ReadError(WriteText("c.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n")),
+              HasSubstr("c.yaml: missing required key 'occupied_thresh'"));
+  EXPECT_THAT(ReadError(WriteText("d.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0]\n" + tail)),
+              HasSubstr("d.yaml:3: key 'origin' must be a list of 3 numbers"));
+  EXPECT_THAT(ReadError(WriteText("e.yaml", "image: ok.pgm\nresolution: fine\norigin: [0, 0, 0]\n" + tail)),
+              HasSubstr("e.yaml:2: key 'resolution' must be a number"));
+  EXPECT_THAT(ReadError(WriteText("f.yaml", "image: ok.pgm\nresolution: -1\norigin: [0, 0, 0]\n" + tail)),
+              HasSubstr("f.yaml: resolution = -1 m/cell; must be finite and > 0"));
+  EXPECT_THAT(ReadError(WriteText("g.yaml", "image: gone.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + tail)),
+              HasSubstr("gone.pgm: cannot open map image (named by " + Path("g.yaml") + "): no such file"));
+  EXPECT_THAT(ReadError(WriteText("h.yaml", "image: ok.pgm\nresolution: [0.05\n")),
+              HasSubstr("h.yaml:3: invalid YAML"));
+  EXPECT_THAT(ReadError(WriteText("i.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 2\n" + tail)),
+              HasSubstr("i.yaml:4: key 'negate' must be 0 or 1"));
+  EXPECT_THAT(ReadError(WriteText("j.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nmode: raw\n" + tail)),
+              HasSubstr("only 'trinary' and 'scale'"));
+  EXPECT_THAT(ReadError(WriteText("k.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+                                            "occupied_thresh: 0.2\nfree_thresh: 0.5\n")),
+              HasSubstr("k.yaml: free_thresh = 0.5 > occupied_thresh = 0.2"));
+  EXPECT_THAT(ReadError(WriteText("l.yaml", "- just\n- a list\n")), HasSubstr("l.yaml: not a map_server YAML"));
+  // The good file does read.
+  EXPECT_EQ(ReadMap(WriteText("ok.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + tail)).width, 3);
+}
+
+TEST_F(MapImageFileTest, WritersRejectEmptyMapsAndBadPaths) {
+  const MapImage empty;
+  try {
+    WriteMapServer(empty, Path("empty.yaml"));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("empty.yaml: empty map (0 x 0 cells)"));
+  }
+  EXPECT_FALSE(fs::exists(Path("empty.pgm")));
+  try {
+    WriteMapServer(SmallMap(), Path("map.pgm"));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("must end in .yaml or .yml"));
+  }
+  try {
+    WritePng(SmallMap(), Path("missing_dir/map.png"));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("missing_dir/map.png: cannot write"));
+  }
+  MapImage short_pixels = SmallMap();
+  short_pixels.pixels.pop_back();
+  try {
+    WritePng(short_pixels, Path("short.png"));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("map has 23 pixels but width x height = 6 x 4 = 24"));
+  }
+}
+
+}  // namespace
+}  // namespace slamtune::io
