@@ -1,0 +1,108 @@
+#include "slamtune/optim/batch_evaluator.h"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include "slamtune/common/error.h"
+#include "slamtune/optim/search_space.h"
+
+namespace slamtune::optim {
+
+BatchEvaluator::BatchEvaluator(EvaluateFn evaluate, EvaluationStore* store, int jobs)
+    : evaluate_(std::move(evaluate)), store_(store), jobs_(jobs) {
+  SLAMTUNE_CHECK(evaluate_ != nullptr);
+  if (jobs_ < 1) throw InputError("--jobs must be >= 1, got " + std::to_string(jobs_));
+}
+
+BatchEvaluatorStats BatchEvaluator::stats() const {
+  std::lock_guard guard(mutex_);
+  return stats_;
+}
+
+EvaluationRecord BatchEvaluator::RunOne(const Assignment& assignment, const std::string& key) {
+  const auto start = std::chrono::steady_clock::now();
+  EvaluationRecord record;
+  try {
+    record = evaluate_(assignment);
+    record.key = key;
+    record.params = assignment;
+    for (double v : record.Objectives()) {
+      if (!std::isfinite(v)) {
+        record = EvaluationRecord::Failed(key, assignment, "non-finite objective value");
+        break;
+      }
+    }
+  } catch (const std::exception& e) {
+    record = EvaluationRecord::Failed(key, assignment, e.what());
+  }
+  if (record.status != "ok") {
+    record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return record;
+}
+
+std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignment>& batch) {
+  std::vector<std::string> keys(batch.size());
+  std::map<std::string, std::size_t> first_of;  // key -> index of its first occurrence
+  std::vector<std::size_t> todo;                // indices to run
+  std::map<std::string, EvaluationRecord> known;
+  {
+    std::lock_guard guard(mutex_);
+    stats_.requested += batch.size();
+  }
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    keys[i] = SearchSpace::Key(batch[i]);
+    if (first_of.count(keys[i])) continue;
+    first_of[keys[i]] = i;
+    std::optional<EvaluationRecord> cached;
+    {
+      std::lock_guard guard(mutex_);
+      auto it = memory_.find(keys[i]);
+      if (it != memory_.end()) cached = it->second;
+    }
+    if (!cached && store_) cached = store_->Get(keys[i]);
+    if (cached) {
+      known[keys[i]] = *cached;
+    } else {
+      todo.push_back(i);
+    }
+  }
+
+  std::vector<EvaluationRecord> fresh(todo.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t t = next++; t < todo.size(); t = next++) {
+      const std::size_t i = todo[t];
+      fresh[t] = RunOne(batch[i], keys[i]);
+      if (store_) store_->Put(fresh[t]);  // committed at once: an interruption loses nothing finished
+      std::lock_guard guard(mutex_);
+      memory_[keys[i]] = fresh[t];
+      ++stats_.evaluated;
+      if (fresh[t].status != "ok") ++stats_.failed;
+      stats_.busy_s += fresh[t].wall_s;
+      if (progress_) progress_(fresh[t], stats_);
+    }
+  };
+  const int threads = std::min<int>(jobs_, static_cast<int>(todo.size()));
+  if (threads <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+    for (auto& th : pool) th.join();
+  }
+  for (std::size_t t = 0; t < todo.size(); ++t) known[keys[todo[t]]] = fresh[t];
+
+  std::vector<EvaluationRecord> out;
+  out.reserve(batch.size());
+  {
+    std::lock_guard guard(mutex_);
+    stats_.cache_hits += batch.size() - todo.size();
+  }
+  for (std::size_t i = 0; i < batch.size(); ++i) out.push_back(known.at(keys[i]));
+  return out;
+}
+
+}  // namespace slamtune::optim

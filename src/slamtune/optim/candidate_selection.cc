@@ -1,0 +1,165 @@
+#include "slamtune/optim/candidate_selection.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::optim {
+namespace {
+
+bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
+  bool strictly = false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k] > b[k]) return false;
+    if (a[k] < b[k]) strictly = true;
+  }
+  return strictly;
+}
+
+// Sum over objectives of (f - min) / (max - min) over the given records (zero ranges -> 0).
+std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records,
+                                   const std::vector<std::size_t>& among) {
+  const std::size_t m = 3;
+  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
+  for (std::size_t i : among) {
+    const auto f = records[i].Objectives();
+    for (std::size_t k = 0; k < m; ++k) {
+      lo[k] = std::min(lo[k], f[k]);
+      hi[k] = std::max(hi[k], f[k]);
+    }
+  }
+  std::vector<double> sums(records.size(), 0.0);
+  for (std::size_t i : among) {
+    const auto f = records[i].Objectives();
+    for (std::size_t k = 0; k < m; ++k) sums[i] += hi[k] > lo[k] ? (f[k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+  }
+  return sums;
+}
+
+std::vector<std::size_t> OkIndices(const std::vector<EvaluationRecord>& records) {
+  std::vector<std::size_t> ok;
+  for (std::size_t i = 0; i < records.size(); ++i)
+    if (records[i].status == "ok") ok.push_back(i);
+  return ok;
+}
+
+}  // namespace
+
+Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population) {
+  SLAMTUNE_CHECK(!population.empty());
+  std::map<std::string, int> count;
+  for (const auto& r : population) ++count[r.key];
+  std::vector<std::size_t> all(population.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  const auto sums = NormalisedSums(population, all);
+  Recommendation best;
+  best.share = -1;
+  for (std::size_t i = 0; i < population.size(); ++i) {
+    const int c = count[population[i].key];
+    const bool ok = population[i].status == "ok";
+    const bool best_ok = best.share >= 0 && population[best.index].status == "ok";
+    if (best.share < 0 || (ok && !best_ok) ||
+        (ok == best_ok && (c > best.share || (c == best.share && sums[i] < sums[best.index])))) {
+      best = {i, c};
+    }
+  }
+  return best;
+}
+
+std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records) {
+  const auto ok = OkIndices(records);
+  std::vector<std::size_t> front;
+  for (std::size_t i : ok) {
+    const auto fi = records[i].Objectives();
+    bool dominated = false;
+    for (std::size_t j : ok) {
+      if (j != i && Dominates(records[j].Objectives(), fi)) {
+        dominated = true;
+        break;
+      }
+    }
+    if (!dominated) front.push_back(i);
+  }
+  return front;
+}
+
+std::size_t Knee(const std::vector<EvaluationRecord>& records) {
+  const auto front = NonDominated(records);
+  SLAMTUNE_CHECK(!front.empty());
+  const std::size_t m = 3;
+  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
+  for (std::size_t i : front) {
+    const auto f = records[i].Objectives();
+    for (std::size_t k = 0; k < m; ++k) {
+      lo[k] = std::min(lo[k], f[k]);
+      hi[k] = std::max(hi[k], f[k]);
+    }
+  }
+  std::size_t best = front.front();
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t i : front) {
+    const auto f = records[i].Objectives();
+    double d = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+      const double z = hi[k] > lo[k] ? (f[k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+      d += z * z;
+    }
+    if (d < best_d) {
+      best_d = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+std::size_t Worst(const std::vector<EvaluationRecord>& records) {
+  SLAMTUNE_CHECK(!records.empty());
+  const auto ok = OkIndices(records);
+  if (ok.empty()) return 0;
+  const auto sums = NormalisedSums(records, ok);
+  std::size_t worst = ok.front();
+  for (std::size_t i : ok)
+    if (sums[i] > sums[worst]) worst = i;
+  return worst;
+}
+
+std::string Verdict(const EvaluationRecord& rec, const EvaluationRecord& def, const VerdictOptions& options) {
+  if (rec.status != "ok") return "The recommended parameter set failed to evaluate: " + rec.reason;
+  if (def.status != "ok") return "slam_karto's defaults failed to evaluate on this log: " + def.reason;
+  const auto a = rec.Objectives(), b = def.Objectives();
+  static const char* names[] = {"occupied-cell proportion", "corner pixels", "enclosed areas"};
+  int better = 0, worse = 0;
+  std::string detail;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double scale = std::max({std::fabs(a[k]), std::fabs(b[k]), 1e-12});
+    const double rel = (a[k] - b[k]) / scale;
+    if (rel < -options.equivalence_tolerance) ++better;
+    if (rel > options.equivalence_tolerance) ++worse;
+    detail += fmt::format("{}{} {:.6g} vs {:.6g}", k ? ", " : "", names[k], a[k], b[k]);
+  }
+  const std::string loops =
+      fmt::format("loop closures {} (recommended) vs {} (defaults)", rec.loop_closures, def.loop_closures);
+  if (better == 0 && worse == 0) {
+    return fmt::format(
+        "Equivalent: the recommendation and slam_karto's defaults give maps whose objectives differ by less "
+        "than {:.0f}% ({}; {}). The objectives do not rank working runs this close; keep the defaults unless "
+        "ground truth says otherwise.",
+        100 * options.equivalence_tolerance, detail, loops);
+  }
+  if (worse == 0) {
+    return fmt::format("The recommendation gives a cleaner map than slam_karto's defaults ({}; {}).", detail, loops);
+  }
+  if (better == 0) {
+    return fmt::format("slam_karto's defaults score better than the recommendation on this log ({}; {}).", detail,
+                       loops);
+  }
+  return fmt::format("Mixed: the recommendation is better on some objectives and worse on others ({}; {}).", detail,
+                     loops);
+}
+
+}  // namespace slamtune::optim

@@ -1,0 +1,48 @@
+// How `slamtune optimize` picks the parameter sets it reports (issue: choosing the answer).
+//
+// * Recommended: the seed paper's choice (Han et al. 2020, §4.3) — the parameter set shared by
+//   most individuals of the final population; ties go to the one with the lowest sum of
+//   normalised objectives, then to the earliest.
+// * Knee: the member of the final non-dominated front closest to the ideal point once each
+//   objective is normalised by the front's range (a simple, scale-free knee).
+// * Worst: the evaluated set with the largest sum of normalised objectives (the paper shows it
+//   for contrast).
+// * Verdict: compares the recommendation with slam_karto's defaults in plain words. The
+//   objectives separate failed loop closure from working runs well but barely rank working
+//   runs, so differences within `equivalence_tolerance` are called equivalent, not a gain.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "slamtune/optim/evaluation_record.h"
+
+namespace slamtune::optim {
+
+struct Recommendation {
+  std::size_t index = 0;  // into the population
+  int share = 0;          // individuals with the same parameter set
+};
+
+// `population`: the final population's records (one per individual). Must not be empty.
+Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population);
+
+// Indices of the non-dominated records (status ok) of `records`, in input order.
+std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records);
+
+// Index of the knee of `records`' non-dominated front. Must contain an ok record.
+std::size_t Knee(const std::vector<EvaluationRecord>& records);
+
+// Index of the worst ok record (largest sum of objectives normalised over all ok records);
+// a failed record only when none is ok.
+std::size_t Worst(const std::vector<EvaluationRecord>& records);
+
+struct VerdictOptions {
+  double equivalence_tolerance = 0.02;  // relative difference per objective treated as no difference
+};
+
+// One paragraph comparing `recommended` with `defaults` (slam_karto's r = 4, g = 10).
+std::string Verdict(const EvaluationRecord& recommended, const EvaluationRecord& defaults,
+                    const VerdictOptions& options = {});
+
+}  // namespace slamtune::optim

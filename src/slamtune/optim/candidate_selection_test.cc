@@ -1,0 +1,54 @@
+#include "slamtune/optim/candidate_selection.h"
+
+#include <gtest/gtest.h>
+
+namespace slamtune::optim {
+namespace {
+
+EvaluationRecord R(const std::string& key, double eta, double nc, double ne, int loops = 1) {
+  EvaluationRecord r;
+  r.key = key;
+  r.occupied_ratio = eta;
+  r.corner_pixels = nc;
+  r.enclosed_areas = ne;
+  r.loop_closures = loops;
+  return r;
+}
+
+TEST(CandidateSelection, MajorityWinsThenObjectivesBreakTies) {
+  const std::vector<EvaluationRecord> pop{R("a", 0.03, 100, 5), R("b", 0.02, 90, 4), R("a", 0.03, 100, 5),
+                                          R("c", 0.05, 200, 9)};
+  const auto rec = RecommendByMajority(pop);
+  EXPECT_EQ(pop[rec.index].key, "a");
+  EXPECT_EQ(rec.share, 2);
+  const std::vector<EvaluationRecord> tie{R("a", 0.03, 100, 5), R("b", 0.02, 90, 4)};
+  EXPECT_EQ(tie[RecommendByMajority(tie).index].key, "b");
+}
+
+TEST(CandidateSelection, FailedSetsAreNeverRecommendedWhenAnOkOneExists) {
+  auto f = EvaluationRecord::Failed("x", {}, "boom");
+  const std::vector<EvaluationRecord> pop{f, f, f, R("a", 0.03, 100, 5)};
+  EXPECT_EQ(pop[RecommendByMajority(pop).index].key, "a");
+}
+
+TEST(CandidateSelection, FrontKneeAndWorst) {
+  const std::vector<EvaluationRecord> all{R("lo-eta", 0.01, 300, 9), R("mid", 0.02, 120, 4),
+                                          R("lo-nc", 0.05, 100, 8), R("bad", 0.06, 400, 12),
+                                          EvaluationRecord::Failed("f", {}, "x")};
+  const auto front = NonDominated(all);
+  EXPECT_EQ(front, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(all[Knee(all)].key, "mid");
+  EXPECT_EQ(all[Worst(all)].key, "bad");
+}
+
+TEST(CandidateSelection, VerdictCallsSmallDifferencesEquivalent) {
+  const auto v = Verdict(R("r", 0.0300, 1000, 10), R("d", 0.0301, 1005, 10));
+  EXPECT_EQ(v.rfind("Equivalent", 0), 0u) << v;
+  EXPECT_NE(Verdict(R("r", 0.02, 800, 8), R("d", 0.03, 1000, 10)).find("cleaner map"), std::string::npos);
+  EXPECT_NE(Verdict(R("r", 0.04, 1200, 10), R("d", 0.03, 1000, 10)).find("defaults score better"),
+            std::string::npos);
+  EXPECT_NE(Verdict(R("r", 0.02, 1200, 10), R("d", 0.03, 1000, 10)).find("Mixed"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace slamtune::optim
