@@ -1,0 +1,142 @@
+#include "slamtune/slam/correlation_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/slam/back_face_filter.h"
+
+namespace slamtune::slam {
+namespace {
+
+int AlignTo8(int v) { return (v + 7) & ~7; }
+
+}  // namespace
+
+CorrelationGridGeometry CorrelationGridGeometry::Compute(double search_dimension, double resolution,
+                                                         double smear_deviation, double range_threshold) {
+  // §4.1 table; every quantity is in cells.
+  CorrelationGridGeometry g;
+  g.search_side = KartoRoundToInt(search_dimension / resolution) + 1;
+  g.margin = static_cast<int>(std::ceil(range_threshold / resolution));
+  g.roi_side = g.search_side + 2 * g.margin;
+  g.kernel_half = KartoRoundToInt(2.0 * smear_deviation / resolution);
+  g.border = g.kernel_half + 1;
+  g.stored_side = g.roi_side + 2 * g.border;
+  g.stride = AlignTo8(g.stored_side);
+  return g;
+}
+
+std::vector<std::uint8_t> MakeSmearKernel(double smear_deviation, double resolution) {
+  const int half = KartoRoundToInt(2.0 * smear_deviation / resolution);
+  const int side = 2 * half + 1;
+  std::vector<std::uint8_t> kernel(static_cast<std::size_t>(side) * side);
+  for (int j = -half; j <= half; ++j) {
+    for (int i = -half; i <= half; ++i) {
+      // §4.1: Round(100 exp(-0.5 (d/sigma)^2)), d = rho sqrt(i^2 + j^2). Evaluated as Karto
+      // does (hypot of the metric offsets, pow(., 2)) so that no value near .5 can round
+      // differently.
+      const double distance = std::hypot(i * resolution, j * resolution);
+      const double z = std::exp(-0.5 * std::pow(distance / smear_deviation, 2));
+      const double value = KartoRound(z * kCorrelationOccupied);
+      SLAMTUNE_CHECK(value >= 0.0 && value <= 255.0);
+      kernel[static_cast<std::size_t>((i + half) + side * (j + half))] = static_cast<std::uint8_t>(value);
+    }
+  }
+  return kernel;
+}
+
+CorrelationGrid::CorrelationGrid(double search_dimension, double resolution, double smear_deviation,
+                                 double range_threshold)
+    : geometry_(CorrelationGridGeometry::Compute(search_dimension, resolution, smear_deviation, range_threshold)),
+      resolution_(resolution),
+      scale_(1.0 / resolution),
+      // Karto computes the kernel from the grid's resolution read back as 1/scale (the
+      // same value as rho for the usual resolutions); the half-size of the border from rho.
+      kernel_(MakeSmearKernel(smear_deviation, 1.0 / scale_)) {
+  SLAMTUNE_CHECK(kernel_.size() == static_cast<std::size_t>((2 * geometry_.kernel_half + 1) * (2 * geometry_.kernel_half + 1)));
+  SLAMTUNE_CHECK(geometry_.data_size() + kPadding < std::numeric_limits<std::int32_t>::max());
+  data_.assign(static_cast<std::size_t>(geometry_.data_size() + kPadding), 0);
+  touched_x0_ = touched_y0_ = std::numeric_limits<int>::max();
+  touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();
+}
+
+Eigen::Vector2i CorrelationGrid::WorldToGrid(const Eigen::Vector2d& world) const {
+  return {KartoRoundToInt((world.x() - roi_origin_.x()) * scale_),
+          KartoRoundToInt((world.y() - roi_origin_.y()) * scale_)};
+}
+
+std::int32_t CorrelationGrid::GridIndex(const Eigen::Vector2i& roi_cell) const {
+  const int x = roi_cell.x() + geometry_.border;
+  const int y = roi_cell.y() + geometry_.border;
+  SLAMTUNE_CHECK_MSG(x >= 0 && x < geometry_.stored_side && y >= 0 && y < geometry_.stored_side,
+                     "correlation grid cell out of range");
+  return x + y * geometry_.stride;
+}
+
+std::uint8_t CorrelationGrid::ValueAt(int roi_x, int roi_y) const {
+  return data_[static_cast<std::size_t>(GridIndex({roi_x, roi_y}))];
+}
+
+void CorrelationGrid::Touch(int x0, int y0, int x1, int y1) {
+  touched_x0_ = std::min(touched_x0_, x0);
+  touched_y0_ = std::min(touched_y0_, y0);
+  touched_x1_ = std::max(touched_x1_, x1);
+  touched_y1_ = std::max(touched_y1_, y1);
+}
+
+void CorrelationGrid::Clear() {
+  if (touched_x0_ > touched_x1_) return;
+  const std::size_t width = static_cast<std::size_t>(touched_x1_ - touched_x0_ + 1);
+  for (int y = touched_y0_; y <= touched_y1_; ++y) {
+    std::memset(data_.data() + static_cast<std::size_t>(touched_x0_ + y * geometry_.stride), 0, width);
+  }
+  touched_x0_ = touched_y0_ = std::numeric_limits<int>::max();
+  touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();
+}
+
+void CorrelationGrid::Smear(int stored_x, int stored_y) {
+  // Max-merge of the kernel centred on the cell (§4.3); the border b = h + 1 keeps every
+  // kernel cell inside the stored grid for any ROI cell.
+  const int half = geometry_.kernel_half;
+  const int side = 2 * half + 1;
+  for (int j = -half; j <= half; ++j) {
+    std::uint8_t* row = data_.data() + (stored_x - half) + (stored_y + j) * geometry_.stride;
+    const std::uint8_t* k = kernel_.data() + side * (j + half);
+    for (int i = 0; i < side; ++i) row[i] = std::max(row[i], k[i]);
+  }
+  Touch(stored_x - half, stored_y - half, stored_x + half, stored_y + half);
+}
+
+bool CorrelationGrid::AddPoint(const Eigen::Vector2d& world) {
+  // Karto casts non-finite coordinates to int (an out-of-range value on x86); we test
+  // explicitly (§4.3, last item of the back-face filter).
+  if (!std::isfinite(world.x()) || !std::isfinite(world.y())) return false;
+  const double gx = KartoRound((world.x() - roi_origin_.x()) * scale_);
+  const double gy = KartoRound((world.y() - roi_origin_.y()) * scale_);
+  // Compare in double before the cast: a far point must not overflow the 32-bit cast.
+  if (!(gx >= 0.0 && gx < geometry_.roi_side && gy >= 0.0 && gy < geometry_.roi_side)) return false;
+  const int x = static_cast<int>(gx) + geometry_.border;
+  const int y = static_cast<int>(gy) + geometry_.border;
+  std::uint8_t& cell = data_[static_cast<std::size_t>(x + y * geometry_.stride)];
+  // "Already 100 -> skip, no smear" (§4.3 [QUIRK]): a kernel value may have rounded to 100.
+  if (cell == kCorrelationOccupied) return false;
+  cell = kCorrelationOccupied;
+  Touch(x, y, x, y);
+  Smear(x, y);
+  return true;
+}
+
+void CorrelationGrid::AddScans(std::span<const LaserScan* const> base_scans, const Eigen::Vector2d& viewpoint) {
+  Clear();
+  for (const LaserScan* scan : base_scans) {
+    SLAMTUNE_CHECK(scan != nullptr);
+    FilterBackFaces(scan->unfiltered_points(), viewpoint, &valid_points_);
+    for (const Eigen::Vector2d& p : valid_points_) AddPoint(p);
+  }
+}
+
+}  // namespace slamtune::slam

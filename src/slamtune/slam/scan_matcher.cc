@@ -1,0 +1,301 @@
+// Karto's correlative scan matcher, karto-algorithm.md §4.2-§4.6. The exhaustive search is
+// done on integer byte sums (correlation_search.h) and turned into Karto's responses with
+// the same division, penalties and reductions, so results are bit-identical to the
+// straightforward double loop (see scan_matcher_test.cc, "MatchesReferenceLoop").
+#include "slamtune/slam/scan_matcher.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/slam/correlation_grid.h"
+#include "slamtune/slam/correlation_search.h"
+#include "slamtune/slam/match_covariance.h"
+#include "slamtune/slam/scan_lookup_table.h"
+
+namespace slamtune::slam {
+namespace {
+
+// Penalty gains of §1.1.
+constexpr double kDistancePenaltyGain = 0.2;
+constexpr double kAnglePenaltyGain = 0.2;
+// Karto's degree->radian factor, written as its literal so that 20 degrees (response
+// expansion, §4.2 item 5) has Karto's exact bits.
+constexpr double kRadiansPerDegree = 0.01745329251994329577;
+
+void RequirePositive(const char* field, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError(fmt::format("scan matcher option {} = {}: must be a positive finite number", field, value));
+  }
+}
+
+}  // namespace
+
+void ScanMatcherOptions::Validate() const {
+  RequirePositive("search_dimension", search_dimension);
+  RequirePositive("search_resolution", search_resolution);
+  RequirePositive("smear_deviation", smear_deviation);
+  RequirePositive("range_threshold", range_threshold);
+  RequirePositive("coarse_angle_offset", coarse_angle_offset);
+  RequirePositive("coarse_angle_resolution", coarse_angle_resolution);
+  RequirePositive("fine_angle_step", fine_angle_step);
+  RequirePositive("distance_variance_penalty", distance_variance_penalty);
+  RequirePositive("angle_variance_penalty", angle_variance_penalty);
+  // §4.1 [DECIDE]: the window must hold an odd number of cells with the centre on a cell and
+  // the coarse lattice (every second cell) must end on the window edge, i.e. D/rho must be an
+  // even integer (within Karto's 1e-6 tolerance). Otherwise Karto's probability-grid lookup
+  // can fall outside the grid.
+  const double cells = search_dimension / search_resolution;
+  const double rounded = KartoRound(cells);
+  if (!KartoEqual(rounded, cells) || std::fmod(rounded, 2.0) != 0.0) {
+    throw InputError(fmt::format(
+        "scan matcher option search_dimension / search_resolution = {} / {} = {}: must be an even integer",
+        search_dimension, search_resolution, cells));
+  }
+  // Karto throws outside [0.5 rho, 10 rho] (the kernel spans 2 sigma, §4.1).
+  if (smear_deviation < 0.5 * search_resolution || smear_deviation > 10 * search_resolution) {
+    throw InputError(fmt::format(
+        "scan matcher option smear_deviation = {}: must lie in [0.5, 10] x search_resolution = [{}, {}]",
+        smear_deviation, 0.5 * search_resolution, 10 * search_resolution));
+  }
+  if (!(minimum_distance_penalty >= 0.0 && minimum_distance_penalty <= 1.0)) {
+    throw InputError(fmt::format("scan matcher option minimum_distance_penalty = {}: must lie in [0, 1]",
+                                 minimum_distance_penalty));
+  }
+  if (!(minimum_angle_penalty >= 0.0 && minimum_angle_penalty <= 1.0)) {
+    throw InputError(
+        fmt::format("scan matcher option minimum_angle_penalty = {}: must lie in [0, 1]", minimum_angle_penalty));
+  }
+  if (threads < 1) throw InputError(fmt::format("scan matcher option threads = {}: must be >= 1", threads));
+  // Linear indices are 32-bit (§1.2): the stored grid must have fewer than 2^31 cells.
+  const auto geometry =
+      CorrelationGridGeometry::Compute(search_dimension, search_resolution, smear_deviation, range_threshold);
+  if (geometry.data_size() + CorrelationGrid::kPadding >= (std::int64_t{1} << 31)) {
+    throw InputError(fmt::format(
+        "scan matcher options range_threshold = {}, search_resolution = {}: the correlation grid would have {} "
+        "cells, more than 2^31",
+        range_threshold, search_resolution, geometry.data_size()));
+  }
+}
+
+struct ScanMatcher::Impl {
+  explicit Impl(const ScanMatcherOptions& o)
+      : options(o),
+        grid(o.search_dimension, o.search_resolution, o.smear_deviation, o.range_threshold),
+        probabilities(grid.geometry().search_side, o.search_resolution) {}
+
+  // CorrelateScan of §4.5; returns min(best, 1) and writes the mean and the covariance
+  // (positional part in the coarse pass, cov(2,2) in the fine pass).
+  double CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy, double step_xy,
+                       double angle_offset, double angle_step, bool penalize, bool fine, Pose2* mean,
+                       Eigen::Matrix3d* cov);
+
+  ScanMatcherOptions options;
+  CorrelationGrid grid;
+  SearchProbabilityGrid probabilities;
+  // Buffers reused across calls.
+  ScanLookupTable table;
+  CandidateCells cells;
+  std::vector<double> offsets;  // lattice offsets from the centre, both axes
+  std::vector<std::int32_t> sums;
+  std::vector<double> responses;
+  std::vector<double> response_of_sum;  // sum -> sum / (100 * beams), for the current beam count
+  std::vector<double> heading_cos, heading_sin;  // of the normalised heading alpha_k
+  std::vector<double> raw_at_best, angles;       // angular covariance inputs
+};
+
+double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy,
+                                        double step_xy, double angle_offset, double angle_step, bool penalize,
+                                        bool fine, Pose2* mean, Eigen::Matrix3d* cov) {
+  // §4.4: lookup tables for the headings of this pass.
+  table.Compute(scan, center.theta, angle_offset, angle_step, grid.roi_origin(), grid.scale(),
+                grid.geometry().stride);
+  const int num_angles = table.num_angles();
+  const int num_beams = table.num_beams();
+  if (!fine) probabilities.Reset({center.x - offset_xy, center.y - offset_xy});
+
+  // Lattice x_j = -offset + j step, j = 0 .. Round(2 offset / step) (§4.5).
+  const int n = static_cast<int>(KartoRound(offset_xy * 2.0 / step_xy) + 1);
+  offsets.resize(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) offsets[static_cast<std::size_t>(j)] = -offset_xy + j * step_xy;
+  cells.nx = cells.ny = n;
+  cells.index.resize(static_cast<std::size_t>(n) * n);
+  for (int yi = 0; yi < n; ++yi) {
+    for (int xi = 0; xi < n; ++xi) {
+      const Eigen::Vector2d position(center.x + offsets[static_cast<std::size_t>(xi)],
+                                     center.y + offsets[static_cast<std::size_t>(yi)]);
+      cells.index[static_cast<std::size_t>(yi) * n + xi] = grid.GridIndex(grid.WorldToGrid(position));
+    }
+  }
+  const auto [min_cell, max_cell] = std::minmax_element(cells.index.begin(), cells.index.end());
+  table.Partition(*min_cell, *max_cell, grid.data_size());
+  SumAllCandidates(grid.data(), grid.data_size(), table, cells, fine ? 1 : options.threads, &sums);
+
+  // response = sum / (beams * 100) (§4.5), the divisor counting INVALID beams too. A table
+  // indexed by the integer sum gives the same double as dividing each time.
+  const double divisor = static_cast<double>(static_cast<std::uint32_t>(num_beams) * 100u);
+  const std::size_t max_sum = static_cast<std::size_t>(num_beams) * 100;
+  if (response_of_sum.size() != max_sum + 1) {
+    response_of_sum.resize(max_sum + 1);
+    for (std::size_t s = 0; s <= max_sum; ++s) response_of_sum[s] = static_cast<double>(s) / divisor;
+  }
+
+  // Responses in Karto's order y, x, heading, with the penalties of §4.5 (offsets from the
+  // search centre; not applied to zero responses).
+  responses.resize(sums.size());
+  for (int yi = 0; yi < n; ++yi) {
+    const double y = offsets[static_cast<std::size_t>(yi)];
+    for (int xi = 0; xi < n; ++xi) {
+      const double x = offsets[static_cast<std::size_t>(xi)];
+      const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
+      for (int k = 0; k < num_angles; ++k) {
+        double response = response_of_sum[static_cast<std::size_t>(sums[base + k])];
+        if (penalize && !KartoEqual(response, 0.0)) {
+          const double squared_distance = x * x + y * y;
+          const double distance_penalty =
+              std::max(1.0 - (kDistancePenaltyGain * squared_distance / options.distance_variance_penalty),
+                       options.minimum_distance_penalty);
+          const double da = table.angle(k) - center.theta;
+          const double angle_penalty = std::max(
+              1.0 - (kAnglePenaltyGain * (da * da) / options.angle_variance_penalty), options.minimum_angle_penalty);
+          response *= (distance_penalty * angle_penalty);
+        }
+        responses[base + k] = response;
+      }
+    }
+  }
+
+  // Best response (start value -1) and, in the coarse pass, the probability grid: the max
+  // over headings at each lattice position (§4.5).
+  double best = -1.0;
+  for (const double r : responses) best = std::max(best, r);
+  if (!fine) {
+    for (int yi = 0; yi < n; ++yi) {
+      for (int xi = 0; xi < n; ++xi) {
+        double& cell = probabilities.at(probabilities.IndexOf(center.x + offsets[static_cast<std::size_t>(xi)],
+                                                              center.y + offsets[static_cast<std::size_t>(yi)]));
+        const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
+        for (int k = 0; k < num_angles; ++k) cell = std::max(responses[base + k], cell);
+      }
+    }
+  }
+
+  // Mean of every pose whose response equals the best within 1e-6, in loop order:
+  // arithmetic mean of positions, circular mean of the normalised headings (§4.5).
+  heading_cos.resize(static_cast<std::size_t>(num_angles));
+  heading_sin.resize(static_cast<std::size_t>(num_angles));
+  for (int k = 0; k < num_angles; ++k) {
+    const double heading = NormalizeAngle(table.angle(k));
+    heading_cos[static_cast<std::size_t>(k)] = std::cos(heading);
+    heading_sin[static_cast<std::size_t>(k)] = std::sin(heading);
+  }
+  double sum_x = 0.0, sum_y = 0.0, sum_cos = 0.0, sum_sin = 0.0;
+  int count = 0;
+  for (int yi = 0; yi < n; ++yi) {
+    const double position_y = center.y + offsets[static_cast<std::size_t>(yi)];
+    for (int xi = 0; xi < n; ++xi) {
+      const double position_x = center.x + offsets[static_cast<std::size_t>(xi)];
+      const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
+      for (int k = 0; k < num_angles; ++k) {
+        if (!KartoEqual(responses[base + k], best)) continue;
+        sum_x += position_x;
+        sum_y += position_y;
+        sum_cos += heading_cos[static_cast<std::size_t>(k)];
+        sum_sin += heading_sin[static_cast<std::size_t>(k)];
+        ++count;
+      }
+    }
+  }
+  SLAMTUNE_CHECK(count > 0);
+  const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin, sum_cos)};
+
+  if (!fine) {
+    *cov = PositionalCovariance(average, best, center, offset_xy, step_xy, angle_step, probabilities);
+  } else {
+    // Angular variance from the unpenalised responses at the cell of the mean (§4.6).
+    const std::int32_t cell = grid.GridIndex(grid.WorldToGrid({average.x, average.y}));
+    raw_at_best.resize(static_cast<std::size_t>(num_angles));
+    angles.resize(static_cast<std::size_t>(num_angles));
+    for (int k = 0; k < num_angles; ++k) {
+      const std::int64_t sum = SumCandidate(grid.data(), grid.data_size(), table.offsets(k), cell);
+      raw_at_best[static_cast<std::size_t>(k)] = response_of_sum[static_cast<std::size_t>(sum)];
+      angles[static_cast<std::size_t>(k)] = table.angle(k);
+    }
+    (*cov)(2, 2) = AngularVariance(average.theta, best, center.theta, angle_step, angles, raw_at_best);
+  }
+  *mean = average;
+  // The covariance above used the unclipped best; the caller sees at most 1 (§4.5).
+  return std::min(best, 1.0);
+}
+
+ScanMatcher::ScanMatcher(const ScanMatcherOptions& options) {
+  options.Validate();
+  impl_ = std::make_unique<Impl>(options);
+}
+ScanMatcher::ScanMatcher(const ScanMatcher& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+ScanMatcher& ScanMatcher::operator=(const ScanMatcher& other) {
+  if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+  return *this;
+}
+ScanMatcher::ScanMatcher(ScanMatcher&&) noexcept = default;
+ScanMatcher& ScanMatcher::operator=(ScanMatcher&&) noexcept = default;
+ScanMatcher::~ScanMatcher() = default;
+
+const ScanMatcherOptions& ScanMatcher::options() const { return impl_->options; }
+
+MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, bool penalize,
+                               bool refine) {
+  SLAMTUNE_CHECK_MSG(impl_ != nullptr, "ScanMatcher used after move");
+  Impl& m = *impl_;
+  const ScanMatcherOptions& o = m.options;
+  MatchResult result;
+  const Pose2 center = scan.SensorPose();
+  // §4.2 item 1: nothing to match; keep the guess with the weakest covariance.
+  if (scan.ranges().empty()) {
+    result.mean = center;
+    result.covariance(0, 0) = kMaxVariance;
+    result.covariance(1, 1) = kMaxVariance;
+    result.covariance(2, 2) = 4 * (o.coarse_angle_resolution * o.coarse_angle_resolution);
+    result.response = 0.0;
+    return result;
+  }
+  // Karto reads the resolution back from the grid as 1/scale; this is rho for the usual
+  // values (0.01, 0.025, 0.05) and keeps Karto's bits otherwise.
+  const double resolution = 1.0 / m.grid.scale();
+  const CorrelationGridGeometry& g = m.grid.geometry();
+  // §4.2 items 2-3: centre the ROI on the sensor position and draw the base scans.
+  m.grid.SetRoiOrigin({center.x - (0.5 * (g.roi_side - 1) * resolution), center.y - (0.5 * (g.roi_side - 1) * resolution)});
+  m.grid.AddScans(base_scans, {center.x, center.y});
+
+  // §4.2 item 4: coarse pass over every second cell of the window.
+  const double coarse_offset = 0.5 * (g.search_side - 1) * resolution;
+  const double coarse_step = 2 * resolution;
+  double best = m.CorrelateScan(scan, center, coarse_offset, coarse_step, o.coarse_angle_offset,
+                                o.coarse_angle_resolution, penalize, false, &result.mean, &result.covariance);
+  // §4.2 item 5: widen the heading range by 20 degrees at a time, at most 3 times.
+  if (o.use_response_expansion && KartoEqual(best, 0.0)) {
+    double angle_offset = o.coarse_angle_offset;
+    for (int i = 0; i < 3; ++i) {
+      angle_offset += 20 * kRadiansPerDegree;
+      best = m.CorrelateScan(scan, center, coarse_offset, coarse_step, angle_offset, o.coarse_angle_resolution,
+                             penalize, false, &result.mean, &result.covariance);
+      if (!KartoEqual(best, 0.0)) break;
+    }
+  }
+  // §4.2 item 6: fine pass, 3x3 cells around the coarse mean, headings within half a coarse
+  // step, FineSearchAngleOffset used as the step.
+  if (refine) {
+    const Pose2 coarse_mean = result.mean;
+    best = m.CorrelateScan(scan, coarse_mean, coarse_step * 0.5, resolution, 0.5 * o.coarse_angle_resolution,
+                           o.fine_angle_step, penalize, true, &result.mean, &result.covariance);
+  }
+  result.response = best;
+  return result;
+}
+
+}  // namespace slamtune::slam
