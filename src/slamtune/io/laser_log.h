@@ -58,19 +58,29 @@ struct LaserLog {
   std::size_t unknown_records = 0;  // lines of unknown type, skipped
   std::size_t skipped_records = 0;  // malformed records skipped under --lenient
   std::vector<std::string> skipped_reasons;  // "LINE: reason" for the first few skipped
-  // The no-return value assumed for the log (m) and how it was found ("PARAM <name>",
-  // "most frequent maximum reading", "--no-return", "ROBOTLASER1 max_range", "none").
+  // The no-return value assumed for the log (m) and how it was found ("--no-return",
+  // "PARAM <name>", "<RECORD> max_range" e.g. "ROBOTLASER1 max_range", "maximum reading
+  // cluster", "none"); the precedence is documented in carmen_reader.h.
   double no_return_value = std::numeric_limits<double>::infinity();
   std::string no_return_rule = "none";
   // Consecutive laser scans (file order) whose ipc_timestamp is earlier than the previous one.
   std::size_t time_backward_steps = 0;
   double largest_backward_step_s = 0.0;
+  // Reading context.
+  std::size_t lines_read = 0;         // lines consumed (all of them unless max_scans stopped early)
+  bool compressed = false;            // the input was gzip
+  bool stopped_at_max_scans = false;  // LogReadOptions::max_scans ended the read early
+  std::size_t total_readings = 0;     // sum of ranges.size() over scans
+  std::size_t total_no_returns = 0;   // sum of no_returns over scans
 };
 
 struct LogReadOptions {
   bool lenient = false;        // skip malformed records (and count them) instead of failing
   double no_return_value = 0;  // > 0 overrides the detected no-return value (m)
   std::size_t max_scans = 0;   // stop after this many laser scans (0 = all); for short slices
+
+  // Throws InputError naming the field if no_return_value is negative, NaN or infinite.
+  void Validate() const;
 };
 
 }  // namespace slamtune::io

@@ -1,0 +1,98 @@
+// `slamtune info LOG`: what a CARMEN log holds (io/log_summary.h), as a table or JSON.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "slamtune/cli/command_registry.h"
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/log_summary.h"
+
+namespace slamtune::cli {
+namespace {
+
+struct InfoArgs {
+  std::string log;
+  bool json = false;
+  bool lenient = false;
+  double no_return = 0.0;    // m; 0 = detect from the log
+  std::size_t max_scans = 0;  // 0 = whole log
+};
+
+// JSON numbers cannot be infinite: an infinite value (no no-return value) is written as null.
+nlohmann::json Number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+nlohmann::json ToJson(const io::LogSummary& s) {
+  return {
+      {"path", s.path},
+      {"compressed", s.compressed},
+      {"stopped_at_max_scans", s.stopped_at_max_scans},
+      {"lines", s.lines},
+      {"record_counts", s.record_counts},
+      {"scans", s.scans},
+      {"odometry_records", s.odometry_records},
+      {"params", s.params},
+      {"first_time_s", s.first_time_s},
+      {"last_time_s", s.last_time_s},
+      {"duration_s", s.duration_s},
+      {"scan_rate_hz", s.scan_rate_hz},
+      {"readings_per_scan", s.readings_per_scan},
+      {"readings_per_scan_min", s.readings_per_scan_min},
+      {"readings_per_scan_max", s.readings_per_scan_max},
+      {"readings_per_scan_varies", s.readings_per_scan_varies},
+      {"angle_min_deg", s.angle_min_deg},
+      {"angle_max_deg", s.angle_max_deg},
+      {"angular_span_deg", s.angular_span_deg},
+      {"angular_resolution_deg", s.angular_resolution_deg},
+      {"geometry_varies", s.geometry_varies},
+      {"min_reading_m", s.min_reading_m},
+      {"max_reading_m", s.max_reading_m},
+      {"max_valid_reading_m", s.max_valid_reading_m},
+      {"no_return_value", Number(s.no_return_value_m)},
+      {"no_return_rule", s.no_return_rule},
+      {"readings", s.readings},
+      {"no_returns", s.no_returns},
+      {"no_return_fraction", s.no_return_fraction},
+      {"odometry_path_m", s.odometry_path_m},
+      {"odometry_rotation_rad", s.odometry_rotation_rad},
+      {"odometry_rotation_deg", s.odometry_rotation_deg},
+      {"time_backward_steps", s.time_backward_steps},
+      {"largest_backward_step_s", s.largest_backward_step_s},
+      {"unknown_records", s.unknown_records},
+      {"skipped_records", s.skipped_records},
+      {"skipped_reasons", s.skipped_reasons},
+  };
+}
+
+const SubcommandRegistrar kInfo(Subcommand{
+    "info",
+    "Summarise a CARMEN log (plain or gzip): records, scans, beam geometry, no-return value, odometry, "
+    "time-order anomalies",
+    10,
+    [](CLI::App& app) -> std::function<int()> {
+      auto args = std::make_shared<InfoArgs>();
+      app.add_option("LOG", args->log, "CARMEN log file (.clf, plain or gzip-compressed)")->required();
+      app.add_flag("--json", args->json, "Print the summary as one JSON object");
+      app.add_flag("--lenient", args->lenient, "Skip malformed records (and count them) instead of failing");
+      app.add_option("--no-return", args->no_return,
+                     "Readings >= this value (m) are no-returns; overrides the value detected from the log");
+      app.add_option("--max-scans", args->max_scans, "Read only the first N laser scans (0 = all)");
+      return [args]() -> int {
+        io::LogReadOptions options;
+        options.lenient = args->lenient;
+        options.no_return_value = args->no_return;
+        options.max_scans = args->max_scans;
+        const io::LogSummary summary = io::SummarizeLog(io::ReadCarmenLog(args->log, options));
+        if (args->json) {
+          std::printf("%s\n", ToJson(summary).dump(2).c_str());
+        } else {
+          std::printf("%s", io::FormatLogSummary(summary).c_str());
+        }
+        return 0;
+      };
+    }});
+
+}  // namespace
+}  // namespace slamtune::cli

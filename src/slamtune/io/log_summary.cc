@@ -1,0 +1,120 @@
+#include "slamtune/io/log_summary.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "slamtune/common/karto_math.h"
+
+namespace slamtune::io {
+namespace {
+
+bool SameGeometry(const LaserScanRecord& a, const LaserScanRecord& b) {
+  return a.ranges.size() == b.ranges.size() && KartoEqual(a.angle_min, b.angle_min) &&
+         KartoEqual(a.angle_increment, b.angle_increment);
+}
+
+}  // namespace
+
+LogSummary SummarizeLog(const LaserLog& log) {
+  LogSummary s;
+  s.path = log.path;
+  s.compressed = log.compressed;
+  s.stopped_at_max_scans = log.stopped_at_max_scans;
+  s.lines = log.lines_read;
+  s.record_counts = log.record_counts;
+  s.scans = log.scans.size();
+  s.odometry_records = log.odometry.size();
+  s.params = log.params.size();
+  s.no_return_value_m = log.no_return_value;
+  s.no_return_rule = log.no_return_rule;
+  s.time_backward_steps = log.time_backward_steps;
+  s.largest_backward_step_s = log.largest_backward_step_s;
+  s.unknown_records = log.unknown_records;
+  s.skipped_records = log.skipped_records;
+  s.skipped_reasons = log.skipped_reasons;
+  if (log.scans.empty()) return s;
+
+  const LaserScanRecord& first = log.scans.front();
+  s.first_time_s = first.ipc_time;
+  s.last_time_s = log.scans.back().ipc_time;
+  s.duration_s = s.last_time_s - s.first_time_s;
+  if (s.duration_s > 0 && s.scans > 1) s.scan_rate_hz = static_cast<double>(s.scans - 1) / s.duration_s;
+  s.readings_per_scan = first.ranges.size();
+  s.readings_per_scan_min = s.readings_per_scan_max = first.ranges.size();
+  s.angle_min_deg = RadToDeg(first.angle_min);
+  s.angular_resolution_deg = RadToDeg(first.angle_increment);
+  s.angular_span_deg = RadToDeg(first.angle_increment * static_cast<double>(first.ranges.size() - 1));
+  s.angle_max_deg = s.angle_min_deg + s.angular_span_deg;
+
+  double min_reading = std::numeric_limits<double>::infinity();
+  double max_reading = -std::numeric_limits<double>::infinity();
+  double max_valid = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    const LaserScanRecord& scan = log.scans[i];
+    s.readings_per_scan_min = std::min(s.readings_per_scan_min, scan.ranges.size());
+    s.readings_per_scan_max = std::max(s.readings_per_scan_max, scan.ranges.size());
+    if (!SameGeometry(scan, first)) s.geometry_varies = true;
+    for (const double r : scan.ranges) {
+      if (!std::isfinite(r)) continue;
+      min_reading = std::min(min_reading, r);
+      max_reading = std::max(max_reading, r);
+      if (r >= 0.0 && r < scan.max_range) max_valid = std::max(max_valid, r);
+    }
+    s.readings += scan.ranges.size();
+    s.no_returns += scan.no_returns;
+    if (i > 0) {
+      const Pose2& a = log.scans[i - 1].laser_pose;
+      const Pose2& b = scan.laser_pose;
+      s.odometry_path_m += std::sqrt(SquaredDistance(a, b));
+      s.odometry_rotation_rad += std::fabs(NormalizeAngle(b.theta - a.theta));
+    }
+  }
+  s.readings_per_scan_varies = s.readings_per_scan_min != s.readings_per_scan_max;
+  s.min_reading_m = std::isfinite(min_reading) ? min_reading : 0.0;
+  s.max_reading_m = std::isfinite(max_reading) ? max_reading : 0.0;
+  s.max_valid_reading_m = std::isfinite(max_valid) ? max_valid : 0.0;
+  s.no_return_fraction = s.readings > 0 ? static_cast<double>(s.no_returns) / static_cast<double>(s.readings) : 0.0;
+  s.odometry_rotation_deg = RadToDeg(s.odometry_rotation_rad);
+  return s;
+}
+
+std::string FormatLogSummary(const LogSummary& s) {
+  std::string out;
+  auto row = [&out](std::string_view key, const std::string& value) {
+    out += fmt::format("{:<24} {}\n", key, value);
+  };
+  row("log", s.path + (s.compressed ? " (gzip)" : "") + (s.stopped_at_max_scans ? " (first scans only)" : ""));
+  row("lines", std::to_string(s.lines));
+  std::string counts;
+  for (const auto& [name, count] : s.record_counts) {
+    counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", name, count);
+  }
+  row("records", counts);
+  row("laser scans", std::to_string(s.scans));
+  row("odometry records", std::to_string(s.odometry_records));
+  row("time span", fmt::format("{:.6f} .. {:.6f} s", s.first_time_s, s.last_time_s));
+  row("duration", fmt::format("{:.3f} s ({:.2f} min), {:.2f} scans/s", s.duration_s, s.duration_s / 60.0,
+                              s.scan_rate_hz));
+  row("readings per scan", s.readings_per_scan_varies
+                               ? fmt::format("varies: {} .. {}", s.readings_per_scan_min, s.readings_per_scan_max)
+                               : std::to_string(s.readings_per_scan));
+  row("beam angles", fmt::format("{:.2f} .. {:.2f} deg (span {:.2f} deg, step {:.4f} deg){}", s.angle_min_deg,
+                                 s.angle_max_deg, s.angular_span_deg, s.angular_resolution_deg,
+                                 s.geometry_varies ? ", varies between scans" : ""));
+  row("readings", fmt::format("{} (min {:.3f} m, max {:.3f} m, max below no-return {:.3f} m)", s.readings,
+                              s.min_reading_m, s.max_reading_m, s.max_valid_reading_m));
+  row("no-return value", fmt::format("{} m (rule: {})", s.no_return_value_m, s.no_return_rule));
+  row("no-returns", fmt::format("{} ({:.2f} % of the readings)", s.no_returns, 100.0 * s.no_return_fraction));
+  row("odometry path", fmt::format("{:.3f} m", s.odometry_path_m));
+  row("odometry rotation", fmt::format("{:.3f} rad ({:.1f} deg)", s.odometry_rotation_rad, s.odometry_rotation_deg));
+  row("time backward steps", fmt::format("{} (largest {:.6f} s)", s.time_backward_steps, s.largest_backward_step_s));
+  row("unknown records", std::to_string(s.unknown_records));
+  row("skipped (malformed)", std::to_string(s.skipped_records));
+  for (const std::string& reason : s.skipped_reasons) row("  skipped at line", reason);
+  return out;
+}
+
+}  // namespace slamtune::io
