@@ -1,0 +1,101 @@
+// Self-contained HTML (html_page.h).
+#include "slamtune/report/html_page.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "slamtune/report/png_encoding.h"
+
+namespace slamtune::report {
+namespace {
+
+constexpr const char* kStyle = R"(body{font-family:system-ui,-apple-system,"Segoe UI",Helvetica,Arial,sans-serif;
+max-width:1200px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}
+h1{font-size:1.6em;border-bottom:2px solid #0072b2;padding-bottom:.2em}
+h2{font-size:1.3em;margin-top:1.8em;border-bottom:1px solid #ccc}
+h3{font-size:1.1em}
+table{border-collapse:collapse;margin:.8em 0;font-size:.92em}
+th,td{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top}
+th{background:#f2f2f2}
+tr:nth-child(even) td{background:#fafafa}
+.verdict{background:#e8f3fa;border-left:5px solid #0072b2;padding:.7em 1em;font-weight:600}
+.note{background:#fff8e6;border-left:5px solid #e69f00;padding:.7em 1em}
+figure{margin:1em 0}
+figure img{max-width:100%;height:auto;border:1px solid #ddd}
+figcaption{font-size:.9em;color:#555}
+code,.mono{font-family:ui-monospace,Menlo,Consolas,monospace;font-size:.92em})";
+
+}  // namespace
+
+std::string HtmlEscape(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+HtmlPage::HtmlPage(std::string title) : title_(std::move(title)) {}
+
+void HtmlPage::Heading(int level, const std::string& text) {
+  const int l = std::clamp(level, 1, 3);
+  body_ += fmt::format("<h{0}>{1}</h{0}>\n", l, HtmlEscape(text));
+}
+
+void HtmlPage::Paragraph(const std::string& text, const std::string& css_class) {
+  if (css_class.empty()) body_ += "<p>" + HtmlEscape(text) + "</p>\n";
+  else body_ += "<p class=\"" + HtmlEscape(css_class) + "\">" + HtmlEscape(text) + "</p>\n";
+}
+
+void HtmlPage::KeyValues(const std::vector<std::pair<std::string, std::string>>& items) {
+  body_ += "<table>\n";
+  for (const auto& [key, value] : items) {
+    body_ += "<tr><th>" + HtmlEscape(key) + "</th><td>" + HtmlEscape(value) + "</td></tr>\n";
+  }
+  body_ += "</table>\n";
+}
+
+void HtmlPage::Table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+  body_ += "<table>\n<tr>";
+  for (const auto& h : header) body_ += "<th>" + HtmlEscape(h) + "</th>";
+  body_ += "</tr>\n";
+  for (const auto& row : rows) {
+    body_ += "<tr>";
+    for (std::size_t i = 0; i < std::max(row.size(), header.size()); ++i) {
+      body_ += "<td>" + (i < row.size() ? HtmlEscape(row[i]) : std::string()) + "</td>";
+    }
+    body_ += "</tr>\n";
+  }
+  body_ += "</table>\n";
+}
+
+void HtmlPage::List(const std::vector<std::string>& items) {
+  body_ += "<ul>\n";
+  for (const auto& item : items) body_ += "<li>" + HtmlEscape(item) + "</li>\n";
+  body_ += "</ul>\n";
+}
+
+void HtmlPage::Image(const std::vector<std::uint8_t>& png, const std::string& alt, const std::string& caption) {
+  body_ += "<figure><img src=\"" + PngDataUri(png) + "\" alt=\"" + HtmlEscape(alt) + "\">";
+  if (!caption.empty()) body_ += "<figcaption>" + HtmlEscape(caption) + "</figcaption>";
+  body_ += "</figure>\n";
+}
+
+std::string HtmlPage::Finish() const {
+  return fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n"
+      "<style>\n{}\n</style>\n</head>\n<body>\n{}</body>\n</html>\n",
+      HtmlEscape(title_), kStyle, body_);
+}
+
+}  // namespace slamtune::report

@@ -1,0 +1,43 @@
+// A self-contained HTML page for the report: inline CSS, images as base64 data URIs (RFC
+// 2397), no scripts, no external resources, so report.html reads the same offline, mailed or
+// archived. Every piece of text goes through HtmlEscape: log paths, labels and verdicts come
+// from the user or the run and must not be able to inject markup.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace slamtune::report {
+
+// Escapes & < > " ' (HTML Living Standard, "escaping a string", plus the apostrophe so the
+// result is safe inside either kind of attribute quotes).
+std::string HtmlEscape(const std::string& text);
+
+class HtmlPage {
+ public:
+  explicit HtmlPage(std::string title);
+
+  // <h1>..<h3>; level is clamped to [1, 3].
+  void Heading(int level, const std::string& text);
+  // A paragraph; `css_class` selects a style from the page's sheet ("verdict", "note", "" for plain).
+  void Paragraph(const std::string& text, const std::string& css_class = "");
+  // A two-column table of names and values.
+  void KeyValues(const std::vector<std::pair<std::string, std::string>>& items);
+  // A table with a header row; rows shorter than the header are padded with empty cells.
+  void Table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
+  // A bulleted list.
+  void List(const std::vector<std::string>& items);
+  // A figure with the PNG embedded as a data URI, its alt text and a caption.
+  void Image(const std::vector<std::uint8_t>& png, const std::string& alt, const std::string& caption);
+
+  // The complete document.
+  std::string Finish() const;
+
+ private:
+  std::string title_;
+  std::string body_;
+};
+
+}  // namespace slamtune::report
