@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <opencv2/imgproc.hpp>
 
 #include "slamtune/common/error.h"
 #include "slamtune/metrics/synthetic_map.h"
@@ -135,6 +136,17 @@ TEST(MapQualityTest, UsesTheMapsOwnGreyRule) {
   negated.negate = true;
   for (auto& v : negated.pixels) v = v == io::kMapOccupied ? 255 : v == io::kMapFree ? 0 : 128;
   ExpectSameFigures(ComputeMapQuality(negated), ComputeMapQuality(trinary));
+}
+
+TEST(MapQualityTest, CornerClustersAreEightConnectedComponents) {
+  const io::MapImage map =
+      DrawSyntheticRooms(300, 200, {kRoom, Rotated(kRoom, 5.0), {150, 100, 80, 60, 17.0}, {200, 60, 50, 50, 33.0}});
+  const MapQualityDetail detail = AnalyseMapQuality(map);
+  cv::Mat labels;
+  const int components = cv::connectedComponents(detail.corner_mask, labels, 8, CV_32S) - 1;
+  EXPECT_GT(components, 8);
+  EXPECT_EQ(detail.quality.corners, components);
+  EXPECT_EQ(detail.quality.corner_pixels, cv::countNonZero(detail.corner_mask));
 }
 
 TEST(MapQualityTest, IsDeterministic) {
