@@ -1,0 +1,230 @@
+#include "slamtune/optim/optimizer.h"
+
+#include <fmt/format.h>
+#include <pagmo/batch_evaluators/member_bfe.hpp>
+#include <pagmo/bfe.hpp>
+#include <pagmo/population.hpp>
+#include <pagmo/problem.hpp>
+#include <pagmo/utils/generic.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <memory>
+#include <random>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/progress.h"
+#include "slamtune/optim/candidate_selection.h"
+#include "slamtune/optim/nsga3.h"
+#include "slamtune/optim/tuning_problem.h"
+
+namespace slamtune::optim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+nlohmann::json PopulationJson(const std::vector<std::vector<double>>& x, const std::vector<std::vector<double>>& f,
+                              const std::string& rng_state) {
+  return {{"x", x}, {"f", f}, {"rng", rng_state}};
+}
+
+// The initial population: N random decision vectors (integer genes integral) from `seed`,
+// evaluated as one batch.
+pagmo::population InitialPopulation(const pagmo::problem& problem, std::size_t n, unsigned seed) {
+  pagmo::population pop(problem, 0u, seed);
+  pagmo::detail::random_engine_type rng(seed);
+  std::vector<pagmo::vector_double> xs;
+  pagmo::vector_double flat;
+  for (std::size_t i = 0; i < n; ++i) {
+    xs.push_back(pagmo::random_decision_vector(problem, rng));
+    flat.insert(flat.end(), xs.back().begin(), xs.back().end());
+  }
+  const pagmo::vector_double fs = problem.batch_fitness(flat);
+  const std::size_t m = problem.get_nobj();
+  for (std::size_t i = 0; i < n; ++i) {
+    pop.push_back(xs[i], pagmo::vector_double(fs.begin() + static_cast<long>(i * m),
+                                              fs.begin() + static_cast<long>((i + 1) * m)));
+  }
+  return pop;
+}
+
+std::vector<EvaluationRecord> RecordsOf(BatchEvaluator& evaluator, const SearchSpace& space,
+                                        const std::vector<pagmo::vector_double>& xs) {
+  std::vector<Assignment> batch;
+  for (const auto& x : xs) batch.push_back(space.Assign(x));
+  return evaluator.Evaluate(batch);
+}
+
+}  // namespace
+
+void OptimizeSettings::Validate() const {
+  space.Validate("search space");
+  if (population < 4) throw InputError(fmt::format("--population = {} is out of range: must be >= 4", population));
+  if (generations < 1) throw InputError(fmt::format("--generations = {} is out of range: must be >= 1", generations));
+  if (divisions < 1) throw InputError(fmt::format("--divisions = {} is out of range: must be >= 1", divisions));
+}
+
+nlohmann::json OptimizeSettings::ToJson() const {
+  return {{"log", log_path},           {"relations", relations_path}, {"space", space.Fingerprint()},
+          {"default", default_assignment}, {"divisions", divisions},  {"population", population},
+          {"generations", generations},  {"seed", seed},              {"engine", engine}};
+}
+
+OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
+                               bool resume, const OptimizeHooks& hooks) {
+  // Preamble: validate everything before any work.
+  settings.Validate();
+  const nlohmann::json settings_json = settings.ToJson();
+  const auto stored = store.Settings();
+  if (resume) {
+    if (!stored) throw InputError(store.path(), 0, "--resume: this folder holds no slamtune optimisation");
+    if (*stored != settings_json) {
+      std::string diff;
+      for (const auto& [key, value] : settings_json.items()) {
+        if (!stored->contains(key) || (*stored)[key] != value) diff += (diff.empty() ? "" : ", ") + key;
+      }
+      throw InputError(store.path(), 0, "--resume: the run was made with different settings (" + diff + ")");
+    }
+  } else {
+    if (stored) {
+      throw InputError(store.path(), 0, "the folder already holds an optimisation; use --resume or a new --out");
+    }
+    store.SetSettings(settings_json);
+  }
+
+  const auto start = Clock::now();
+  auto shared = std::shared_ptr<BatchEvaluator>(&evaluator, [](BatchEvaluator*) {});
+  pagmo::problem problem{TuningProblem(settings.space, shared)};
+
+  OptimizeResult result;
+  result.log_path = settings.log_path;
+  result.relations_path = settings.relations_path;
+  result.space = settings.space;
+  result.settings = settings_json;
+
+  const unsigned total_gens = settings.generations;
+  const std::size_t total_requests = settings.population * (total_gens + 1);
+  std::vector<unsigned> snapshot_gens{1, std::max(1u, total_gens / 2), total_gens};
+  snapshot_gens.erase(std::unique(snapshot_gens.begin(), snapshot_gens.end()), snapshot_gens.end());
+
+  unsigned done_gens = 0;
+  std::vector<std::vector<double>> current_f;  // objectives of the latest population
+  auto report = [&](unsigned gen, bool force) {
+    if (!hooks.progress) return;
+    const auto st = evaluator.stats();
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const double rate = elapsed > 0 ? st.evaluated / elapsed * 60.0 : 0.0;
+    const std::size_t done = std::min(total_requests, st.requested);
+    const double left = done > 0 ? elapsed / static_cast<double>(done) * (total_requests - done) : -1;
+    double best[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                      std::numeric_limits<double>::infinity()};
+    for (const auto& f : current_f)
+      for (int k = 0; k < 3; ++k) best[k] = std::min(best[k], f[k]);
+    hooks.progress(fmt::format("gen {}/{} | evaluations {}/{} | cache hits {} | {:.1f} runs/min | "
+                               "best eta {:.4g} corner px {:.0f} enclosed {:.0f} | left {}",
+                               gen, total_gens, done, total_requests, st.cache_hits, rate, best[0], best[1], best[2],
+                               FormatDuration(left)),
+                   force);
+  };
+
+  // Generation 0 is the initial population; when resuming, start from the last saved one.
+  pagmo::population pop(problem, 0u, settings.seed);
+  std::string rng_state;
+  const int last_saved = resume ? store.LastGeneration() : -1;
+  if (last_saved >= 0) {
+    const nlohmann::json saved = *store.Generation(last_saved);
+    const auto xs = saved.at("x").get<std::vector<std::vector<double>>>();
+    const auto fs = saved.at("f").get<std::vector<std::vector<double>>>();
+    for (std::size_t i = 0; i < xs.size(); ++i) pop.push_back(xs[i], fs[i]);
+    rng_state = saved.at("rng").get<std::string>();
+    done_gens = static_cast<unsigned>(last_saved);
+    if (hooks.progress) hooks.progress(fmt::format("resuming after generation {}/{}", done_gens, total_gens), true);
+  } else {
+    if (hooks.progress) hooks.progress(fmt::format("generation 0: {} random parameter sets", settings.population), true);
+    pop = InitialPopulation(problem, settings.population, settings.seed);
+    store.PutGeneration(0, PopulationJson({pop.get_x().begin(), pop.get_x().end()},
+                                          {pop.get_f().begin(), pop.get_f().end()}, ""));
+  }
+  current_f.assign(pop.get_f().begin(), pop.get_f().end());
+  for (unsigned g : snapshot_gens) {  // figures of generations finished before a resume
+    if (g > done_gens) continue;
+    if (auto saved = store.Generation(static_cast<int>(g))) {
+      result.snapshots.push_back({static_cast<int>(g), saved->at("x").get<std::vector<std::vector<double>>>(),
+                                  saved->at("f").get<std::vector<std::vector<double>>>()});
+    }
+  }
+
+  if (done_gens < total_gens) {
+    Nsga3Options options;
+    options.generations = total_gens - done_gens;
+    options.divisions = settings.divisions;
+    options.population_size = settings.population;
+    Nsga3 nsga3(options, settings.seed);
+    if (!rng_state.empty()) nsga3.RestoreRngState(rng_state);
+    nsga3.set_bfe(pagmo::bfe(pagmo::member_bfe{}));
+    evaluator.SetProgressCallback(
+        [&](const EvaluationRecord&, const BatchEvaluatorStats&) { report(done_gens + 1, false); });
+    nsga3.set_generation_callback([&](const GenerationRecord& record, const std::string& state) {
+      // Saved first: a kill after this line loses nothing of this generation.
+      store.PutGeneration(static_cast<int>(done_gens + 1), PopulationJson(record.x, record.f, state));
+      ++done_gens;
+      current_f = record.f;
+      if (std::find(snapshot_gens.begin(), snapshot_gens.end(), done_gens) != snapshot_gens.end()) {
+        result.snapshots.push_back({static_cast<int>(done_gens), record.x, record.f});
+      }
+      report(done_gens, true);
+      return CallbackAction::kContinue;
+    });
+    pop = nsga3.evolve(pop);
+    evaluator.SetProgressCallback(nullptr);
+  }
+
+  // Choosing the answer.
+  const std::vector<pagmo::vector_double> final_x(pop.get_x().begin(), pop.get_x().end());
+  const std::vector<EvaluationRecord> final_records = RecordsOf(evaluator, settings.space, final_x);
+  result.evaluations = store.All();
+  const Recommendation rec = RecommendByMajority(final_records);
+  result.recommended_share = rec.share;
+  const EvaluationRecord defaults = evaluator.Evaluate({settings.default_assignment}).front();
+  const std::size_t knee = Knee(final_records);
+  result.evaluations = store.All();
+  const std::size_t worst = Worst(result.evaluations);
+
+  result.candidates = {
+      {"recommended",
+       fmt::format("the parameter set shared by most individuals of the final population ({} of {})", rec.share,
+                   final_records.size()),
+       final_records[rec.index],
+       {}},
+      {"knee", "the final front's member closest to the ideal point (objectives normalised by the front's range)",
+       final_records[knee],
+       {}},
+      {"worst", "the evaluated set with the largest sum of normalised objectives (for contrast)",
+       result.evaluations[worst],
+       {}},
+      {"default", "slam_karto's defaults for the varied parameters", defaults, {}},
+  };
+  result.verdict = Verdict(final_records[rec.index], defaults);
+  if (!settings.relations_path.empty()) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& c : result.candidates) {
+      if (c.record.has_gt && c.record.trans_mean_m < best) {
+        best = c.record.trans_mean_m;
+        result.lowest_error_label = c.label;
+      }
+    }
+  }
+  if (hooks.render_map) {
+    for (auto& c : result.candidates) c.map = hooks.render_map(c.record.params);
+  }
+  std::sort(result.snapshots.begin(), result.snapshots.end(),
+            [](const auto& a, const auto& b) { return a.generation < b.generation; });
+  const auto st = evaluator.stats();
+  result.evaluation_count = store.Count();
+  result.cache_hits = st.cache_hits;
+  result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace slamtune::optim

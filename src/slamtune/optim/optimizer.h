@@ -1,0 +1,54 @@
+// The whole method of Han et al. (Sensors 2020) on one log: NSGA-III (nsga3.h) over the
+// search space, each candidate scored by the map objectives of its SLAM run, then the
+// candidates an engineer needs (candidate_selection.h).
+//
+// Interruption loses nothing: every finished evaluation is committed to the run database at
+// once (batch_evaluator.h), and after every generation the population and the generator state
+// are saved. A resumed run rebuilds the last finished generation's population, restores the
+// generator and evolves the remaining generations, its evaluations served from the database,
+// so it ends with exactly the result an uninterrupted run with the same seed gives.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "slamtune/io/map_image.h"
+#include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/evaluation_store.h"
+#include "slamtune/optim/optimize_result.h"
+#include "slamtune/optim/search_space.h"
+
+namespace slamtune::optim {
+
+struct OptimizeSettings {
+  std::string log_path;        // for the record and the --resume check
+  std::string relations_path;  // empty without ground truth
+  SearchSpace space = SearchSpace::PaperDefault();
+  Assignment default_assignment;  // slam_karto's defaults for the varied parameters (+ fixed)
+  std::size_t divisions = 10;     // Das-Dennis divisions: M = 3, D = 10 -> 66 reference points
+  std::size_t population = 66;    // the paper's population
+  unsigned generations = 60;      // the paper's generations
+  unsigned seed = 1;
+  nlohmann::json engine;  // everything else that changes results (base parameters, metric options, log identity)
+
+  // Throws InputError naming the field (population >= 4, generations >= 1, divisions >= 1).
+  void Validate() const;
+  // What must match for --resume (everything but parallelism).
+  nlohmann::json ToJson() const;
+};
+
+struct OptimizeHooks {
+  // A progress line; `force` for lines that must be shown (generation ends).
+  std::function<void(const std::string& line, bool force)> progress;
+  // Renders the map of one parameter set (for the report); may be empty.
+  std::function<io::MapImage(const Assignment&)> render_map;
+};
+
+// Runs (or, with `resume`, continues) an optimisation. `store` must be the run database;
+// with resume its settings must equal `settings` (InputError otherwise, before any work).
+OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
+                               bool resume, const OptimizeHooks& hooks);
+
+}  // namespace slamtune::optim

@@ -1,0 +1,149 @@
+#include "slamtune/optim/optimizer.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::optim {
+namespace {
+
+// A cheap stand-in for a SLAM run with a three-way trade-off over (r, g).
+EvaluationRecord FakeSlam(const Assignment& a) {
+  const double r = a.at("loop_search_maximum_distance");
+  const double g = a.at("loop_match_minimum_chain_size");
+  EvaluationRecord rec;
+  rec.occupied_ratio = 0.03 + 0.002 * std::pow(r - 4.5, 2) + 0.0001 * g;
+  rec.corner_pixels = std::round(1000 + 30 * std::pow(g - 12, 2) + 5 * r);
+  rec.enclosed_areas = std::round(5 + std::fabs(r - 3) + std::fabs(g - 15) / 3);
+  rec.loop_closures = static_cast<int>(r);
+  rec.nodes = 100;
+  return rec;
+}
+
+std::string FreshStore(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("slamtune_opt_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return (dir / "run.sqlite").string();
+}
+
+OptimizeSettings SmallSettings() {
+  OptimizeSettings s;
+  s.log_path = "fake.clf";
+  s.population = 12;
+  s.generations = 6;
+  s.divisions = 4;
+  s.seed = 3;
+  s.default_assignment = {{"loop_search_maximum_distance", 4.0},
+                          {"loop_match_minimum_chain_size", 10.0},
+                          {"loop_match_minimum_response_coarse", 0.7},
+                          {"loop_match_maximum_variance_coarse", 0.4}};
+  return s;
+}
+
+OptimizeResult Optimize(const std::string& store_path, bool resume, EvaluateFn fn, int jobs = 2) {
+  EvaluationStore store(store_path);
+  BatchEvaluator evaluator(std::move(fn), &store, jobs);
+  return RunOptimization(SmallSettings(), evaluator, store, resume, {});
+}
+
+std::vector<std::vector<double>> FinalPopulation(const std::string& store_path) {
+  EvaluationStore store(store_path);
+  return store.Generation(store.LastGeneration())->at("x").get<std::vector<std::vector<double>>>();
+}
+
+TEST(Optimizer, RunsAndPicksTheFourCandidates) {
+  const std::string path = FreshStore("basic");
+  const OptimizeResult r = Optimize(path, false, FakeSlam);
+  ASSERT_EQ(r.candidates.size(), 4u);
+  EXPECT_EQ(r.candidates[0].label, "recommended");
+  EXPECT_EQ(r.Find("default")->record.params.at("loop_search_maximum_distance"), 4.0);
+  EXPECT_GE(r.recommended_share, 1);
+  EXPECT_FALSE(r.verdict.empty());
+  EXPECT_EQ(r.snapshots.size(), 3u);  // generations 1, 3, 6
+  EXPECT_EQ(r.snapshots.back().generation, 6);
+  for (const auto& e : r.evaluations) {
+    const double g = e.params.at("loop_match_minimum_chain_size");
+    EXPECT_EQ(g, std::round(g));
+    EXPECT_GE(g, 6.0);
+    EXPECT_LE(g, 20.0);
+  }
+  EvaluationStore store(path);
+  EXPECT_EQ(store.LastGeneration(), 6);
+  // A second run into the same folder without --resume is refused.
+  EXPECT_THROW(Optimize(path, false, FakeSlam), InputError);
+}
+
+TEST(Optimizer, SameSeedSameResultWhateverTheJobs) {
+  const std::string a = FreshStore("det_a"), b = FreshStore("det_b");
+  Optimize(a, false, FakeSlam, 1);
+  Optimize(b, false, FakeSlam, 3);
+  EXPECT_EQ(FinalPopulation(a), FinalPopulation(b));
+}
+
+struct Killed {};  // not a std::exception: escapes the evaluator like a kill would stop it
+
+TEST(Optimizer, ResumeAfterAKillMidGenerationGivesTheUninterruptedResult) {
+  const std::string whole = FreshStore("whole"), cut = FreshStore("cut");
+  const OptimizeResult reference = Optimize(whole, false, FakeSlam, 1);
+
+  std::atomic<int> calls{0};
+  EXPECT_THROW(Optimize(cut, false,
+                   [&](const Assignment& a) {
+                     if (++calls == 40) throw Killed{};  // during generation 3 or so
+                     return FakeSlam(a);
+                   },
+                   1),
+               Killed);
+  {
+    EvaluationStore store(cut);
+    EXPECT_GE(store.LastGeneration(), 1);
+    EXPECT_LT(store.LastGeneration(), 6);
+  }
+  int resumed_calls = 0;
+  const OptimizeResult resumed = Optimize(cut, true,
+                                     [&](const Assignment& a) {
+                                       ++resumed_calls;
+                                       return FakeSlam(a);
+                                     },
+                                     1);
+  EXPECT_EQ(FinalPopulation(whole), FinalPopulation(cut));
+  EXPECT_EQ(resumed.candidates[0].record.key, reference.candidates[0].record.key);
+  EXPECT_EQ(resumed.candidates[1].record.key, reference.candidates[1].record.key);
+  EXPECT_EQ(resumed.evaluation_count, reference.evaluation_count);
+  EXPECT_LT(resumed_calls, static_cast<int>(reference.evaluation_count));  // finished work not redone
+}
+
+TEST(Optimizer, ResumeRefusesDifferentSettingsAndEmptyFolders) {
+  const std::string path = FreshStore("settings");
+  Optimize(path, false, FakeSlam);
+  EvaluationStore store(path);
+  BatchEvaluator evaluator(FakeSlam, &store, 1);
+  OptimizeSettings other = SmallSettings();
+  other.seed = 99;
+  try {
+    RunOptimization(other, evaluator, store, true, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different settings (seed)"), std::string::npos) << e.what();
+  }
+  EvaluationStore empty(FreshStore("empty"));
+  BatchEvaluator ev2(FakeSlam, &empty, 1);
+  EXPECT_THROW(RunOptimization(SmallSettings(), ev2, empty, true, {}), InputError);
+}
+
+TEST(Optimizer, RejectsBadBudgets) {
+  OptimizeSettings s = SmallSettings();
+  s.population = 2;
+  EXPECT_THROW(s.Validate(), InputError);
+  s = SmallSettings();
+  s.generations = 0;
+  EXPECT_THROW(s.Validate(), InputError);
+}
+
+}  // namespace
+}  // namespace slamtune::optim
