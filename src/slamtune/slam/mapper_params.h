@@ -1,0 +1,141 @@
+// Every parameter of the Karto mapper under its ROS name, in ROS units (karto-algorithm.md §9).
+//
+// MapperParams is what a slam_karto / slam_toolbox user writes in a YAML file: the values keep
+// ROS units, so the three squared parameters (loop_match_maximum_variance_coarse,
+// distance_variance_penalty, angle_variance_penalty, §9.1 note ²) are stored as given and
+// squared only where the engine uses them (the *Internal() accessors). Defaults are
+// slam_karto's config/mapper_params.yaml (§9.1 "slam_karto YAML" column) plus the laser and
+// map items of §9.2; presets switch to open_karto's internal defaults or slam_toolbox's YAML.
+//
+// The optimiser tunes any numeric parameter by name: ParamTable() lists every parameter with
+// its type and rule, GetNumeric / SetNumeric read and write it, Validate() names the
+// parameter, the value and the allowed range in its InputError.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "slamtune/slam/scan_matcher.h"
+
+namespace slamtune::slam {
+
+struct MapperParams {
+  // --- Mapper parameters of §9.1 (ROS names, ROS units; slam_karto YAML defaults) ---
+  bool use_scan_matching = true;         // false: no graph, poses are pure odometry (§3.2)
+  bool use_scan_barycenter = true;       // distance tests between barycentres, not sensor poses (§2.2)
+  double minimum_time_interval = 3600;   // s; a scan this much newer than the last accepted one passes
+  double minimum_travel_distance = 0.2;  // m; odometric sensor travel that accepts a scan (§3.2 step 5)
+  double minimum_travel_heading = 0.174;  // rad; odometric sensor turn that accepts a scan
+  int scan_buffer_size = 70;                        // scans kept in the running buffer (§3.3)
+  double scan_buffer_maximum_scan_distance = 20.0;  // m; front-to-back span of the running buffer
+  double link_match_minimum_response_fine = 0.8;    // near-chain link accepted if response > this - 1e-6
+  double link_scan_maximum_distance = 10.0;         // m; L: near chains and LinkChainToScan radius (§5.2)
+  double loop_search_maximum_distance = 4.0;        // m; r: loop candidate radius between barycentres (§6.2)
+  bool do_loop_closing = true;
+  int loop_match_minimum_chain_size = 10;           // g: min run length of a loop candidate / near chain
+  double loop_match_maximum_variance_coarse = 0.4;  // m (ROS); q, squared to q^2 m^2 inside (§6.3)
+  double loop_match_minimum_response_coarse = 0.8;  // p: coarse loop response must be > p (§6.3)
+  double loop_match_minimum_response_fine = 0.8;    // fine loop response must be >= this (§6.4)
+  double correlation_search_space_dimension = 0.3;         // m; sequential matcher window D
+  double correlation_search_space_resolution = 0.01;       // m; sequential matcher rho
+  double correlation_search_space_smear_deviation = 0.03;  // m; sequential matcher sigma
+  double loop_search_space_dimension = 8.0;                // m; loop matcher window
+  double loop_search_space_resolution = 0.05;              // m; loop matcher rho
+  double loop_search_space_smear_deviation = 0.03;         // m; loop matcher sigma
+  double distance_variance_penalty = 0.3;   // m (ROS); squared inside (§4.5)
+  double angle_variance_penalty = 0.349;    // rad (ROS); squared inside
+  double fine_search_angle_offset = 0.00349;   // rad; really the fine angular step (§4.2 item 6)
+  double coarse_search_angle_offset = 0.349;   // rad; +- coarse angular range
+  double coarse_angle_resolution = 0.0349;     // rad; coarse angular step
+  double minimum_angle_penalty = 0.9;          // floor of the angular penalty factor
+  double minimum_distance_penalty = 0.5;       // floor of the distance penalty factor
+  bool use_response_expansion = false;         // widen the coarse angle search on a zero response
+
+  // --- Laser and map items of §9.2 ---
+  // "slam_karto": rangeThreshold = clip(12, min_range, maxRange). "slam_toolbox":
+  // clip(min(max_laser_range, maxRange), ...), with max_laser_range <= 0 meaning maxRange.
+  std::string range_threshold_rule = "slam_karto";
+  double max_laser_range = 20.0;        // m; slam_toolbox's rangeThreshold (only for that rule)
+  double min_laser_range = 0.0;         // m; minRange (LaserScan range_min; CARMEN logs have none)
+  double laser_max_range_cap = 80.0;    // m; maxRange = min(this, the log's no-return value) (§2.3)
+  double resolution = 0.05;             // m per map cell
+  int min_pass_through = 2;             // a cell needs more passes than this to be known (§8.1)
+  double occupancy_threshold = 0.1;     // hit/pass above this is occupied (§8.1)
+  int throttle_scans = 1;               // node level: keep every n-th log scan (§3.4)
+
+  // --- Back-end (§7) ---
+  std::string solver = "spa";                // "spa" (slam_karto, SPA LM) or "ceres" (slam_toolbox)
+  std::string ceres_loss_function = "None";  // "None", "HuberLoss" or "CauchyLoss" (scale 0.7)
+
+  // --- Engine only ---
+  int matcher_threads = 1;  // threads of the correlative search; results do not depend on it
+
+  // Internal (squared) values used by the engine (§9.1 note ²).
+  double LoopMatchMaximumVarianceCoarseInternal() const {
+    return loop_match_maximum_variance_coarse * loop_match_maximum_variance_coarse;
+  }
+  double DistanceVariancePenaltyInternal() const { return distance_variance_penalty * distance_variance_penalty; }
+  double AngleVariancePenaltyInternal() const { return angle_variance_penalty * angle_variance_penalty; }
+
+  // Options of the sequential (CorrelationSearchSpace*) and loop (LoopSearchSpace*) matchers
+  // for a laser with this range threshold (§3.1, §4.1).
+  ScanMatcherOptions SequentialMatcherOptions(double range_threshold) const;
+  ScanMatcherOptions LoopMatcherOptions(double range_threshold) const;
+
+  // Range threshold of §9.2 for a laser with these limits (m).
+  double RangeThreshold(double min_range, double max_range) const;
+
+  // Throws InputError "NAME = VALUE is out of range: RULE" for the first violated rule.
+  void Validate() const;
+
+  // Presets: "slam_karto" (the defaults above), "open_karto" (Karto's internal defaults,
+  // in ROS units) and "slam_toolbox" (its shipped YAML, Ceres back-end). Throws InputError
+  // for other names.
+  static MapperParams Preset(std::string_view name);
+
+  friend bool operator==(const MapperParams&, const MapperParams&) = default;
+};
+
+enum class ParamType { kBool, kInt, kDouble, kString };
+
+const char* ParamTypeName(ParamType type);
+
+// One row of the parameter table.
+struct ParamInfo {
+  const char* name;       // ROS name
+  ParamType type;
+  bool ros;               // a real slam_karto / slam_toolbox ROS parameter (written to ROS YAML)
+  const char* rule;       // allowed values, for messages and --help
+  const char* meaning;    // one line, with unit
+};
+
+// All parameters, in declaration order.
+const std::vector<ParamInfo>& ParamTable();
+// nullptr when unknown.
+const ParamInfo* FindParam(std::string_view name);
+
+using ParamValue = std::variant<bool, int, double, std::string>;
+
+struct NamedParam {
+  std::string name;
+  ParamValue value;
+};
+
+// Name -> value in table order (for run.json and the ROS YAML).
+std::vector<NamedParam> ToNamedValues(const MapperParams& params);
+
+// Numeric access by ROS name for the optimiser: bools read as 0/1, ints as integers.
+// Unknown or string parameters throw InputError.
+double GetNumeric(const MapperParams& params, std::string_view name);
+// Sets a numeric parameter and validates the result; on error `params` is unchanged.
+// Ints must be integral, bools 0 or 1.
+void SetNumeric(MapperParams& params, std::string_view name, double value);
+// Sets any parameter from text ("true"/"false"/"1"/"0" for bools); validates; on error
+// `params` is unchanged.
+void SetFromString(MapperParams& params, std::string_view name, std::string_view text);
+// "name=value" override, as given to --set.
+void ApplyOverride(MapperParams& params, std::string_view assignment);
+
+}  // namespace slamtune::slam

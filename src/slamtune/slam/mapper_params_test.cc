@@ -1,0 +1,173 @@
+#include "slamtune/slam/mapper_params.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::slam {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string ErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MapperParams, DefaultsAreSlamKartoYaml) {
+  const MapperParams p;
+  EXPECT_EQ(p.loop_search_maximum_distance, 4.0);
+  EXPECT_EQ(p.loop_match_minimum_chain_size, 10);
+  EXPECT_EQ(p.loop_match_minimum_response_coarse, 0.8);
+  EXPECT_EQ(p.loop_match_maximum_variance_coarse, 0.4);
+  EXPECT_DOUBLE_EQ(p.LoopMatchMaximumVarianceCoarseInternal(), 0.16);
+  EXPECT_DOUBLE_EQ(p.DistanceVariancePenaltyInternal(), 0.09);
+  EXPECT_NEAR(p.AngleVariancePenaltyInternal(), 0.121801, 1e-9);
+  EXPECT_EQ(p.minimum_travel_distance, 0.2);
+  EXPECT_EQ(p.scan_buffer_size, 70);
+  EXPECT_EQ(p.link_scan_maximum_distance, 10.0);
+  EXPECT_EQ(p.resolution, 0.05);
+  EXPECT_EQ(p.min_pass_through, 2);
+  EXPECT_EQ(p.occupancy_threshold, 0.1);
+  EXPECT_EQ(p.solver, "spa");
+  EXPECT_NO_THROW(p.Validate());
+}
+
+TEST(MapperParams, SlamToolboxPresetUsesItsYaml) {
+  const MapperParams p = MapperParams::Preset("slam_toolbox");
+  EXPECT_EQ(p.loop_search_maximum_distance, 3.0);
+  EXPECT_EQ(p.loop_match_minimum_response_coarse, 0.35);
+  EXPECT_DOUBLE_EQ(p.LoopMatchMaximumVarianceCoarseInternal(), 9.0);
+  EXPECT_EQ(p.link_scan_maximum_distance, 1.5);
+  EXPECT_EQ(p.scan_buffer_size, 10);
+  EXPECT_TRUE(p.use_response_expansion);
+  EXPECT_EQ(p.solver, "ceres");
+  EXPECT_EQ(p.minimum_time_interval, 3600);  // not passed to the toolbox Mapper (§3.4)
+  EXPECT_NO_THROW(p.Validate());
+  EXPECT_NE(p, MapperParams{});
+  EXPECT_THAT(ErrorOf([] { MapperParams::Preset("cartographer"); }), HasSubstr("unknown preset 'cartographer'"));
+}
+
+TEST(MapperParams, RangeThresholdRules) {
+  MapperParams p;
+  EXPECT_EQ(p.RangeThreshold(0.0, 80.0), 12.0);
+  EXPECT_EQ(p.RangeThreshold(0.0, 8.0), 8.0);
+  EXPECT_EQ(p.RangeThreshold(15.0, 80.0), 15.0);
+  p.range_threshold_rule = "slam_toolbox";
+  p.max_laser_range = 20.0;
+  EXPECT_EQ(p.RangeThreshold(0.0, 80.0), 20.0);
+  EXPECT_EQ(p.RangeThreshold(0.0, 15.0), 15.0);
+  p.max_laser_range = 0.0;
+  EXPECT_EQ(p.RangeThreshold(0.0, 50.0), 50.0);
+}
+
+TEST(MapperParams, MatcherOptionsUseInternalUnits) {
+  const MapperParams p;
+  const ScanMatcherOptions seq = p.SequentialMatcherOptions(12.0);
+  EXPECT_EQ(seq.search_dimension, 0.3);
+  EXPECT_EQ(seq.search_resolution, 0.01);
+  EXPECT_DOUBLE_EQ(seq.distance_variance_penalty, 0.09);
+  EXPECT_EQ(seq.fine_angle_step, 0.00349);
+  EXPECT_EQ(seq.range_threshold, 12.0);
+  const ScanMatcherOptions loop = p.LoopMatcherOptions(12.0);
+  EXPECT_EQ(loop.search_dimension, 8.0);
+  EXPECT_EQ(loop.search_resolution, 0.05);
+  EXPECT_EQ(loop.smear_deviation, 0.03);
+}
+
+TEST(MapperParams, ValidationNamesParameterValueAndRule) {
+  MapperParams p;
+  p.loop_match_minimum_chain_size = 0;
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }),
+              HasSubstr("loop_match_minimum_chain_size = 0 is out of range: must be an integer >= 1"));
+  p = {};
+  p.loop_search_maximum_distance = -1.5;
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("loop_search_maximum_distance = -1.5 is out of range"));
+  p = {};
+  p.loop_match_minimum_response_coarse = 1.2;
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }),
+              HasSubstr("loop_match_minimum_response_coarse = 1.2 is out of range: must be in [0, 1]"));
+  p = {};
+  p.correlation_search_space_dimension = 0.31;
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("must be an even integer"));
+  p = {};
+  p.loop_search_space_dimension = 8.05;  // 161 cells: odd
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("loop_search_space_dimension = 8.05"));
+  p = {};
+  p.correlation_search_space_smear_deviation = 0.2;  // > 10 rho
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("correlation_search_space_smear_deviation = 0.2"));
+  p = {};
+  p.solver = "g2o";
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("solver = 'g2o' is out of range: must be spa or ceres"));
+  p = {};
+  p.minimum_travel_distance = std::nan("");
+  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("minimum_travel_distance = nan"));
+}
+
+TEST(MapperParams, NumericAccessByRosName) {
+  MapperParams p;
+  EXPECT_EQ(GetNumeric(p, "loop_match_minimum_chain_size"), 10.0);
+  EXPECT_EQ(GetNumeric(p, "do_loop_closing"), 1.0);
+  SetNumeric(p, "loop_match_minimum_chain_size", 4);
+  EXPECT_EQ(p.loop_match_minimum_chain_size, 4);
+  SetNumeric(p, "loop_search_maximum_distance", 6.5);
+  EXPECT_EQ(p.loop_search_maximum_distance, 6.5);
+  SetNumeric(p, "do_loop_closing", 0);
+  EXPECT_FALSE(p.do_loop_closing);
+
+  const MapperParams before = p;
+  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "loop_match_minimum_chain_size", 2.5); }),
+              HasSubstr("loop_match_minimum_chain_size = 2.5 is out of range"));
+  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "loop_match_minimum_chain_size", 0); }), HasSubstr("must be an integer >= 1"));
+  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "use_scan_barycenter", 0.5); }), HasSubstr("true or false"));
+  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "solver", 1); }), HasSubstr("is a string"));
+  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "loop_radius", 1); }), HasSubstr("unknown mapper parameter 'loop_radius'"));
+  EXPECT_EQ(p, before);  // validated before changing state
+}
+
+TEST(MapperParams, OverridesFromText) {
+  MapperParams p;
+  ApplyOverride(p, "loop_match_minimum_response_coarse=0.55");
+  ApplyOverride(p, " use_response_expansion = true ");
+  ApplyOverride(p, "solver=ceres");
+  EXPECT_EQ(p.loop_match_minimum_response_coarse, 0.55);
+  EXPECT_TRUE(p.use_response_expansion);
+  EXPECT_EQ(p.solver, "ceres");
+  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "scan_buffer_size"); }), HasSubstr("form name=value"));
+  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "scan_buffer_size=ten"); }),
+              HasSubstr("scan_buffer_size = 'ten' is not a number (int expected"));
+  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "use_response_expansion=maybe"); }), HasSubstr("maybe"));
+}
+
+TEST(MapperParams, NamedValuesCoverTheTableAndRoundTrip) {
+  const MapperParams source = MapperParams::Preset("slam_toolbox");
+  const auto values = ToNamedValues(source);
+  ASSERT_EQ(values.size(), ParamTable().size());
+  MapperParams rebuilt;
+  for (const NamedParam& v : values) {
+    const std::string text = std::visit(
+        [](const auto& x) -> std::string {
+          using T = std::decay_t<decltype(x)>;
+          if constexpr (std::is_same_v<T, std::string>) return x;
+          else if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
+          else return fmt::format("{}", x);
+        },
+        v.value);
+    SetFromString(rebuilt, v.name, text);
+  }
+  EXPECT_EQ(rebuilt, source);
+  for (const ParamInfo& info : ParamTable()) EXPECT_EQ(FindParam(info.name), &info);
+  EXPECT_EQ(FindParam("nope"), nullptr);
+}
+
+}  // namespace
+}  // namespace slamtune::slam

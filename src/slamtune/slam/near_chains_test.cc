@@ -1,0 +1,64 @@
+#include "slamtune/slam/near_chains.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace slamtune::slam {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::IsEmpty;
+
+// A graph of `refs.size()` vertices with sequential edges i-1 -> i.
+PoseGraph ChainGraph(const std::vector<Pose2>& refs) {
+  PoseGraph g;
+  for (const Pose2& p : refs) g.AddVertex(p);
+  for (int i = 1; i < static_cast<int>(refs.size()); ++i) {
+    g.LinkScans(i - 1, i, {}, {}, Eigen::Matrix3d::Identity(), EdgeKind::kSequential);
+  }
+  return g;
+}
+
+TEST(ClosestInChain, FirstMemberWinsTies) {
+  const std::vector<Pose2> refs{{1, 0, 0}, {-1, 0, 0}, {0, 2, 0}, {0, 0, 0}};
+  const std::vector<int> chain{0, 1, 2};
+  EXPECT_EQ(ClosestInChain(chain, refs, 3), 0);
+  const std::vector<int> reversed{2, 1, 0};
+  EXPECT_EQ(ClosestInChain(reversed, refs, 3), 1);
+}
+
+TEST(FindNearChains, RecentRunReachingTheScanIsInvalid) {
+  // A straight run ending at scan 8 (the current one): the run near 8 reaches 8 itself.
+  std::vector<Pose2> refs;
+  for (int i = 0; i < 9; ++i) refs.push_back({0.5 * i, 0, 0});
+  const PoseGraph g = ChainGraph(refs);
+  EXPECT_THAT(FindNearChains(g, refs, 8, 1.0), IsEmpty());
+}
+
+TEST(FindNearChains, OlderPassConnectedWithinLIsAChain) {
+  // Old pass 0..5 along y = 0; the robot leaves (6..9 far) and returns: 10, 11 near scan 2.
+  std::vector<Pose2> refs{{-2, 0, 0}, {-1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0},
+                          {3, 8, 0},  {0, 8, 0},  {-3, 8, 0}, {-3, 3, 0}, {0, 0.6, 0}, {0.2, 0.4, 0}};
+  PoseGraph g = ChainGraph(refs);
+  // Without a link to the old pass, only the recent run is near-linked: no valid chain.
+  EXPECT_THAT(FindNearChains(g, refs, 11, 1.5), IsEmpty());
+  // A loop edge 2 -> 10 connects the old pass within L.
+  g.LinkScans(2, 10, {}, {}, Eigen::Matrix3d::Identity(), EdgeKind::kLoop);
+  const auto chains = FindNearChains(g, refs, 11, 1.5);
+  ASSERT_EQ(chains.size(), 1u);
+  // Members within 1.5 m of scan 11's reference (0.2, 0.4): scans 1, 2, 3 (distance of 0 is 2.2+).
+  EXPECT_THAT(chains[0], ElementsAre(1, 2, 3));
+}
+
+TEST(FindNearChains, ChainBoundaryUsesStrictPlusTolerance) {
+  // d^2 < L^2 + 1e-6 keeps a member exactly at L.
+  std::vector<Pose2> refs{{5, 0, 0}, {1, 0, 0}, {0.5, 0, 0}, {9, 9, 0}, {0, 0, 0}};
+  PoseGraph g = ChainGraph(refs);
+  g.LinkScans(2, 4, {}, {}, Eigen::Matrix3d::Identity(), EdgeKind::kLoop);
+  auto chains = FindNearChains(g, refs, 4, 1.0);
+  ASSERT_EQ(chains.size(), 1u);
+  EXPECT_THAT(chains[0], ElementsAre(1, 2));
+}
+
+}  // namespace
+}  // namespace slamtune::slam

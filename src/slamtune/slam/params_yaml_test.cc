@@ -1,0 +1,98 @@
+#include "slamtune/slam/params_yaml.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::slam {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string ErrorOf(MapperParams& p, const std::string& yaml) {
+  try {
+    ApplyParamsYaml(p, yaml, "test.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ParamsYaml, ReadsRos2Nesting) {
+  MapperParams p;
+  const auto report = ApplyParamsYaml(p,
+                                      "slam_toolbox:\n"
+                                      "  ros__parameters:\n"
+                                      "    solver_plugin: solver_plugins::CeresSolver\n"
+                                      "    odom_frame: odom\n"
+                                      "    loop_search_maximum_distance: 3.0\n"
+                                      "    loop_match_minimum_chain_size: 6\n"
+                                      "    use_response_expansion: true\n"
+                                      "    map_start_pose: [0.0, 0.0, 0.0]\n",
+                                      "test.yaml");
+  EXPECT_EQ(p.solver, "ceres");
+  EXPECT_EQ(p.loop_search_maximum_distance, 3.0);
+  EXPECT_EQ(p.loop_match_minimum_chain_size, 6);
+  EXPECT_TRUE(p.use_response_expansion);
+  EXPECT_THAT(report.applied, ElementsAre("solver", "loop_search_maximum_distance", "loop_match_minimum_chain_size",
+                                          "use_response_expansion"));
+  EXPECT_THAT(report.ignored, ElementsAre("odom_frame", "map_start_pose"));
+}
+
+TEST(ParamsYaml, ReadsFlatSlamKartoFile) {
+  MapperParams p;
+  ApplyParamsYaml(p,
+                  "use_scan_matching: true\n"
+                  "minimum_travel_heading: 0.2\n"
+                  "loop_match_maximum_variance_coarse: 0.5\n"
+                  "delta: 0.025\n",
+                  "mapper_params.yaml");
+  EXPECT_EQ(p.minimum_travel_heading, 0.2);
+  EXPECT_EQ(p.loop_match_maximum_variance_coarse, 0.5);
+  EXPECT_EQ(p.resolution, 0.025);  // `delta` is slam_karto's fallback name
+}
+
+TEST(ParamsYaml, BareRosParametersAndEmptyFile) {
+  MapperParams p;
+  ApplyParamsYaml(p, "ros__parameters:\n  scan_buffer_size: 12\n", "x.yaml");
+  EXPECT_EQ(p.scan_buffer_size, 12);
+  const MapperParams before = p;
+  ApplyParamsYaml(p, "", "empty.yaml");
+  EXPECT_EQ(p, before);
+}
+
+TEST(ParamsYaml, RejectsUnknownWrongTypeAndOutOfRange) {
+  MapperParams p;
+  const MapperParams before = p;
+  EXPECT_THAT(ErrorOf(p, "loop_search_radius: 3\n"), HasSubstr("test.yaml:1: unknown mapper parameter 'loop_search_radius'"));
+  EXPECT_THAT(ErrorOf(p, "scan_buffer_size: 10\nloop_match_minimum_chain_size: many\n"),
+              HasSubstr("test.yaml:2: mapper parameter loop_match_minimum_chain_size = 'many' is not a number"));
+  EXPECT_THAT(ErrorOf(p, "loop_match_minimum_response_coarse: 1.5\n"),
+              HasSubstr("loop_match_minimum_response_coarse = 1.5 is out of range: must be in [0, 1]"));
+  EXPECT_THAT(ErrorOf(p, "loop_search_maximum_distance: [1, 2]\n"), HasSubstr("must be a scalar"));
+  EXPECT_THAT(ErrorOf(p, "solver_plugin: solver_plugins::G2oSolver\n"), HasSubstr("is not supported"));
+  EXPECT_THAT(ErrorOf(p, "a: [\n"), HasSubstr("test.yaml:"));
+  EXPECT_EQ(p, before);  // nothing applied on error
+}
+
+TEST(ParamsYaml, RosYamlRoundTrips) {
+  MapperParams source = MapperParams::Preset("slam_toolbox");
+  source.loop_search_maximum_distance = 2.7182818284590451;
+  source.loop_match_minimum_chain_size = 7;
+  const std::string text = ToRosYaml(source);
+  EXPECT_THAT(text, HasSubstr("slam_toolbox:\n  ros__parameters:\n"));
+  EXPECT_THAT(text, HasSubstr("    loop_match_minimum_chain_size: 7\n"));
+  EXPECT_THAT(text, HasSubstr("    solver_plugin: solver_plugins::CeresSolver\n"));
+  EXPECT_THAT(text, Not(HasSubstr("matcher_threads")));  // engine-only parameters stay out
+  MapperParams read = MapperParams::Preset("slam_toolbox");
+  read.loop_search_maximum_distance = 1.0;
+  read.loop_match_minimum_chain_size = 1;
+  ApplyParamsYaml(read, text, "roundtrip.yaml");
+  EXPECT_EQ(read, source);
+}
+
+}  // namespace
+}  // namespace slamtune::slam

@@ -1,0 +1,50 @@
+// Back-end interface (karto-algorithm.md §7): optimise the node values of a PoseGraph with the
+// first node fixed, minimising sum over edges of e^T Lambda e with the SPA residual of §7.2.
+//
+// Two implementations reproduce the two ROS packages: SpaSolver (slam_karto's
+// SysSPA2d::doSPA(40), §7.3) and CeresSolver (slam_toolbox's default plugin, §7.4). Solvers
+// hold only options, so one instance can be shared by copies of the engine state.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "slamtune/common/pose2.h"
+#include "slamtune/slam/pose_graph.h"
+
+namespace slamtune::slam {
+
+// What one solve did.
+struct SolveSummary {
+  std::string backend;         // "spa" or "ceres"
+  int iterations = 0;          // LM iterations run (accepted and rejected)
+  int accepted_steps = 0;
+  double initial_cost = 0.0;   // sum e^T Lambda e before
+  double final_cost = 0.0;     // and after
+  bool updated = false;        // false when the solver left the node values unchanged
+  std::string termination;     // why it stopped
+};
+
+// §7.2 error of one edge for node values a (source) and b (target):
+// e_xy = R(a.theta)^T (b.xy - a.xy) - z.xy, e_theta = wrap(b.theta - a.theta - z.theta) (one +-2 pi wrap).
+Eigen::Vector3d EdgeError(const Pose2& a, const Pose2& b, const Pose2& z);
+
+// sum over edges of e^T Lambda e.
+double GraphCost(std::span<const Pose2> nodes, std::span<const Edge> edges);
+
+class PoseGraphSolver {
+ public:
+  virtual ~PoseGraphSolver() = default;
+  virtual const char* name() const = 0;
+  // Optimises `nodes` (index = vertex id) in place; node 0 is fixed. Deterministic.
+  virtual SolveSummary Solve(std::vector<Pose2>& nodes, std::span<const Edge> edges) const = 0;
+};
+
+// "spa" or "ceres" (with its loss: "None", "HuberLoss", "CauchyLoss"). Throws InputError otherwise.
+std::shared_ptr<const PoseGraphSolver> MakeSolver(const std::string& name, const std::string& ceres_loss = "None");
+
+}  // namespace slamtune::slam

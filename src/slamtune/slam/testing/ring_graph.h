@@ -1,0 +1,19 @@
+// Test fixture: a ring of poses with exact relative constraints (a known graph for the back-ends).
+#pragma once
+
+#include <vector>
+
+#include "slamtune/slam/pose_graph.h"
+
+namespace slamtune::slam::testing {
+
+struct RingGraph {
+  std::vector<Pose2> truth;    // true poses, node 0 included
+  std::vector<Pose2> initial;  // truth perturbed by fixed-seed noise (node 0 exact)
+  PoseGraph graph;             // node values = initial; edges i -> i+1 and the loop 0 -> n-1
+};
+
+// `n` poses on a circle of radius `radius`, noise of `sigma_xy` m and `sigma_theta` rad.
+RingGraph MakeRingGraph(int n, double radius, double sigma_xy, double sigma_theta, unsigned seed);
+
+}  // namespace slamtune::slam::testing
