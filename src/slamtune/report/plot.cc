@@ -64,7 +64,12 @@ AxisTicks AxisFor(const std::vector<Series>& series, bool along_x, const std::op
     return ticks;
   }
   const auto [lo, hi] = DataRange(series, along_x);
-  return MakeNiceTicks(lo, hi, target);
+  AxisTicks ticks = MakeNiceTicks(lo, hi, target);
+  // A 3 % margin keeps extreme points off the frame; the axis may then end between ticks.
+  const double pad = 0.03 * (hi - lo);
+  ticks.lower = std::min(ticks.lower, lo - pad);
+  ticks.upper = std::max(ticks.upper, hi + pad);
+  return ticks;
 }
 
 void DrawMarker(cv::Mat& image, cv::Point centre, Marker marker, const cv::Scalar& colour, int size) {

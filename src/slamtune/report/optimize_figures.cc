@@ -1,0 +1,237 @@
+// Figures of the optimisation report (optimize_figures.h).
+#include "slamtune/report/optimize_figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "slamtune/common/error.h"
+#include "slamtune/report/report_text.h"
+
+namespace slamtune::report {
+namespace {
+
+// The three projections of the objective space, as index pairs into kObjectives.
+constexpr std::array<std::pair<int, int>, 3> kProjections = {{{0, 1}, {0, 2}, {1, 2}}};
+
+PlotOptions PanelOptions(const FigureOptions& f) {
+  PlotOptions o;
+  o.width = f.panel_width;
+  o.height = f.panel_height;
+  o.font_scale = f.font_scale;
+  return o;
+}
+
+// The successful candidates' objective vectors (the failure score is never plotted).
+std::vector<std::pair<const optim::Candidate*, std::vector<double>>> PlottableCandidates(
+    const optim::OptimizeResult& result) {
+  std::vector<std::pair<const optim::Candidate*, std::vector<double>>> out;
+  for (const auto* c : CandidatesInReportOrder(result)) {
+    if (c->record.status != "ok") continue;
+    const auto v = ObjectiveValues(c->record);
+    std::vector<double> objectives(v.begin(), v.end());
+    if (!IsFailureScore(objectives)) out.emplace_back(c, objectives);
+  }
+  return out;
+}
+
+// Scatter panels of the projections for the given point sets, with candidates on top.
+cv::Mat ProjectionPanels(const std::vector<std::pair<std::string, std::vector<std::vector<double>>>>& groups,
+                         const optim::OptimizeResult& result, bool mark_candidates, const FigureOptions& options,
+                         const std::string& title) {
+  const auto limits = ObjectiveLimits(result);
+  const auto candidates = PlottableCandidates(result);
+  std::vector<cv::Mat> panels;
+  for (const auto& [ix, iy] : kProjections) {
+    std::vector<Series> series;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      Series s = MakeSeries(groups[g].first, {}, {});
+      s.colour = PaletteColour(g == 0 && groups.size() == 1 ? 0 : g);
+      s.marker = groups.size() == 1 ? Marker::kCircle : MarkerFor(g);
+      s.marker_size = 7;
+      for (const auto& v : groups[g].second) {
+        s.x.push_back(v[ix]);
+        s.y.push_back(v[iy]);
+      }
+      series.push_back(std::move(s));
+    }
+    if (mark_candidates) {
+      for (const auto& [c, v] : candidates) series.push_back(CandidateSeries(*c, v[ix], v[iy]));
+    }
+    PlotOptions o = PanelOptions(options);
+    o.x_limits = limits[ix];
+    o.y_limits = limits[iy];
+    o.x_label = kObjectives[ix].title;
+    o.y_label = kObjectives[iy].title;
+    o.title = fmt::format("{} vs {}", kObjectives[iy].short_name, kObjectives[ix].short_name);
+    o.legend = panels.empty();  // one legend is enough for the row
+    panels.push_back(RenderPlot(series, o).image);
+  }
+  GridOptions g;
+  g.columns = 3;
+  g.title = title;
+  return ComposeGrid(panels, g);
+}
+
+// Valid individuals of a snapshot, and how many were left out.
+std::pair<std::vector<std::vector<double>>, int> ValidIndividuals(const optim::GenerationSnapshot& snapshot) {
+  std::vector<std::vector<double>> valid;
+  int failed = 0;
+  for (const auto& v : snapshot.objectives) {
+    if (IsFailureScore(v)) ++failed;
+    else valid.push_back(v);
+  }
+  return {valid, failed};
+}
+
+std::string FailedNote(int failed) {
+  return failed == 0 ? "" : fmt::format(" ({} failed run{} not shown)", failed, failed == 1 ? "" : "s");
+}
+
+}  // namespace
+
+void FigureOptions::Validate() const {
+  if (panel_width < 160) throw InputError(fmt::format("FigureOptions.panel_width = {}: must be >= 160 px", panel_width));
+  if (panel_height < 120) {
+    throw InputError(fmt::format("FigureOptions.panel_height = {}: must be >= 120 px", panel_height));
+  }
+  if (!(font_scale > 0.0 && font_scale <= 4.0)) {
+    throw InputError(fmt::format("FigureOptions.font_scale = {}: must be in (0, 4]", font_scale));
+  }
+  maps.Validate();
+}
+
+Series CandidateSeries(const optim::Candidate& candidate, double x, double y) {
+  Series s = MakeSeries(candidate.label, {x}, {y});
+  const std::string& l = candidate.label;
+  // Fixed per label, distinct from the population's blue circles.
+  if (l == "recommended") {
+    s.colour = PaletteColour(1);  // vermillion
+    s.marker = Marker::kStar;
+    s.marker_size = 18;
+  } else if (l == "knee") {
+    s.colour = PaletteColour(2);  // bluish green
+    s.marker = Marker::kDiamond;
+    s.marker_size = 16;
+  } else if (l == "default") {
+    s.colour = PaletteColour(6);  // black
+    s.marker = Marker::kSquare;
+    s.marker_size = 14;
+  } else if (l == "worst") {
+    s.colour = PaletteColour(3);  // reddish purple
+    s.marker = Marker::kCross;
+    s.marker_size = 14;
+  } else {
+    s.colour = PaletteColour(4);  // orange
+    s.marker = Marker::kPlus;
+    s.marker_size = 14;
+  }
+  return s;
+}
+
+std::array<std::optional<AxisLimits>, 3> ObjectiveLimits(const optim::OptimizeResult& result) {
+  std::array<double, 3> lo, hi;
+  lo.fill(std::numeric_limits<double>::infinity());
+  hi.fill(-std::numeric_limits<double>::infinity());
+  auto include = [&](const std::vector<double>& v) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], v[k]);
+      hi[k] = std::max(hi[k], v[k]);
+    }
+  };
+  for (const auto& snapshot : result.snapshots) {
+    for (const auto& v : ValidIndividuals(snapshot).first) include(v);
+  }
+  for (const auto& [c, v] : PlottableCandidates(result)) include(v);
+  std::array<std::optional<AxisLimits>, 3> out;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (lo[k] > hi[k]) continue;
+    const AxisTicks t = MakeNiceTicks(lo[k], hi[k], 6);
+    const double pad = 0.03 * (hi[k] - lo[k]);  // keeps extreme points off the frame
+    out[k] = AxisLimits{std::min(t.lower, lo[k] - pad), std::max(t.upper, hi[k] + pad)};
+  }
+  return out;
+}
+
+cv::Mat MapsSideBySide(const optim::OptimizeResult& result, const FigureOptions& options) {
+  options.Validate();
+  const auto candidates = CandidatesInReportOrder(result);
+  SLAMTUNE_CHECK_MSG(!candidates.empty(), "MapsSideBySide needs at least one candidate");
+  std::vector<cv::Mat> panels;
+  for (const auto* c : candidates) {
+    std::string caption = ParamSummary(c->record.params, result.space);
+    if (c->record.status == "ok") {
+      caption += fmt::format(", {} loop closure{}", c->record.loop_closures, c->record.loop_closures == 1 ? "" : "s");
+    } else {
+      caption += ", run failed";
+    }
+    panels.push_back(RenderMapPanel(c->map, c->label, caption, options.maps));
+  }
+  GridOptions g;
+  g.columns = static_cast<int>(panels.size());
+  g.title = "Maps of the candidates";
+  return ComposeGrid(panels, g);
+}
+
+cv::Mat PopulationFigure(const optim::GenerationSnapshot& snapshot, const optim::OptimizeResult& result,
+                         const FigureOptions& options) {
+  options.Validate();
+  const auto [valid, failed] = ValidIndividuals(snapshot);
+  const std::string name = fmt::format("population ({})", valid.size());
+  return ProjectionPanels({{name, valid}}, result, true, options,
+                          fmt::format("Generation {}: population in objective space{}", snapshot.generation,
+                                      FailedNote(failed)));
+}
+
+cv::Mat PopulationEvolutionFigure(const optim::OptimizeResult& result, const FigureOptions& options) {
+  options.Validate();
+  std::vector<std::pair<std::string, std::vector<std::vector<double>>>> groups;
+  int failed = 0;
+  for (const auto& snapshot : result.snapshots) {
+    auto [valid, f] = ValidIndividuals(snapshot);
+    failed += f;
+    groups.emplace_back(fmt::format("generation {}", snapshot.generation), std::move(valid));
+  }
+  if (groups.empty()) groups.emplace_back("no snapshots", std::vector<std::vector<double>>{});
+  return ProjectionPanels(groups, result, false, options,
+                          "Population over the generations" + FailedNote(failed));
+}
+
+cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
+                               const ErrorCorrelationSummary& correlation, const optim::OptimizeResult& result,
+                               const FigureOptions& options) {
+  options.Validate();
+  std::vector<cv::Mat> panels;
+  for (std::size_t k = 0; k < kObjectives.size(); ++k) {
+    Series all = MakeSeries(fmt::format("parameter sets ({})", runs.size()), {}, {});
+    all.colour = PaletteColour(0);
+    all.marker = Marker::kCircle;
+    all.marker_size = 7;
+    for (const auto& r : runs) {
+      all.x.push_back(ObjectiveValues(r)[k]);
+      all.y.push_back(r.trans_mean_m);
+    }
+    std::vector<Series> series = {all};
+    for (const auto* c : CandidatesInReportOrder(result)) {
+      if (c->record.status == "ok" && c->record.has_gt) {
+        series.push_back(CandidateSeries(*c, ObjectiveValues(c->record)[k], c->record.trans_mean_m));
+      }
+    }
+    PlotOptions o = PanelOptions(options);
+    o.x_label = kObjectives[k].title;
+    o.y_label = "mean translational error (m)";
+    const RankCorrelation* s = k < correlation.objectives.size() ? &correlation.objectives[k].spearman : nullptr;
+    o.title = s && s->defined ? fmt::format("{}: Spearman rho = {:.2f}", kObjectives[k].short_name, s->rho)
+                              : fmt::format("{}: rho undefined", kObjectives[k].short_name);
+    o.legend = k == 0;
+    panels.push_back(RenderPlot(series, o).image);
+  }
+  GridOptions g;
+  g.columns = 3;
+  g.title = "Objectives against the ground-truth translational error";
+  return ComposeGrid(panels, g);
+}
+
+}  // namespace slamtune::report

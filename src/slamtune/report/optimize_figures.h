@@ -1,0 +1,61 @@
+// The figures of `slamtune optimize`:
+// * the candidates' maps side by side (map_panels.h);
+// * the population in objective space for one generation, as three 2D projections
+//   (eta-n_c, eta-n_e, n_c-n_e) in one 1 x 3 image, with the candidates marked (the seed
+//   paper's Figure 13 shows the population moving towards the front over generations);
+// * all snapshots overlaid, on the same axes;
+// * each objective against the translational error, one panel per objective, with Spearman's
+//   rho in the panel title (error_correlation.h).
+// The population figures share axis limits across generations so they can be compared side by
+// side. Failure-scored individuals (report_text.h IsFailureScore) are left out and counted in
+// the figure title.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "slamtune/optim/optimize_result.h"
+#include "slamtune/report/error_correlation.h"
+#include "slamtune/report/map_panels.h"
+#include "slamtune/report/plot.h"
+
+namespace slamtune::report {
+
+struct FigureOptions {
+  int panel_width = 520;   // px, width of one plot panel, >= 160
+  int panel_height = 420;  // px, height of one plot panel, >= 120
+  double font_scale = 0.45;  // tick labels; titles 1.25x; in (0, 4]
+  MapPanelOptions maps;    // the side-by-side maps
+
+  void Validate() const;
+};
+
+// Axis limits per objective (kObjectives order) covering every valid individual of every
+// snapshot and every successful candidate, widened to nice ticks; nullopt for an objective
+// with no valid value.
+std::array<std::optional<AxisLimits>, 3> ObjectiveLimits(const optim::OptimizeResult& result);
+
+// The candidates' maps, labelled, scaled to a common height, left to right in report order.
+// Requires at least one candidate.
+cv::Mat MapsSideBySide(const optim::OptimizeResult& result, const FigureOptions& options);
+
+// One snapshot's population (1 x 3 projections) with the candidates marked.
+cv::Mat PopulationFigure(const optim::GenerationSnapshot& snapshot, const optim::OptimizeResult& result,
+                         const FigureOptions& options);
+
+// Every snapshot overlaid (1 x 3 projections), one colour and marker per generation.
+cv::Mat PopulationEvolutionFigure(const optim::OptimizeResult& result, const FigureOptions& options);
+
+// Each objective against the mean translational error over `runs` (GroundTruthRuns), 1 x 3,
+// candidates marked; panel titles carry rho from `correlation`.
+cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
+                               const ErrorCorrelationSummary& correlation, const optim::OptimizeResult& result,
+                               const FigureOptions& options);
+
+// The style of a candidate's marker (by label), shared with the sweep figures.
+Series CandidateSeries(const optim::Candidate& candidate, double x, double y);
+
+}  // namespace slamtune::report

@@ -1,0 +1,35 @@
+// report.html of `slamtune optimize`: one self-contained page (html_page.h) an engineer reads
+// after the run: the log and settings, the verdict, the candidates (parameters, objectives,
+// loop closures, errors), the loop-closure scan indices, the maps, the population figures,
+// the objectives against ground-truth error with their rank correlations, and what the
+// objectives can and cannot tell.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "slamtune/optim/optimize_result.h"
+#include "slamtune/report/error_correlation.h"
+
+namespace slamtune::report {
+
+// The PNG bytes of the figures (the same bytes as the files beside report.html).
+struct OptimizeFigures {
+  std::vector<std::uint8_t> maps;                                       // empty: no candidates
+  std::vector<std::pair<int, std::vector<std::uint8_t>>> populations;  // (generation, png)
+  std::vector<std::uint8_t> evolution;                                  // empty: no snapshots
+  std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
+};
+
+// What the objectives can tell, measured with a reference Karto on real logs; shown in every
+// report so that nobody reads a millimetre-level ranking into them.
+extern const char* const kObjectivesCaveat;
+
+std::string OptimizeHtml(const optim::OptimizeResult& result, const OptimizeFigures& figures,
+                         const std::optional<ErrorCorrelationSummary>& correlation,
+                         const std::vector<std::string>& files);
+
+}  // namespace slamtune::report

@@ -1,0 +1,197 @@
+#include "slamtune/report/optimize_report.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "slamtune/common/error.h"
+#include "slamtune/io/map_image.h"
+#include "slamtune/report/testing/fake_optimize_result.h"
+
+namespace slamtune::report {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("slamtune_report_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(WriteOptimizeReport, WritesEveryFileWithGroundTruth) {
+  const fs::path dir = FreshDir("gt");
+  const auto summary = WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
+  for (const char* name :
+       {"results.json", "table3_best_worst_params.csv", "table4_6_objectives.csv", "table7_loop_closures.csv",
+        "table8_loop_scans.csv", "table9_10_errors.csv", "evaluations.csv", "maps_side_by_side.png",
+        "map_recommended.pgm", "map_recommended.yaml", "map_knee.pgm", "map_knee.yaml", "map_worst.pgm",
+        "map_worst.yaml", "population_gen1.png", "population_gen3.png", "population_gen5.png",
+        "population_evolution.png", "objective_vs_error.png", "report.html"}) {
+    EXPECT_TRUE(fs::exists(dir / name)) << name;
+    EXPECT_THAT(summary.files, ::testing::Contains(std::string(name)));
+  }
+  EXPECT_FALSE(fs::exists(dir / "map_default.pgm"));  // its map was not rendered
+  EXPECT_EQ(summary.maps_written, 3);
+  // Every PNG decodes; the population figure is a 1 x 3 row of panels.
+  const cv::Mat population = cv::imread((dir / "population_gen1.png").string());
+  ASSERT_FALSE(population.empty());
+  EXPECT_GT(population.cols, 3 * 520);
+  EXPECT_LT(population.rows, 2 * 420);
+  // The written map reads back as the candidate's map.
+  const io::MapImage back = io::ReadMap((dir / "map_knee.yaml").string());
+  EXPECT_EQ(back.width, testing::FakeOptimizeResult(true).Find("knee")->map.width);
+  EXPECT_EQ(back.pixels, testing::FakeOptimizeResult(true).Find("knee")->map.pixels);
+}
+
+TEST(WriteOptimizeReport, ResultsJsonHasTheStableKeysAndValues) {
+  const fs::path dir = FreshDir("json");
+  WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
+  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  for (const char* key : {"recommended", "knee", "worst", "default", "evaluations", "cache_hits", "wall_s", "verdict",
+                          "recommended_share", "lowest_error", "settings", "search_space"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  const auto& rec = j["recommended"];
+  EXPECT_DOUBLE_EQ(rec["params"]["loop_search_maximum_distance"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(rec["params"]["loop_match_minimum_chain_size"].get<double>(), 12.0);
+  const auto expected = testing::FakeRecord(3.0, 12, 0.1, true);
+  EXPECT_DOUBLE_EQ(rec["objectives"]["occupied_ratio"].get<double>(), expected.occupied_ratio);
+  EXPECT_DOUBLE_EQ(rec["objectives"]["corner_pixels"].get<double>(), expected.corner_pixels);
+  EXPECT_DOUBLE_EQ(rec["objectives"]["enclosed_areas"].get<double>(), expected.enclosed_areas);
+  EXPECT_EQ(rec["loop_closures"].get<int>(), expected.loop_closures);
+  EXPECT_EQ(rec["loop_scans"].get<std::vector<int>>(), expected.loop_scans);
+  EXPECT_DOUBLE_EQ(rec["gt_error"]["trans_mean_m"].get<double>(), expected.trans_mean_m);
+  EXPECT_DOUBLE_EQ(rec["gt_error"]["rot_std_deg"].get<double>(), expected.rot_std_deg);
+  EXPECT_EQ(rec["gt_error"]["relations_used"].get<int>(), 250);
+  EXPECT_EQ(j["evaluations"].get<int>(), 13);
+  EXPECT_EQ(j["cache_hits"].get<int>(), 27);
+  EXPECT_DOUBLE_EQ(j["wall_s"].get<double>(), 321.5);
+  EXPECT_EQ(j["recommended_share"].get<int>(), 5);
+  EXPECT_EQ(j["lowest_error"].get<std::string>(), "knee");
+  EXPECT_EQ(j["settings"]["population"].get<int>(), 8);
+  EXPECT_EQ(j["search_space"]["dimensions"][1]["type"].get<std::string>(), "int");
+  // 12 distinct parameter sets ran with ground truth; error rises with eta, so rho(eta) = +1.
+  EXPECT_EQ(j["error_correlation"]["parameter_sets"].get<int>(), 12);
+  EXPECT_DOUBLE_EQ(j["error_correlation"]["occupied_ratio"]["rho"].get<double>(), 1.0);
+  EXPECT_LT(j["error_correlation"]["enclosed_areas"]["rho"].get<double>(), 0.0);
+}
+
+TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
+  const fs::path dir = FreshDir("nogt");
+  const auto summary = WriteOptimizeReport(testing::FakeOptimizeResult(false), dir.string());
+  EXPECT_FALSE(fs::exists(dir / "table9_10_errors.csv"));
+  EXPECT_FALSE(fs::exists(dir / "objective_vs_error.png"));
+  EXPECT_FALSE(summary.correlation.has_value());
+  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  EXPECT_FALSE(j["recommended"].contains("gt_error"));
+  EXPECT_TRUE(j["lowest_error"].is_null());
+  EXPECT_FALSE(j.contains("error_correlation"));
+  EXPECT_THAT(Slurp(dir / "report.html"), Not(HasSubstr("Spearman")));
+}
+
+TEST(WriteOptimizeReport, TablesMirrorThePapers) {
+  const fs::path dir = FreshDir("tables");
+  WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
+  const std::string t3 = Slurp(dir / "table3_best_worst_params.csv");
+  EXPECT_EQ(t3.substr(0, t3.find('\n')), "label,loop_search_maximum_distance,loop_match_minimum_chain_size");
+  EXPECT_THAT(t3, HasSubstr("\nrecommended,3,12\n"));
+  EXPECT_THAT(t3, HasSubstr("\ndefault,4,10\n"));
+  const std::string t4 = Slurp(dir / "table4_6_objectives.csv");
+  EXPECT_EQ(t4.substr(0, t4.find('\n')), "label,eta,eta_known,corner_pixels,corners,enclosed_areas,contours");
+  // Listed recommended, knee, default, worst.
+  EXPECT_LT(t4.find("\nrecommended,"), t4.find("\nknee,"));
+  EXPECT_LT(t4.find("\nknee,"), t4.find("\ndefault,"));
+  EXPECT_LT(t4.find("\ndefault,"), t4.find("\nworst,"));
+  EXPECT_THAT(Slurp(dir / "table7_loop_closures.csv"), HasSubstr("\nrecommended,11\n"));
+  EXPECT_THAT(Slurp(dir / "table8_loop_scans.csv"), HasSubstr("\nworst,100 137 174 211\n"));
+  EXPECT_THAT(Slurp(dir / "table9_10_errors.csv"), HasSubstr("\nknee,0.035,0.015,0.6,0.35,250\n"));
+  const std::string ev = Slurp(dir / "evaluations.csv");
+  EXPECT_EQ(std::count(ev.begin(), ev.end(), '\n'), 1 + 14);
+  // The failed run's reason is quoted; its metric cells are empty.
+  EXPECT_THAT(ev, HasSubstr("failed,\"scan matcher threw: bad, \"\"quoted\"\" reason\",,,,,,,,,"));
+}
+
+TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
+  const fs::path dir = FreshDir("html");
+  WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
+  const std::string html = Slurp(dir / "report.html");
+  EXPECT_THAT(html, HasSubstr("The recommendation &lt;r=3, g=12&gt; beats the defaults &amp; closes more loops."));
+  EXPECT_THAT(html, Not(HasSubstr("<r=3")));
+  // maps, three generations, evolution, objective vs error.
+  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 6);
+  EXPECT_THAT(html, Not(HasSubstr("<script")));
+  EXPECT_THAT(html, Not(HasSubstr("http://")));
+  EXPECT_THAT(html, Not(HasSubstr("https://")));
+  EXPECT_THAT(html, HasSubstr("intel.clf.gz"));
+  EXPECT_THAT(html, HasSubstr("Spearman rho"));
+  EXPECT_THAT(html, HasSubstr("barely rank working runs"));
+  EXPECT_THAT(html, HasSubstr("100 137 174"));  // loop-closure scan indices
+  EXPECT_THAT(html, HasSubstr("0.035 \u00b1 0.015"));   // knee's translational error
+  EXPECT_THAT(html, HasSubstr("5 of 8 individuals"));
+}
+
+TEST(WriteOptimizeReport, IsDeterministic) {
+  const fs::path a = FreshDir("det_a"), b = FreshDir("det_b");
+  WriteOptimizeReport(testing::FakeOptimizeResult(true), a.string());
+  WriteOptimizeReport(testing::FakeOptimizeResult(true), b.string());
+  int compared = 0;
+  for (const auto& entry : fs::directory_iterator(a)) {
+    EXPECT_EQ(Slurp(entry.path()), Slurp(b / entry.path().filename())) << entry.path().filename();
+    ++compared;
+  }
+  EXPECT_EQ(compared, 20);
+}
+
+TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {
+  optim::OptimizeResult empty;
+  empty.log_path = "x.clf";
+  const fs::path dir = FreshDir("empty");
+  const auto summary = WriteOptimizeReport(empty, dir.string());
+  EXPECT_TRUE(fs::exists(dir / "report.html"));
+  EXPECT_TRUE(fs::exists(dir / "results.json"));
+  EXPECT_FALSE(fs::exists(dir / "maps_side_by_side.png"));
+  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  EXPECT_TRUE(j["recommended"].is_null());
+  // A population made only of failed individuals, and a single candidate without a map.
+  optim::OptimizeResult failed = testing::FakeOptimizeResult(false);
+  failed.candidates.resize(1);
+  failed.candidates[0].map = io::MapImage{};
+  failed.snapshots.resize(1);
+  failed.snapshots[0].objectives.assign(3, {1.0, 1e9, 1e9});
+  EXPECT_NO_THROW(WriteOptimizeReport(failed, FreshDir("failed").string()));
+}
+
+TEST(WriteOptimizeReport, UnwritableFolderIsAnInputError) {
+  const fs::path file = FreshDir("file_in_the_way");
+  std::ofstream(file.string()) << "x";
+  try {
+    WriteOptimizeReport(testing::FakeOptimizeResult(false), file.string());
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(file.string()));
+  }
+}
+
+}  // namespace
+}  // namespace slamtune::report

@@ -1,0 +1,54 @@
+// results.json (results_json.h).
+#include "slamtune/report/results_json.h"
+
+#include <cmath>
+
+namespace slamtune::report {
+
+nlohmann::json CandidateJson(const optim::Candidate& candidate) {
+  const optim::EvaluationRecord& r = candidate.record;
+  nlohmann::json j = r;  // the record's own JSON (optim/evaluation_record.h), then the report's fields
+  j.erase("key");
+  j["label"] = candidate.label;
+  j["description"] = candidate.description;
+  return j;
+}
+
+nlohmann::json SearchSpaceJson(const optim::SearchSpace& space) {
+  nlohmann::json dims = nlohmann::json::array();
+  for (const auto& d : space.dimensions) {
+    dims.push_back({{"name", d.name}, {"lower", d.lower}, {"upper", d.upper}, {"type", d.integer ? "int" : "real"}});
+  }
+  return {{"dimensions", dims}, {"fixed", space.fixed}};
+}
+
+nlohmann::json ResultsJson(const optim::OptimizeResult& result,
+                           const std::optional<ErrorCorrelationSummary>& correlation) {
+  nlohmann::json j;
+  for (const char* label : {"recommended", "knee", "worst", "default"}) {
+    const optim::Candidate* c = result.Find(label);
+    j[label] = c ? CandidateJson(*c) : nlohmann::json(nullptr);
+  }
+  j["evaluations"] = result.evaluation_count;
+  j["cache_hits"] = result.cache_hits;
+  j["wall_s"] = result.wall_s;
+  j["verdict"] = result.verdict;
+  j["recommended_share"] = result.recommended_share;
+  j["lowest_error"] = result.lowest_error_label.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.lowest_error_label);
+  j["settings"] = result.settings.is_null() ? nlohmann::json::object() : result.settings;
+  j["search_space"] = SearchSpaceJson(result.space);
+  j["log"] = result.log_path;
+  j["relations"] = result.relations_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.relations_path);
+  if (correlation) {
+    nlohmann::json c = {{"parameter_sets", correlation->parameter_sets}};
+    for (const auto& o : correlation->objectives) {
+      c[o.objective] = {{"rho", o.spearman.defined ? nlohmann::json(o.spearman.rho) : nlohmann::json(nullptr)},
+                        {"n", o.spearman.n},
+                        {"reading", o.reading}};
+    }
+    j["error_correlation"] = c;
+  }
+  return j;
+}
+
+}  // namespace slamtune::report
