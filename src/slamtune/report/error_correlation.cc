@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <set>
 
 #include "slamtune/common/error.h"
@@ -12,14 +13,69 @@
 namespace slamtune::report {
 namespace {
 
-std::string Reading(const std::string& title, const RankCorrelation& s, const CorrelationReadingOptions& o) {
-  if (!s.defined) return fmt::format("{}: no correlation ({}).", title, s.note);
+Tracking Classify(const RankCorrelation& s, const CorrelationReadingOptions& o) {
+  if (!s.defined || s.n < o.min_sets) return Tracking::kUndecided;
+  if (s.rho >= o.strong) return Tracking::kTracks;
+  if (s.rho >= o.weak) return Tracking::kWeakly;
+  if (s.rho > -o.weak) return Tracking::kNot;
+  return Tracking::kAgainst;
+}
+
+std::string Capitalised(std::string text) {
+  if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
+std::string Reading(const std::string& title, const RankCorrelation& s, Tracking t) {
   const std::string figures = fmt::format("rho = {:.2f}, n = {}", s.rho, s.n);
-  if (s.n < o.min_sets) return fmt::format("{}: too few parameter sets to judge ({}).", title, figures);
-  if (s.rho >= o.strong) return fmt::format("{} tracks the error: lower values went with lower error ({}).", title, figures);
-  if (s.rho >= o.weak) return fmt::format("{} tracks the error only weakly ({}).", title, figures);
-  if (s.rho > -o.weak) return fmt::format("{} does not track the error ({}).", title, figures);
-  return fmt::format("{} runs against the error: lower values went with higher error ({}).", title, figures);
+  switch (t) {
+    case Tracking::kTracks:
+      return Capitalised(fmt::format("{} tracks the error: lower values went with lower error ({}).", title, figures));
+    case Tracking::kWeakly:
+      return Capitalised(fmt::format("{} tracks the error only weakly ({}).", title, figures));
+    case Tracking::kNot:
+      return Capitalised(fmt::format("{} does not track the error ({}).", title, figures));
+    case Tracking::kAgainst:
+      return Capitalised(
+          fmt::format("{} runs against the error: lower values went with higher error ({}).", title, figures));
+    case Tracking::kUndecided:
+      break;
+  }
+  if (!s.defined) return Capitalised(fmt::format("{}: no correlation ({}).", title, s.note));
+  return Capitalised(fmt::format("{}: too few parameter sets to judge ({}).", title, figures));
+}
+
+// "a", "a and b", "a, b and c".
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += i + 1 == names.size() ? " and " : ", ";
+    out += names[i];
+  }
+  return out;
+}
+
+std::string Evidence(const std::vector<ObjectiveErrorCorrelation>& objectives) {
+  const std::vector<std::pair<Tracking, std::string>> groups = {
+      {Tracking::kTracks, "track{} the translational error"},
+      {Tracking::kWeakly, "track{} it only weakly"},
+      {Tracking::kNot, "do{} not track it"},
+      {Tracking::kAgainst, "run{} against it (lower values, higher error)"},
+      {Tracking::kUndecided, "cannot be judged from these runs"},
+  };
+  std::vector<std::string> parts;
+  for (const auto& [tracking, phrase] : groups) {
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < objectives.size(); ++k) {
+      if (objectives[k].tracking == tracking) names.push_back(kObjectives[k].short_name);
+    }
+    if (names.empty()) continue;
+    // Verb agreement: "eta tracks", "eta and n_c track"; "does"/"do"; "runs"/"run".
+    const bool one = names.size() == 1;
+    std::string verb = fmt::format(fmt::runtime(phrase), one ? (tracking == Tracking::kNot ? "es" : "s") : "");
+    parts.push_back(JoinNames(names) + " " + verb);
+  }
+  return "On this log, " + JoinNames(parts) + ".";
 }
 
 }  // namespace
@@ -53,22 +109,22 @@ ErrorCorrelationSummary CorrelateObjectivesWithError(const std::vector<optim::Ev
   out.parameter_sets = static_cast<int>(runs.size());
   std::vector<double> error;
   for (const auto& r : runs) error.push_back(r.trans_mean_m);
-  std::string readings;
   for (std::size_t k = 0; k < kObjectives.size(); ++k) {
     std::vector<double> values;
     for (const auto& r : runs) values.push_back(ObjectiveValues(r)[k]);
     ObjectiveErrorCorrelation c;
     c.objective = kObjectives[k].key;
     c.spearman = SpearmanCorrelation(values, error);
-    c.reading = Reading(kObjectives[k].title, c.spearman, options);
-    readings += " " + c.reading;
+    c.tracking = Classify(c.spearman, options);
+    c.reading = Reading(kObjectives[k].title, c.spearman, c.tracking);
     out.objectives.push_back(std::move(c));
   }
   out.statement = fmt::format(
-      "Spearman rank correlation between each objective and the mean translational error, over the {} distinct "
-      "parameter sets that ran with ground truth on this log.{} A high rho can come mostly from a few runs whose "
-      "loop closure failed; check the scatter plot before reading it as a ranking of working runs.",
-      out.parameter_sets, readings);
+      "{} (Spearman rank correlation of each objective with the mean translational error over the {} distinct "
+      "parameter sets that ran with ground truth; positive rho: lower objective, lower error.) A high rho can come "
+      "mostly from a few runs whose loop closure failed; check the scatter plot before reading it as a ranking of "
+      "working runs.",
+      Evidence(out.objectives), out.parameter_sets);
   return out;
 }
 

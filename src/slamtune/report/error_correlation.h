@@ -24,16 +24,20 @@ struct CorrelationReadingOptions {
   void Validate() const;
 };
 
+// How one objective relates to the error, by the thresholds of CorrelationReadingOptions.
+enum class Tracking { kTracks, kWeakly, kNot, kAgainst, kUndecided };
+
 struct ObjectiveErrorCorrelation {
   std::string objective;     // kObjectives key
   RankCorrelation spearman;  // objective vs translational mean error
+  Tracking tracking = Tracking::kUndecided;
   std::string reading;       // one sentence in plain words
 };
 
 struct ErrorCorrelationSummary {
   int parameter_sets = 0;  // distinct parameter sets that ran and have ground truth
   std::vector<ObjectiveErrorCorrelation> objectives;  // in kObjectives order
-  std::string statement;   // a paragraph for the report
+  std::string statement;   // a paragraph for the report: the evidence, grouped, and its caveat
 };
 
 // The distinct parameter sets (by key; the first evaluation of each) whose run succeeded and

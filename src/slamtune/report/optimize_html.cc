@@ -14,7 +14,7 @@
 namespace slamtune::report {
 
 const char* const kObjectivesCaveat =
-    "What the objectives can tell: the three objectives are computed from the map alone, without ground truth. "
+    "The three objectives are computed from the map alone, without ground truth. "
     "Measured with a reference Karto on real logs, they separate runs whose loop closure failed (doubled walls, "
     "smeared corridors: more occupied cells, more corners, more enclosed areas) from working runs very reliably. "
     "They barely rank working runs that differ by a millimetre or two of trajectory error: among parameter sets "
