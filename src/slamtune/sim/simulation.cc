@@ -1,0 +1,181 @@
+#include "slamtune/sim/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/sim/random.h"
+#include "slamtune/sim/ray_caster.h"
+#include "slamtune/sim/route.h"
+#include "slamtune/sim/world_catalog.h"
+
+namespace slamtune::sim {
+namespace {
+
+constexpr uint64_t kLaserStream = 1;
+constexpr uint64_t kOdometryStream = 2;
+
+void RequireRange(const char* field, double value, double low, double high, bool low_open) {
+  const bool ok = std::isfinite(value) && (low_open ? value > low : value >= low) && value <= high;
+  if (!ok) throw InputError(fmt::format("{} = {}: must be in {}{}, {}]", field, value, low_open ? "(" : "[", low, high));
+}
+
+// Rounds a time to whole microseconds: k / 1e6 is the double nearest to the decimal that
+// "%.6f" prints, so all files name exactly the same instants.
+double ToMicroseconds(double t) { return std::round(t * 1e6) / 1e6; }
+
+}  // namespace
+
+void SimulationOptions::Validate() const {
+  bool known = false;
+  std::string names;
+  for (const WorldInfo& info : ListWorlds()) {
+    known = known || info.name == world;
+    names += (names.empty() ? "" : ", ") + info.name;
+  }
+  if (!known) throw InputError(fmt::format("world = '{}': must be one of {}", world, names));
+  laser.Validate();
+  odometry.Validate();
+  relations.Validate();
+  RequireRange("speed_mps", speed_mps, 0.0, 5.0, true);
+  RequireRange("scan_rate_hz", scan_rate_hz, 0.0, 100.0, true);
+  RequireRange("step_length_m", step_length_m, 0.0, 1.0, true);
+  RequireRange("start_time_s", start_time_s, 0.0, 1e9, false);
+  if (max_scans < 1) throw InputError("max_scans = 0: must be >= 1");
+}
+
+std::string SimulationSummary::Report() const {
+  return fmt::format(
+      "world {} (seed {}): {} scans, {} ODOM records, path {:.1f} m in {:.1f} s\n"
+      "readings: {} ({} no-return, {:.1f}%)\n"
+      "odometry error vs truth: final {:.2f} m / {:.1f} deg, max {:.2f} m / {:.1f} deg\n"
+      "relations: {} local, {} revisits (longest gap {:.0f} s)",
+      world, seed, scans, odometry_records, path_length_m, duration_s, readings, no_return_readings,
+      readings ? 100.0 * no_return_readings / readings : 0.0, final_position_error_m,
+      RadToDeg(final_heading_error_rad), max_position_error_m, RadToDeg(max_heading_error_rad), local_relations,
+      revisit_relations, longest_revisit_gap_s);
+}
+
+Simulation Simulate(const SimulationOptions& options) {
+  options.Validate();
+  Simulation sim;
+  sim.world = MakeWorld(options.world);
+  const Route route(sim.world.waypoints, sim.world.turn_radius);
+  const double duration = route.length() / options.speed_mps;
+  const std::size_t num_scans = static_cast<std::size_t>(std::floor(duration * options.scan_rate_hz + 1e-9)) + 1;
+  const std::size_t num_odometry = static_cast<std::size_t>(std::floor(route.length() / options.step_length_m + 1e-9)) + 1;
+  if (num_scans > options.max_scans) {
+    throw InputError(fmt::format("scan_rate_hz = {}, speed_mps = {}: world '{}' would give {} scans, above max_scans = {}",
+                                 options.scan_rate_hz, options.speed_mps, options.world, num_scans, options.max_scans));
+  }
+  const RayCaster caster(sim.world.walls);
+  const LaserOptions& laser = options.laser;
+  // FLASER when the beams follow its convention (carmen_reader.h), taking the reader's exact
+  // values so the log reads back identical; ROBOTLASER1, which states its geometry, otherwise.
+  io::RecordKind kind = io::RecordKind::kRobotLaser1;
+  double angle_min = laser.angle_min(), angle_increment = laser.angle_increment();
+  double flaser_min = 0.0, flaser_increment = 0.0;
+  io::FlaserBeamGeometry(laser.beams, &flaser_min, &flaser_increment);
+  if (std::fabs(flaser_min - angle_min) < 1e-12 && std::fabs(flaser_increment - angle_increment) < 1e-12) {
+    kind = io::RecordKind::kFlaser;
+    angle_min = flaser_min;
+    angle_increment = flaser_increment;
+  }
+  Random laser_random(StreamSeed(options.seed, kLaserStream));
+  OdometryModel odometry(route.PoseAt(0.0), options.odometry, StreamSeed(options.seed, kOdometryStream));
+
+  io::LaserLog& log = sim.log;
+  log.path = "<memory>";
+  log.params = {{kMaxRangeParam, fmt::format("{}", laser.max_range_m)},
+                {"laser_front_laser_fov", fmt::format("{}", laser.fov_deg)},
+                {"laser_front_laser_resolution", fmt::format("{}", laser.fov_deg / (laser.beams - 1))},
+                {"robot_frontlaser_offset", "0.0"}};
+  log.no_return_value = laser.max_range_m;
+  log.no_return_rule = std::string("PARAM ") + kMaxRangeParam;
+  log.scans.reserve(num_scans);
+  log.odometry.reserve(num_odometry);
+  sim.truth.reserve(num_scans);
+
+  // Walk the merged sequence of ODOM and laser instants (ODOM first at equal times).
+  std::size_t next_scan = 0, next_odometry = 0;
+  double previous_s = 0.0;
+  Pose2 previous_true = route.PoseAt(0.0);
+  while (next_scan < num_scans || next_odometry < num_odometry) {
+    const double scan_time = ToMicroseconds(options.start_time_s + next_scan / options.scan_rate_hz);
+    const double odometry_time =
+        ToMicroseconds(options.start_time_s + next_odometry * options.step_length_m / options.speed_mps);
+    const bool is_odometry = next_odometry < num_odometry && (next_scan >= num_scans || odometry_time <= scan_time);
+    const double time = is_odometry ? odometry_time : scan_time;
+    const double s = std::min((time - options.start_time_s) * options.speed_mps, route.length());
+    const Pose2 true_pose = route.PoseAt(s);
+    if (s > previous_s) odometry.Advance(Between(previous_true, true_pose));
+    previous_s = s;
+    previous_true = true_pose;
+    const double logger_time = time - options.start_time_s;
+    if (is_odometry) {
+      io::OdomRecord record;
+      record.pose = odometry.pose();
+      record.tv = options.speed_mps;
+      record.rv = options.speed_mps * route.CurvatureAt(s);
+      record.ipc_time = time;
+      record.logger_time = logger_time;
+      log.odometry.push_back(record);
+      ++next_odometry;
+      continue;
+    }
+    SimulatedScan scan = SimulateScan(caster, true_pose, laser, laser_random);
+    io::LaserScanRecord record;
+    record.kind = kind;
+    record.angle_min = angle_min;
+    record.angle_increment = angle_increment;
+    record.max_range = laser.max_range_m;
+    record.ranges = std::move(scan.ranges);
+    record.no_returns = scan.no_returns;
+    record.laser_pose = odometry.pose();
+    record.robot_pose = odometry.pose();
+    record.ipc_time = time;
+    record.logger_time = logger_time;
+    log.scans.push_back(std::move(record));
+    sim.truth.push_back(io::TimedPose{time, true_pose});
+    ++next_scan;
+  }
+  log.record_counts = {{kind == io::RecordKind::kFlaser ? "FLASER" : "ROBOTLASER1", log.scans.size()},
+                       {"ODOM", log.odometry.size()},
+                       {"PARAM", log.params.size()}};
+  for (const io::LaserScanRecord& scan : log.scans) {
+    log.total_readings += scan.ranges.size();
+    log.total_no_returns += scan.no_returns;
+  }
+
+  RelationSample relations = SampleRelations(sim.truth, options.relations);
+  sim.relations = std::move(relations.relations);
+
+  SimulationSummary& summary = sim.summary;
+  summary.world = sim.world.name;
+  summary.seed = options.seed;
+  summary.scans = log.scans.size();
+  summary.odometry_records = log.odometry.size();
+  summary.path_length_m = route.length();
+  summary.duration_s = sim.truth.back().time - sim.truth.front().time;
+  for (std::size_t k = 0; k < log.scans.size(); ++k) {
+    const Pose2& odom = log.scans[k].laser_pose;
+    const Pose2& truth = sim.truth[k].pose;
+    const double position_error = std::sqrt(SquaredDistance(odom, truth));
+    const double heading_error = std::fabs(NormalizeAngle(odom.theta - truth.theta));
+    summary.max_position_error_m = std::max(summary.max_position_error_m, position_error);
+    summary.max_heading_error_rad = std::max(summary.max_heading_error_rad, heading_error);
+    summary.final_position_error_m = position_error;
+    summary.final_heading_error_rad = heading_error;
+    summary.readings += log.scans[k].ranges.size();
+    summary.no_return_readings += log.scans[k].no_returns;
+  }
+  summary.local_relations = relations.local_pairs;
+  summary.revisit_relations = relations.revisit_pairs;
+  summary.longest_revisit_gap_s = relations.longest_revisit_gap_s;
+  return sim;
+}
+
+}  // namespace slamtune::sim

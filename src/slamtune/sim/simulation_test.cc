@@ -1,0 +1,180 @@
+#include "slamtune/sim/simulation.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/io/carmen_writer.h"
+#include "slamtune/sim/world_catalog.h"
+
+namespace slamtune::sim {
+namespace {
+
+// One simulation per world and seed, shared by the tests of this file.
+const Simulation& Cached(const std::string& world, uint64_t seed = 1) {
+  static std::map<std::pair<std::string, uint64_t>, Simulation> cache;
+  auto it = cache.find({world, seed});
+  if (it == cache.end()) {
+    SimulationOptions options;
+    options.world = world;
+    options.seed = seed;
+    it = cache.emplace(std::make_pair(world, seed), Simulate(options)).first;
+  }
+  return it->second;
+}
+
+std::string AsCarmen(const Simulation& sim) {
+  std::ostringstream out;
+  io::WriteCarmenLog(out, sim.log);
+  return out.str();
+}
+
+TEST(Simulate, DefaultWorldHasAModestSize) {
+  const Simulation& sim = Cached("office");
+  const SimulationSummary& s = sim.summary;
+  EXPECT_EQ(s.world, "office");
+  EXPECT_GE(s.scans, 1000u);
+  EXPECT_LE(s.scans, 3000u);
+  EXPECT_GE(s.path_length_m, 100.0);
+  EXPECT_LE(s.path_length_m, 300.0);
+  EXPECT_EQ(sim.log.scans.size(), s.scans);
+  EXPECT_EQ(sim.truth.size(), s.scans);
+  // ODOM every 0.05 m, laser every 0.1 m (0.5 m/s at 5 Hz).
+  EXPECT_NEAR(static_cast<double>(s.odometry_records), 2.0 * s.scans, 2.0);
+  EXPECT_EQ(s.readings, 181 * s.scans);
+}
+
+TEST(Simulate, SameSeedSameBytesDifferentSeedDifferent) {
+  SimulationOptions options;
+  options.world = "corridor";
+  options.seed = 42;
+  const Simulation a = Simulate(options), b = Simulate(options);
+  options.seed = 43;
+  const Simulation c = Simulate(options);
+  EXPECT_EQ(AsCarmen(a), AsCarmen(b));
+  EXPECT_NE(AsCarmen(a), AsCarmen(c));
+  ASSERT_EQ(a.relations.size(), b.relations.size());
+  for (std::size_t i = 0; i < a.relations.size(); ++i) EXPECT_EQ(a.relations[i].delta, b.relations[i].delta);
+  // The true path is the world's, whatever the seed; only the sensors' noise changes.
+  ASSERT_EQ(a.truth.size(), c.truth.size());
+  EXPECT_EQ(a.truth.back().pose, c.truth.back().pose);
+  EXPECT_NE(a.log.scans.back().laser_pose, c.log.scans.back().laser_pose);
+}
+
+TEST(Simulate, TimestampsAreMicrosecondsAtTheLaserRate) {
+  const Simulation& sim = Cached("office");
+  for (std::size_t k = 0; k < sim.log.scans.size(); ++k) {
+    const double t = sim.log.scans[k].ipc_time;
+    ASSERT_EQ(t, sim.truth[k].time);
+    ASSERT_EQ(t, std::round(t * 1e6) / 1e6);
+    if (k > 0) {
+      ASSERT_NEAR(t - sim.log.scans[k - 1].ipc_time, 0.2, 1e-6);
+    }
+  }
+  EXPECT_EQ(sim.log.scans.front().ipc_time, 100.0);
+}
+
+TEST(Simulate, FlaserPosesAreTheOdometryAtTheScan) {
+  const Simulation& sim = Cached("office");
+  std::map<double, Pose2> odometry;
+  for (const io::OdomRecord& r : sim.log.odometry) odometry[r.ipc_time] = r.pose;
+  std::size_t matched = 0;
+  for (const io::LaserScanRecord& scan : sim.log.scans) {
+    ASSERT_EQ(scan.laser_pose, scan.robot_pose);
+    EXPECT_EQ(scan.laser_offset, Pose2{});
+    EXPECT_EQ(scan.kind, io::RecordKind::kFlaser);
+    EXPECT_DOUBLE_EQ(scan.angle_min, -kPi / 2);
+    EXPECT_DOUBLE_EQ(scan.angle_increment, kPi / 180);
+    if (auto it = odometry.find(scan.ipc_time); it != odometry.end()) {
+      EXPECT_EQ(it->second, scan.laser_pose);
+      ++matched;
+    }
+  }
+  EXPECT_EQ(matched, sim.log.scans.size());  // every scan instant is also an ODOM instant
+  EXPECT_EQ(sim.log.params.at(kMaxRangeParam), "30");
+  EXPECT_EQ(sim.log.no_return_value, 30.0);
+}
+
+TEST(Simulate, RelationsAreRelativeTruePoses) {
+  for (const char* world : {"office", "hall"}) {
+    const Simulation& sim = Cached(world);
+    std::map<double, Pose2> truth;
+    for (const io::TimedPose& p : sim.truth) truth[p.time] = p.pose;
+    ASSERT_GT(sim.relations.size(), 100u);
+    for (const io::Relation& r : sim.relations) {
+      ASSERT_TRUE(truth.count(r.t1) && truth.count(r.t2)) << world;
+      const Pose2 expected = Between(truth[r.t1], truth[r.t2]);
+      ASSERT_NEAR(r.delta.x, expected.x, 1e-12);
+      ASSERT_NEAR(r.delta.y, expected.y, 1e-12);
+      ASSERT_NEAR(r.delta.theta, expected.theta, 1e-12);
+    }
+  }
+}
+
+TEST(Simulate, PathRevisitsPlacesLongAfterwards) {
+  for (const WorldInfo& world : ListWorlds()) {
+    const std::string& info = world.name;
+    const Simulation& sim = Cached(info);
+    std::size_t far_in_time = 0;
+    for (const io::Relation& r : sim.relations) {
+      if (r.t2 - r.t1 >= 60.0 && std::hypot(r.delta.x, r.delta.y) <= 1.0) ++far_in_time;
+    }
+    EXPECT_GE(far_in_time, 20u) << info;
+    EXPECT_GE(sim.summary.longest_revisit_gap_s, 150.0) << info;
+  }
+}
+
+TEST(Simulate, OdometryDriftsMetresOnTheHall) {
+  const SimulationSummary& s = Cached("hall").summary;
+  EXPECT_GT(s.final_position_error_m, 2.0);
+  EXPECT_GT(s.max_position_error_m, 3.0);
+  EXPECT_GT(s.max_heading_error_rad, DegToRad(5.0));
+  // ... while locally it stays faithful: 2 s relations agree with odometry within centimetres.
+  const Simulation& sim = Cached("hall");
+  std::map<double, Pose2> odometry;
+  for (const io::LaserScanRecord& scan : sim.log.scans) odometry[scan.ipc_time] = scan.laser_pose;
+  for (const io::Relation& r : sim.relations) {
+    if (r.t2 - r.t1 > 2.5) continue;
+    const Pose2 measured = Between(odometry[r.t1], odometry[r.t2]);
+    EXPECT_NEAR(measured.x, r.delta.x, 0.1);
+    EXPECT_NEAR(measured.y, r.delta.y, 0.1);
+  }
+}
+
+TEST(Simulate, LaserStreamDoesNotMoveTheOdometry) {
+  SimulationOptions options;
+  options.world = "corridor";
+  const Simulation a = Simulate(options);
+  options.laser.beams = 361;
+  options.laser.range_noise_m = 0.02;
+  const Simulation b = Simulate(options);
+  ASSERT_EQ(a.log.odometry.size(), b.log.odometry.size());
+  EXPECT_EQ(a.log.odometry.back().pose, b.log.odometry.back().pose);
+  EXPECT_EQ(b.log.scans.front().ranges.size(), 361u);
+}
+
+TEST(SimulationOptions, ValidateNamesFieldValueAndRule) {
+  SimulationOptions options;
+  EXPECT_NO_THROW(options.Validate());
+  options.world = "moon";
+  EXPECT_THAT([&] { options.Validate(); },
+              testing::ThrowsMessage<InputError>(testing::HasSubstr("world = 'moon': must be one of office, hall")));
+  options = SimulationOptions();
+  options.scan_rate_hz = 0;
+  EXPECT_THAT([&] { options.Validate(); },
+              testing::ThrowsMessage<InputError>(testing::HasSubstr("scan_rate_hz = 0: must be in (0, 100]")));
+  options = SimulationOptions();
+  options.laser.beams = 0;
+  EXPECT_THAT([&] { Simulate(options); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("laser beams = 0")));
+  options = SimulationOptions();
+  options.max_scans = 100;
+  EXPECT_THAT([&] { Simulate(options); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("max_scans = 100")));
+}
+
+}  // namespace
+}  // namespace slamtune::sim

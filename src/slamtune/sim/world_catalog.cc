@@ -1,0 +1,48 @@
+#include "slamtune/sim/world_catalog.h"
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::sim {
+namespace {
+
+struct Entry {
+  const char* name;
+  const char* description;
+  World (*make)();
+};
+
+constexpr Entry kWorlds[] = {
+    {"office",
+     "28 x 20 m office floor: rooms with doors off a figure-eight of corridors; west loop, east loop, outer ring, "
+     "4 room visits (default)",
+     &MakeOfficeWorld},
+    {"hall", "32 x 22 m open hall with pillars and shelves, circled twice along the walls, ending at the far corner "
+     "(drift doubles walls)",
+     &MakeHallWorld},
+    {"corridor", "50 x 14 m rectangular corridor loop, 2.5 m wide, with wall niches, driven 1.75 times",
+     &MakeCorridorWorld},
+};
+
+}  // namespace
+
+std::vector<WorldInfo> ListWorlds() {
+  std::vector<WorldInfo> worlds;
+  for (const Entry& entry : kWorlds) worlds.push_back({entry.name, entry.description});
+  return worlds;
+}
+
+World MakeWorld(const std::string& name) {
+  std::string known;
+  for (const Entry& entry : kWorlds) {
+    if (name == entry.name) {
+      World world = entry.make();
+      world.name = entry.name;
+      world.description = entry.description;
+      return world;
+    }
+    known += known.empty() ? entry.name : std::string(", ") + entry.name;
+  }
+  throw InputError("world: unknown world '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace slamtune::sim

@@ -1,0 +1,34 @@
+// The built-in simulated worlds, selected by name (`slamtune simulate --world NAME`).
+//
+//   office   (default) an office floor: rooms with doors off a figure-eight of corridors; the
+//            route closes the west loop, the east loop, then the outer ring, and enters rooms.
+//   hall     a large open hall with pillars, circled twice: odometry drift alone doubles walls.
+//   corridor a long, narrow rectangular corridor loop with wall niches, driven 1.75 times.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "slamtune/sim/world.h"
+
+namespace slamtune::sim {
+
+inline constexpr const char* kDefaultWorld = "office";
+
+struct WorldInfo {
+  std::string name;
+  std::string description;  // one line
+};
+
+// All built-in worlds, default first.
+std::vector<WorldInfo> ListWorlds();
+
+// The world called `name`; throws InputError naming the known worlds when there is none.
+World MakeWorld(const std::string& name);
+
+// The builders behind MakeWorld (one file each).
+World MakeOfficeWorld();
+World MakeHallWorld();
+World MakeCorridorWorld();
+
+}  // namespace slamtune::sim
