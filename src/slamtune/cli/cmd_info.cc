@@ -22,9 +22,9 @@ struct InfoArgs {
 };
 
 // JSON numbers cannot be infinite: an infinite value (no no-return value) is written as null.
-nlohmann::json Number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+nlohmann::ordered_json Number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr); }
 
-nlohmann::json ToJson(const io::LogSummary& s) {
+nlohmann::ordered_json ToJson(const io::LogSummary& s) {
   return {
       {"path", s.path},
       {"compressed", s.compressed},

@@ -57,13 +57,14 @@ bool LineReader::Next(std::string_view* line) {
     if (newline != nullptr) {
       length = static_cast<std::size_t>(static_cast<const char*>(newline) - start);
       begin_ += length + 1;
-    } else if (at_end_ || !Refill()) {
+    } else if (!at_end_ && Refill()) {
+      continue;  // Refill moved the data: recompute start
+    } else {
       if (end_ == begin_) return false;
-      length = available;
+      start = buffer_.data() + begin_;  // the last line, without '\n'
+      length = end_ - begin_;
       begin_ = end_;
       unterminated_ = true;
-    } else {
-      continue;
     }
     if (length > 0 && start[length - 1] == '\r') --length;
     ++line_number_;
