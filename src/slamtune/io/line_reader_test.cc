@@ -72,6 +72,16 @@ TEST(LineReaderTest, UnterminatedLastLineAfterARefill) {
   EXPECT_TRUE(unterminated);
 }
 
+TEST(LineReaderTest, LongUnterminatedLastLineAfterAShortOne) {
+  // The last line is longer than what precedes it, so moving it to the buffer front overlaps.
+  const std::string last = std::string(5000, 'y') + " end";
+  std::istringstream in("# short\n" + last);
+  LineReader reader(&in, "mem");
+  const auto lines = AllLines(reader);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[1], last);
+}
+
 TEST(LineReaderTest, CrLfEmptyLinesAndALineLongerThanTheBuffer) {
   const std::string huge(3u << 20, 'x');
   std::istringstream in("a b\r\n\n" + huge + "\nend");
