@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# End-to-end test of `slamtune simulate`: --list, a simulated run, determinism, bad input.
+# Usage: simulate_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]   (datasets are not needed)
+set -euo pipefail
+bin="$1"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# --list names the worlds, default first, and needs no --out.
+"$bin" simulate --list > "$tmp/list.txt" || fail "--list exited non-zero"
+head -n 1 "$tmp/list.txt" | grep -q '^office ' || fail "--list does not start with office"
+for world in office hall corridor; do
+  grep -q "^$world " "$tmp/list.txt" || fail "--list lacks $world"
+done
+
+# A default run writes the three files.
+"$bin" simulate --seed 3 --out "$tmp/a" > "$tmp/a.txt" || fail "simulate exited non-zero"
+for file in office.clf office.relations office.truth.txt; do
+  [[ -s "$tmp/a/$file" ]] || fail "missing or empty $file"
+done
+scans=$(grep -c '^FLASER ' "$tmp/a/office.clf")
+(( scans >= 1000 && scans <= 3000 )) || fail "office has $scans scans, expected 1000..3000"
+bad_counts=$(awk '$1 == "FLASER" && $2 != 181' "$tmp/a/office.clf" | wc -l)
+(( bad_counts == 0 )) || fail "$bad_counts FLASER lines without 181 readings"
+grep -q '^PARAM laser_front_laser_max_range 30 ' "$tmp/a/office.clf" || fail "no max-range PARAM"
+truth_lines=$(grep -vc '^#' "$tmp/a/office.truth.txt")
+(( truth_lines == scans )) || fail "truth has $truth_lines poses for $scans scans"
+grep -q 'scans' "$tmp/a.txt" || fail "no summary printed"
+
+# Same seed: byte-identical files; another seed: a different log.
+"$bin" simulate --world office --seed 3 --out "$tmp/b" > /dev/null
+for file in office.clf office.relations office.truth.txt; do
+  cmp -s "$tmp/a/$file" "$tmp/b/$file" || fail "same seed gave a different $file"
+done
+"$bin" simulate --seed 4 --out "$tmp/c" > /dev/null
+if cmp -s "$tmp/a/office.clf" "$tmp/c/office.clf"; then fail "seeds 3 and 4 gave the same log"; fi
+
+# Other worlds and laser options.
+"$bin" simulate --world hall --beams 361 --max-range 25 --out "$tmp/h" > /dev/null || fail "hall with 361 beams"
+awk '$1 == "FLASER" && $2 != 361 {exit 1}' "$tmp/h/hall.clf" || fail "hall lines without 361 readings"
+
+# Bad input: non-zero exit, nothing claimed.
+expect_failure() {
+  if "$bin" simulate "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"; then fail "accepted: simulate $*"; fi
+}
+expect_failure --bogus-option --out "$tmp/x"
+expect_failure --world moon --out "$tmp/x"
+grep -q "moon" "$tmp/err.txt" || fail "unknown world not named in the error"
+expect_failure --beams 1 --out "$tmp/x"
+grep -q "beams" "$tmp/err.txt" || fail "bad beam count not named in the error"
+expect_failure --speed -1 --out "$tmp/x"
+expect_failure --seed 1
+grep -q -- "--out" "$tmp/err.txt" || fail "missing --out not explained"
+[[ ! -e "$tmp/x" ]] || fail "a failed run created its output folder"
+
+echo "simulate CLI test passed ($scans scans)"
