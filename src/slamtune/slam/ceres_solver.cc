@@ -138,7 +138,10 @@ SolveSummary CeresSolver::Solve(std::vector<Pose2>& nodes, std::span<const Edge>
   summary.iterations = static_cast<int>(s.iterations.size());
   summary.accepted_steps = s.num_successful_steps;
   summary.termination = s.message;
-  if (!s.IsSolutionUsable()) return summary;  // §7.4: poses unchanged
+  if (!s.IsSolutionUsable()) {  // §7.4: corrections not updated, poses unchanged
+    summary.usable = false;
+    return summary;
+  }
   for (std::size_t k = 1; k < nodes.size(); ++k) {
     nodes[k] = {values[3 * k], values[3 * k + 1], values[3 * k + 2]};
   }

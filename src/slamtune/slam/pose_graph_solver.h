@@ -26,7 +26,9 @@ struct SolveSummary {
   double initial_cost = 0.0;   // sum e^T Lambda e before
   double final_cost = 0.0;     // and after
   bool updated = false;        // false when the solver left the node values unchanged
+  bool usable = true;          // false: write nothing back (Ceres "solution unusable", §7.4)
   std::string termination;     // why it stopped
+  double wall_s = 0.0;         // wall time of the solve (set by the caller that times it)
 };
 
 // §7.2 error of one edge for node values a (source) and b (target):

@@ -1,0 +1,217 @@
+// `slamtune run LOG --out DIR`: one Karto SLAM run on a CARMEN log (slam/log_runner.h) with
+// the map (map.pgm + map.yaml as map_saver writes them, map.png), the trajectory of every log
+// scan, the loop closures, and run.json (counts, timing, parameters, map metrics and, with
+// --relations, the Freiburg relation error).
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slamtune/cli/command_registry.h"
+#include "slamtune/common/error.h"
+#include "slamtune/common/progress.h"
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/map_image.h"
+#include "slamtune/io/relations.h"
+#include "slamtune/io/trajectory.h"
+#include "slamtune/metrics/gt_error.h"
+#include "slamtune/metrics/map_quality.h"
+#include "slamtune/slam/log_runner.h"
+#include "slamtune/slam/occupancy_grid.h"
+#include "slamtune/slam/params_yaml.h"
+
+namespace slamtune::cli {
+namespace {
+
+struct RunArgs {
+  std::string log;
+  std::string out;
+  std::string params_file;
+  std::string preset = "slam_karto";
+  std::vector<std::string> sets;
+  std::string relations;
+  bool no_loop_closure = false;
+  bool lenient = false;
+  double no_return = 0.0;
+  std::size_t max_scans = 0;
+  bool quiet = false;
+};
+
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json ParamsJson(const slam::MapperParams& params) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const slam::NamedParam& p : slam::ToNamedValues(params)) {
+    std::visit([&](const auto& v) { out[p.name] = v; }, p.value);
+  }
+  return out;
+}
+
+double PeakMemoryMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+void WriteLoopClosuresCsv(const std::string& path, const slam::RunSummary& s) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path, 0, "cannot write");
+  out << "log_index,node,chain_first,chain_last,linked_to,coarse_response,fine_response,coarse_var_xx,"
+         "coarse_var_xy,coarse_var_yy\n";
+  for (const slam::LoopClosureRecord& l : s.loop_closures) {
+    out << fmt::format("{},{},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", l.log_index, l.node, l.chain_first,
+                       l.chain_last, l.linked_to, l.coarse_response, l.fine_response, l.coarse_var_xx, l.coarse_var_xy,
+                       l.coarse_var_yy);
+  }
+  if (!out) throw InputError(path, 0, "write failed");
+}
+
+slam::MapperParams ResolveParams(const RunArgs& args) {
+  slam::MapperParams params = slam::MapperParams::Preset(args.preset);
+  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
+  for (const std::string& s : args.sets) slam::ApplyOverride(params, s);
+  if (args.no_loop_closure) params.do_loop_closing = false;
+  params.Validate();
+  return params;
+}
+
+int Run(const RunArgs& args) {
+  const slam::MapperParams params = ResolveParams(args);
+  std::vector<io::Relation> relations;
+  if (!args.relations.empty()) relations = io::ReadRelations(args.relations);  // fail before the long run
+  std::filesystem::create_directories(args.out);
+  const auto file = [&](const char* name) { return (std::filesystem::path(args.out) / name).string(); };
+
+  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto, 10.0);
+  io::LogReadOptions read_options;
+  read_options.lenient = args.lenient;
+  read_options.no_return_value = args.no_return;
+  read_options.max_scans = args.max_scans;
+  auto log = std::make_shared<const io::LaserLog>(io::ReadCarmenLog(args.log, read_options));
+
+  slam::LogRunner runner(log, params);
+  const auto start = std::chrono::steady_clock::now();
+  runner.RunToEnd([&](std::size_t done, std::size_t total) {
+    if (progress.quiet() || (done % 50 != 0 && done != total)) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    progress.Update(fmt::format("run: scan {}/{}, {} nodes, {} loops closed, {} elapsed", done, total,
+                                runner.mapper().counters().scans_processed, runner.mapper().counters().loops_closed,
+                                FormatDuration(elapsed)));
+  });
+  const slam::RunSummary summary = runner.Summary();
+  const std::vector<io::TimedPose> trajectory = runner.Trajectory();
+
+  // Map from the final poses (§8), then its metrics.
+  const auto map_start = std::chrono::steady_clock::now();
+  slam::OccupancyGridOptions grid_options;
+  grid_options.resolution = params.resolution;
+  grid_options.min_pass_through = params.min_pass_through;
+  grid_options.occupancy_threshold = params.occupancy_threshold;
+  const io::MapImage map =
+      slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid_options)
+          .ToMapImage();
+  io::WriteMapServer(map, file("map.yaml"));
+  io::WritePng(map, file("map.png"));
+  const metrics::MapQuality quality = metrics::ComputeMapQuality(map);
+  const double map_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - map_start).count();
+
+  io::WriteTrajectory(file("trajectory.txt"), trajectory);
+  WriteLoopClosuresCsv(file("loop_closures.csv"), summary);
+
+  nlohmann::json edges = nlohmann::json::object(), duplicates = nlohmann::json::object();
+  for (int k = 0; k < slam::kNumEdgeKinds; ++k) {
+    edges[slam::EdgeKindName(static_cast<slam::EdgeKind>(k))] = summary.edges[k];
+    duplicates[slam::EdgeKindName(static_cast<slam::EdgeKind>(k))] = summary.duplicate_edges[k];
+  }
+  nlohmann::json run = {
+      {"log", args.log},
+      {"scans", summary.scans_read},
+      {"scans_offered", summary.scans_offered},
+      {"scans_not_moved", summary.scans_not_moved},
+      {"scans_wrong_reading_count", summary.scans_wrong_reading_count},
+      {"nodes", summary.nodes},
+      {"loop_closures", summary.loop_closures.size()},
+      {"loop_attempts", summary.loop_attempts},
+      {"near_chain_matches", summary.near_chain_matches},
+      {"edges", edges},
+      {"duplicate_edges", duplicates},
+      {"solver_runs", summary.solver_runs},
+      {"solver_wall_s", summary.solver_wall_s},
+      {"wall_s", summary.wall_s},
+      {"map_wall_s", map_wall_s},
+      {"log_duration_s", summary.log_duration_s},
+      {"realtime_factor", summary.wall_s > 0 ? Number(summary.log_duration_s / summary.wall_s) : nullptr},
+      {"laser_max_range_m", summary.laser_max_range},
+      {"range_threshold_m", summary.range_threshold},
+      {"no_return_value_m", Number(log->no_return_value)},
+      {"no_return_rule", log->no_return_rule},
+      {"params", ParamsJson(params)},
+      {"map",
+       {{"width", quality.width},
+        {"height", quality.height},
+        {"resolution", quality.resolution},
+        {"occupied_cells", quality.occupied_cells},
+        {"free_cells", quality.free_cells},
+        {"unknown_cells", quality.unknown_cells},
+        {"occupied_ratio", quality.occupied_ratio},
+        {"corner_pixels", quality.corner_pixels},
+        {"corners", quality.corners},
+        {"enclosed_areas", quality.enclosed_areas},
+        {"message", quality.message}}},
+  };
+  std::string gt_line;
+  if (!args.relations.empty()) {
+    const metrics::GtError e = metrics::ComputeGtError(trajectory, relations);
+    nlohmann::json gt = nlohmann::json::object();
+    for (const auto& [key, value] : metrics::GtErrorFields(e)) gt[key] = Number(value);
+    gt["relations_used"] = e.relations_used;
+    gt["relations_missing"] = e.relations_missing;
+    gt["relations_file"] = args.relations;
+    run["gt_error"] = gt;
+    gt_line = fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e.trans_mean_m,
+                          e.trans_std_m, e.rot_mean_deg, e.rot_std_deg, e.relations_used);
+  }
+  run["peak_memory_mb"] = PeakMemoryMb();
+  std::ofstream json_out(file("run.json"));
+  if (!json_out) throw InputError(file("run.json"), 0, "cannot write");
+  json_out << run.dump(2) << "\n";
+
+  progress.Finish(fmt::format("run: {} scans, {} nodes, {} loop closures, {} edges, {:.1f} s wall{}; wrote {}",
+                              summary.scans_read, summary.nodes, summary.loop_closures.size(), summary.total_edges(),
+                              summary.wall_s, gt_line, args.out));
+  return 0;
+}
+
+const SubcommandRegistrar kRun(Subcommand{
+    "run",
+    "Run the Karto-faithful SLAM engine on a CARMEN log: map.pgm/map.yaml/map.png, trajectory.txt, "
+    "loop_closures.csv and run.json in --out",
+    20,
+    [](CLI::App& app) -> std::function<int()> {
+      auto args = std::make_shared<RunArgs>();
+      app.add_option("LOG", args->log, "CARMEN log (plain or gzip)")->required();
+      app.add_option("--out", args->out, "Output folder (created)")->required();
+      app.add_option("--params", args->params_file,
+                     "Mapper parameters YAML (slam_toolbox ros__parameters nesting or a flat map)");
+      app.add_option("--preset", args->preset, "Base parameters: slam_karto, open_karto or slam_toolbox")
+          ->capture_default_str();
+      app.add_option("--set", args->sets, "Override one parameter, name=value (repeatable; applied last)");
+      app.add_option("--relations", args->relations, "Freiburg relations file: report the relation error");
+      app.add_flag("--no-loop-closure", args->no_loop_closure, "Same as --set do_loop_closing=false");
+      app.add_flag("--lenient", args->lenient, "Skip malformed log records instead of failing");
+      app.add_option("--no-return", args->no_return, "No-return value of the log in m (default: detected)");
+      app.add_option("--max-scans", args->max_scans, "Read only the first N laser scans (0 = all)");
+      app.add_flag("--quiet", args->quiet, "No progress on stderr");
+      return [args]() -> int { return Run(*args); };
+    }});
+
+}  // namespace
+}  // namespace slamtune::cli

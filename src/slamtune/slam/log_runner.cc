@@ -1,0 +1,128 @@
+#include "slamtune/slam/log_runner.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::slam {
+
+int RunSummary::total_edges() const { return std::accumulate(edges.begin(), edges.end(), 0); }
+
+LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params) {
+  LaserGeometry g;
+  g.min_angle = record.angle_min;
+  g.angular_resolution = record.angle_increment;
+  g.num_readings = static_cast<int>(record.ranges.size());
+  g.min_range = params.min_laser_range;
+  // §2.3: the value a driver writes for "no return" is the laser's range_max, capped as in the
+  // reference setup (80 m); a log without one uses the cap.
+  g.max_range = std::min(params.laser_max_range_cap, record.max_range);
+  g.range_threshold = params.RangeThreshold(g.min_range, g.max_range);
+  g.offset = Pose2{};  // laser poses as odometry, zero offset (§1.4)
+  return g;
+}
+
+LogRunner::LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params)
+    : log_(std::move(log)), mapper_(params) {
+  SLAMTUNE_CHECK(log_ != nullptr);
+  if (log_->scans.empty()) throw InputError(log_->path, 0, "the log has no laser scans");
+  geometry_ = std::make_shared<const LaserGeometry>(GeometryForRecord(log_->scans.front(), params));
+  state_of_log_scan_.assign(log_->scans.size(), -1);
+}
+
+ProcessResult LogRunner::Step() {
+  SLAMTUNE_CHECK(!Done());
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t index = next_++;
+  ProcessResult result;
+  const int throttle = mapper_.params().throttle_scans;
+  if (index % static_cast<std::size_t>(throttle) != 0) {
+    ++throttled_;
+    result.outcome = ProcessResult::Outcome::kNotMoved;
+  } else {
+    const io::LaserScanRecord& record = log_->scans[index];
+    // The record's readings are shared with the log (aliasing pointer keeps the log alive).
+    std::shared_ptr<const std::vector<double>> ranges(log_, &record.ranges);
+    std::shared_ptr<const LaserGeometry> geometry = geometry_;
+    if (static_cast<int>(record.ranges.size()) != geometry_->num_readings) {
+      geometry = std::make_shared<const LaserGeometry>(GeometryForRecord(record, mapper_.params()));
+    }
+    LaserScan scan(geometry, ranges, record.laser_pose, record.ipc_time);
+    scan.log_index = static_cast<int>(index);
+    result = mapper_.Process(std::move(scan));
+    state_of_log_scan_[index] = result.state_id;
+  }
+  wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+void LogRunner::RunToEnd(const std::function<void(std::size_t, std::size_t)>& progress) {
+  while (!Done()) {
+    Step();
+    if (progress) progress(next_, size());
+  }
+}
+
+RunSummary LogRunner::Summary() const {
+  RunSummary s;
+  const MapperCounters& c = mapper_.counters();
+  s.scans_read = static_cast<int>(log_->scans.size());
+  s.scans_offered = c.scans_offered;
+  s.scans_throttled = throttled_;
+  s.nodes = c.scans_processed;
+  s.scans_not_moved = c.scans_not_moved;
+  s.scans_wrong_reading_count = c.scans_wrong_reading_count;
+  s.edges = c.edges_added;
+  s.duplicate_edges = c.duplicate_edges;
+  s.near_chain_matches = c.near_chain_matches;
+  s.loop_attempts = c.loop_attempts;
+  for (const LoopAttempt& a : mapper_.loop_attempts()) {
+    if (!a.accepted) continue;
+    s.loop_closures.push_back({a.log_index, a.scan, a.chain_first, a.chain_last, a.linked_to, a.coarse_response,
+                               a.fine_response, a.coarse_covariance(0, 0), a.coarse_covariance(0, 1),
+                               a.coarse_covariance(1, 1)});
+  }
+  s.solver_runs = static_cast<int>(mapper_.solver_runs().size());
+  for (const SolveSummary& run : mapper_.solver_runs()) s.solver_wall_s += run.wall_s;
+  s.wall_s = wall_s_;
+  s.log_duration_s = log_->scans.back().ipc_time - log_->scans.front().ipc_time;
+  s.laser_max_range = geometry_->max_range;
+  s.range_threshold = geometry_->range_threshold;
+  return s;
+}
+
+std::vector<io::TimedPose> LogRunner::Trajectory() const {
+  std::vector<io::TimedPose> out;
+  out.reserve(log_->scans.size());
+  const std::vector<LaserScan>& scans = mapper_.scans();
+  int previous = -1;  // state id of the preceding processed scan
+  for (std::size_t i = 0; i < log_->scans.size(); ++i) {
+    const io::LaserScanRecord& record = log_->scans[i];
+    const int id = state_of_log_scan_[i];
+    Pose2 pose;
+    if (id >= 0) {
+      pose = scans[id].SensorPose();
+      previous = id;
+    } else if (previous >= 0) {
+      const LaserScan& p = scans[previous];
+      pose = Compose(p.SensorPose(), Between(p.OdometricSensorPose(), record.laser_pose));
+    } else {
+      pose = record.laser_pose;
+    }
+    out.push_back({record.ipc_time, pose});
+  }
+  return out;
+}
+
+RunResult RunLog(std::shared_ptr<const io::LaserLog> log, const MapperParams& params,
+                 const std::function<void(std::size_t, std::size_t)>& progress) {
+  LogRunner runner(std::move(log), params);
+  runner.RunToEnd(progress);
+  return {runner.Summary(), runner.Trajectory()};
+}
+
+}  // namespace slamtune::slam

@@ -1,0 +1,104 @@
+// Runs a recorded laser log (io::LaserLog) through the Karto mapper the way a slam_karto user
+// replaying it would (karto-algorithm.md §2.3, §1.4 [DECIDE]): every scan in file order, the
+// FLASER laser pose as odometry with a zero mounting offset, readings unchanged,
+// maxRange = min(laser_max_range_cap, the scan's no-return value), rangeThreshold by the rule
+// of §9.2, time = ipc timestamp, throttle_scans keeping every n-th scan.
+//
+// LogRunner is a value with a step API: Step() processes one log scan, so the state after log
+// scan k can be copied (with SetParams() on the copy) and both copies continued; results do not
+// depend on whether a run was forked. RunLog() is the whole run in one call.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "slamtune/io/laser_log.h"
+#include "slamtune/io/trajectory.h"
+#include "slamtune/slam/mapper.h"
+
+namespace slamtune::slam {
+
+// A loop closure as reported in loop_closures.csv and run.json.
+struct LoopClosureRecord {
+  int log_index = -1;     // log scan index of the current scan
+  int node = -1;          // its state id
+  int chain_first = -1;   // candidate chain, state ids
+  int chain_last = -1;
+  int linked_to = -1;     // chain member the loop edge starts from, -1: no edge added (§6.1)
+  double coarse_response = 0.0;
+  double fine_response = 0.0;
+  double coarse_var_xx = 0.0, coarse_var_xy = 0.0, coarse_var_yy = 0.0;  // m^2
+};
+
+struct RunSummary {
+  int scans_read = 0;       // laser scans in the log
+  int scans_offered = 0;    // passed to Process (after throttle_scans)
+  int scans_throttled = 0;
+  int nodes = 0;            // processed scans
+  int scans_not_moved = 0;
+  int scans_wrong_reading_count = 0;
+  std::array<int, kNumEdgeKinds> edges{};            // by EdgeKind
+  std::array<int, kNumEdgeKinds> duplicate_edges{};  // dropped LinkScans calls
+  int near_chain_matches = 0;
+  int loop_attempts = 0;    // candidate chains matched by the loop matcher
+  std::vector<LoopClosureRecord> loop_closures;
+  int solver_runs = 0;
+  double solver_wall_s = 0.0;  // time spent in back-end solves
+  double wall_s = 0.0;         // time spent in Step()
+  double log_duration_s = 0.0;  // last - first ipc timestamp of the log's scans
+  double laser_max_range = 0.0;   // maxRange used (m)
+  double range_threshold = 0.0;   // rangeThreshold used (m)
+  int total_edges() const;
+};
+
+class LogRunner {
+ public:
+  // Validates `params`. The log is shared (read-only) by all copies of the runner.
+  LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params);
+
+  bool Done() const { return next_ >= log_->scans.size(); }
+  std::size_t next_index() const { return next_; }
+  std::size_t size() const { return log_->scans.size(); }
+  // Processes log scan next_index() (or skips it when throttled). Returns what Process did;
+  // a throttled scan reports Outcome::kNotMoved with state_id -1.
+  ProcessResult Step();
+  // Steps to the end; `progress(done, total)` is called after every step when set.
+  void RunToEnd(const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+  // Changes parameters for the scans still to come (see Mapper::SetParams). The laser
+  // geometry stays the one built at construction.
+  void SetParams(const MapperParams& params) { mapper_.SetParams(params); }
+  const Mapper& mapper() const { return mapper_; }
+  const io::LaserLog& log() const { return *log_; }
+
+  RunSummary Summary() const;
+  // One pose per log scan (time = ipc timestamp): a processed scan's current sensor pose; any
+  // other scan the preceding processed scan's pose composed with the odometry increment since
+  // it (odometry itself before the first processed scan). Scans not yet stepped are included
+  // the same way, so call it after RunToEnd() for the final trajectory.
+  std::vector<io::TimedPose> Trajectory() const;
+
+ private:
+  std::shared_ptr<const io::LaserLog> log_;
+  std::shared_ptr<const LaserGeometry> geometry_;
+  Mapper mapper_;
+  std::size_t next_ = 0;
+  std::vector<int> state_of_log_scan_;  // state id per log scan, -1 if not processed
+  int throttled_ = 0;
+  double wall_s_ = 0.0;
+};
+
+// Laser geometry of a log scan record for these parameters (§2.3, §9.2).
+LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params);
+
+// The whole log in one call.
+struct RunResult {
+  RunSummary summary;
+  std::vector<io::TimedPose> trajectory;
+};
+RunResult RunLog(std::shared_ptr<const io::LaserLog> log, const MapperParams& params,
+                 const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+}  // namespace slamtune::slam

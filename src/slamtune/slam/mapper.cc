@@ -1,0 +1,247 @@
+#include "slamtune/slam/mapper.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/slam/loop_closure.h"
+#include "slamtune/slam/near_chains.h"
+
+namespace slamtune::slam {
+namespace {
+
+// ScanMatcherOptions has no operator==; the matcher is rebuilt when any field differs.
+bool SameOptions(const ScanMatcherOptions& a, const ScanMatcherOptions& b) {
+  return a.search_dimension == b.search_dimension && a.search_resolution == b.search_resolution &&
+         a.smear_deviation == b.smear_deviation && a.range_threshold == b.range_threshold &&
+         a.coarse_angle_offset == b.coarse_angle_offset && a.coarse_angle_resolution == b.coarse_angle_resolution &&
+         a.fine_angle_step == b.fine_angle_step && a.distance_variance_penalty == b.distance_variance_penalty &&
+         a.angle_variance_penalty == b.angle_variance_penalty &&
+         a.minimum_distance_penalty == b.minimum_distance_penalty &&
+         a.minimum_angle_penalty == b.minimum_angle_penalty && a.use_response_expansion == b.use_response_expansion &&
+         a.threads == b.threads;
+}
+
+}  // namespace
+
+Mapper::Mapper(const MapperParams& params) : params_(params) {
+  params_.Validate();
+  solver_ = MakeSolver(params_.solver, params_.ceres_loss_function);
+}
+
+void Mapper::SetParams(const MapperParams& params) {
+  params.Validate();
+  if (params.use_scan_matching != params_.use_scan_matching && last_processed_ >= 0) {
+    throw InputError("use_scan_matching cannot change after the first processed scan");
+  }
+  auto solver = MakeSolver(params.solver, params.ceres_loss_function);
+  const bool barycenter_changed = params.use_scan_barycenter != params_.use_scan_barycenter;
+  params_ = params;
+  solver_ = std::move(solver);
+  if (geometry_ && params_.use_scan_matching) {
+    const double rt = geometry_->range_threshold;
+    if (!sequential_matcher_ || !SameOptions(sequential_matcher_->options(), params_.SequentialMatcherOptions(rt)) ||
+        !SameOptions(loop_matcher_->options(), params_.LoopMatcherOptions(rt))) {
+      BuildMatchers();
+    }
+  }
+  if (barycenter_changed) {
+    for (std::size_t k = 0; k < scans_.size(); ++k) {
+      reference_poses_[k] = scans_[k].ReferencePose(params_.use_scan_barycenter);
+    }
+  }
+}
+
+void Mapper::BuildMatchers() {
+  const double rt = geometry_->range_threshold;
+  sequential_matcher_.emplace(params_.SequentialMatcherOptions(rt));
+  loop_matcher_.emplace(params_.LoopMatcherOptions(rt));
+}
+
+void Mapper::SetScanSensorPose(int id, const Pose2& sensor_pose) {
+  scans_[id].SetSensorPose(sensor_pose);
+  reference_poses_[id] = scans_[id].ReferencePose(params_.use_scan_barycenter);
+}
+
+std::vector<const LaserScan*> Mapper::ScanPointers(const std::vector<int>& ids) const {
+  std::vector<const LaserScan*> out;
+  out.reserve(ids.size());
+  for (int id : ids) out.push_back(&scans_[id]);
+  return out;
+}
+
+// §3.2, steps 1-10 in order.
+ProcessResult Mapper::Process(LaserScan scan) {
+  ProcessResult result;
+  ++counters_.scans_offered;
+  // 1. Reading count must match the laser of the first scan (§2.1).
+  if (geometry_ && scan.geometry().num_readings != geometry_->num_readings) {
+    ++counters_.scans_wrong_reading_count;
+    result.outcome = ProcessResult::Outcome::kWrongReadingCount;
+    return result;
+  }
+  // 2. First call: the laser and the matchers (their grids depend on the range threshold).
+  if (!geometry_) {
+    geometry_ = scan.geometry_ptr();
+    if (params_.use_scan_matching) BuildMatchers();
+  }
+  // 3-4. Initial guess from the odometry increment since the last processed scan.
+  const LaserScan* last = last_processed_ >= 0 ? &scans_[last_processed_] : nullptr;
+  if (last != nullptr) {
+    scan.SetCorrectedPose(InitialGuess(last->odometric_pose(), last->corrected_pose(), scan.odometric_pose()));
+  }
+  // 5. HasMovedEnough.
+  const MovementOptions movement{params_.minimum_time_interval, params_.minimum_travel_distance,
+                                 params_.minimum_travel_heading};
+  result.move = HasMovedEnough(scan, last, movement);
+  if (result.move == MoveDecision::kNotMoved) {
+    ++counters_.scans_not_moved;
+    result.outcome = ProcessResult::Outcome::kNotMoved;
+    return result;
+  }
+  // 6-7. Sequential match against the running buffer, penalties and refinement on.
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
+  if (params_.use_scan_matching && last != nullptr) {
+    const std::vector<const LaserScan*> buffer =
+        ScanPointers(std::vector<int>(running_buffer_.begin(), running_buffer_.end()));
+    const MatchResult match = sequential_matcher_->Match(scan, buffer, true, true);
+    scan.SetSensorPose(match.mean);
+    covariance = match.covariance;
+    result.sequential_response = match.response;
+  }
+  // 8. Register the scan.
+  const int id = static_cast<int>(scans_.size());
+  scan.state_id = id;
+  scans_.push_back(std::move(scan));
+  reference_poses_.push_back(scans_[id].ReferencePose(params_.use_scan_barycenter));
+  ++counters_.scans_processed;
+  result.state_id = id;
+  // 9. Graph, edges, running buffer, loop closure.
+  if (params_.use_scan_matching) {
+    graph_.AddVertex(scans_[id].corrected_pose());  // 9a: node = pose after the sequential match
+    AddEdges(id, covariance, &result);               // 9b
+    running_buffer_.push_back(id);                   // 9c, §3.3
+    TrimRunningBuffer(
+        running_buffer_, [this](int k) { return scans_[k].SensorPose(); }, params_.scan_buffer_size,
+        params_.scan_buffer_maximum_scan_distance);
+    if (params_.do_loop_closing) result.loops_closed = TryCloseLoop(id, &result);  // 9d
+  }
+  // 10.
+  last_processed_ = id;
+  return result;
+}
+
+bool Mapper::Link(int from, int to, const Pose2& mean, const Eigen::Matrix3d& covariance, EdgeKind kind,
+                  ProcessResult* result) {
+  const bool added = graph_.LinkScans(from, to, scans_[from].SensorPose(), mean, covariance, kind);
+  const auto k = static_cast<std::size_t>(kind);
+  if (added) {
+    ++counters_.edges_added[k];
+    ++result->edges_added[k];
+  } else {
+    ++counters_.duplicate_edges[k];
+  }
+  return added;
+}
+
+// §5.2 LinkChainToScan: returns the closest member linked from, or -1 when it is beyond
+// LinkScanMaximumDistance (nothing added). A duplicate still returns the member.
+int Mapper::LinkChainToScan(const std::vector<int>& chain, int scan, const Pose2& mean,
+                            const Eigen::Matrix3d& covariance, EdgeKind kind, ProcessResult* result) {
+  const int closest = ClosestInChain(chain, reference_poses_, scan);
+  const double l = params_.link_scan_maximum_distance;
+  if (SquaredDistance(reference_poses_[closest], reference_poses_[scan]) >= l * l + kKartoTolerance) return -1;
+  Link(closest, scan, mean, covariance, kind, result);
+  return closest;
+}
+
+// §5.3.
+void Mapper::AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult* result) {
+  std::vector<Pose2> means;
+  std::vector<Eigen::Matrix3d> covariances;
+  if (last_processed_ >= 0) {
+    const Pose2 pose = scans_[scan].SensorPose();
+    Link(scan - 1, scan, pose, covariance, EdgeKind::kSequential, result);  // 1. previous scan
+    means.push_back(pose);                                                 // 2. running buffer
+    covariances.push_back(covariance);
+    if (!running_buffer_.empty()) {
+      LinkChainToScan(std::vector<int>(running_buffer_.begin(), running_buffer_.end()), scan, pose, covariance,
+                      EdgeKind::kRunningBuffer, result);
+    }
+  }
+  LinkNearChains(scan, &means, &covariances, result);  // 3.
+  if (!means.empty()) SetScanSensorPose(scan, WeightedMean(means, covariances));  // 4.
+}
+
+void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
+                            ProcessResult* result) {
+  const auto chains = FindNearChains(graph_, reference_poses_, scan, params_.link_scan_maximum_distance);
+  for (const std::vector<int>& chain : chains) {
+    if (static_cast<int>(chain.size()) < params_.loop_match_minimum_chain_size) continue;  // g gates here too
+    ++counters_.near_chain_matches;
+    const MatchResult m = sequential_matcher_->Match(scans_[scan], ScanPointers(chain), false, true);
+    if (m.response > params_.link_match_minimum_response_fine - kKartoTolerance) {
+      means->push_back(m.mean);
+      covariances->push_back(m.covariance);
+      LinkChainToScan(chain, scan, m.mean, m.covariance, EdgeKind::kNearChain, result);
+    }
+  }
+}
+
+// §6.1. The cursor is shared by all candidate searches of this call.
+int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
+  const LoopSearchOptions search{params_.loop_search_maximum_distance, params_.loop_match_minimum_chain_size};
+  const double q2 = params_.LoopMatchMaximumVarianceCoarseInternal();
+  int closed = 0;
+  int cursor = 0;
+  std::vector<int> chain = FindPossibleLoopClosure(graph_, reference_poses_, scan, search, &cursor);
+  while (!chain.empty()) {
+    LoopAttempt attempt;
+    attempt.log_index = scans_[scan].log_index;
+    attempt.scan = scan;
+    attempt.chain_first = chain.front();
+    attempt.chain_last = chain.back();
+    const std::vector<const LaserScan*> base = ScanPointers(chain);
+    const MatchResult coarse = loop_matcher_->Match(scans_[scan], base, false, false);
+    attempt.coarse_response = coarse.response;
+    attempt.coarse_covariance = coarse.covariance;
+    // §6.3: strict on all three.
+    attempt.coarse_passed = coarse.response > params_.loop_match_minimum_response_coarse &&
+                            coarse.covariance(0, 0) < q2 && coarse.covariance(1, 1) < q2;
+    if (attempt.coarse_passed) {
+      LaserScan tmp = scans_[scan];
+      tmp.SetSensorPose(coarse.mean);
+      const MatchResult fine = sequential_matcher_->Match(tmp, base, false, true);
+      attempt.fine_response = fine.response;
+      attempt.accepted = fine.response >= params_.loop_match_minimum_response_fine;  // §6.4
+      if (attempt.accepted) {
+        SetScanSensorPose(scan, fine.mean);
+        attempt.linked_to = LinkChainToScan(chain, scan, fine.mean, fine.covariance, EdgeKind::kLoop, result);
+        attempt.solver_run = CorrectPoses();
+        ++closed;
+        ++counters_.loops_closed;
+      }
+    }
+    ++counters_.loop_attempts;
+    loop_attempts_.push_back(attempt);
+    chain = FindPossibleLoopClosure(graph_, reference_poses_, scan, search, &cursor);
+  }
+  return closed;
+}
+
+// §7.1 CorrectPoses: one full solve, then every node's value is written back as the scan's
+// sensor pose. Returns the index of the run in solver_runs_.
+int Mapper::CorrectPoses() {
+  std::vector<Pose2>& nodes = graph_.mutable_node_values();
+  const auto start = std::chrono::steady_clock::now();
+  solver_runs_.push_back(solver_->Solve(nodes, graph_.edges()));
+  solver_runs_.back().wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (solver_runs_.back().usable) {
+    for (std::size_t k = 0; k < nodes.size(); ++k) SetScanSensorPose(static_cast<int>(k), nodes[k]);
+  }
+  return static_cast<int>(solver_runs_.size()) - 1;
+}
+
+}  // namespace slamtune::slam

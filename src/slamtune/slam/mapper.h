@@ -1,0 +1,131 @@
+// The Karto mapper (karto-algorithm.md §3, §5, §6, §7): Process() takes one scan through the
+// front end in the spec's exact order (initial guess, HasMovedEnough, sequential match,
+// vertex, AddEdges, running buffer, TryCloseLoop), links near chains, closes loops and runs
+// one full back-end solve per accepted loop.
+//
+// State as a value: a Mapper holds everything the engine has (processed scans with their
+// poses and points, the pose graph with the solver's node values, the running buffer, both
+// scan matchers with their caches, counters and the loop-closure log). Copying a Mapper and
+// continuing both copies with the same scans gives bit-identical results; SetParams() on a
+// copy changes later decisions only (e.g. the loop-closure parameters r, g, p, q), so an
+// optimiser can fork the state where decisions start to differ.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "slamtune/slam/front_end.h"
+#include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/pose_graph.h"
+#include "slamtune/slam/pose_graph_solver.h"
+#include "slamtune/slam/scan_matcher.h"
+
+namespace slamtune::slam {
+
+// One loop candidate chain tried by TryCloseLoop (§6.1), accepted or not.
+struct LoopAttempt {
+  int log_index = -1;    // log index of the current scan
+  int scan = -1;         // its state id
+  int chain_first = -1;  // state ids of the candidate chain (consecutive)
+  int chain_last = -1;
+  double coarse_response = 0.0;  // s1, loop matcher, no penalty, no refinement
+  Eigen::Matrix3d coarse_covariance = Eigen::Matrix3d::Zero();  // C1
+  bool coarse_passed = false;    // s1 > p and both xy variances < q^2
+  double fine_response = -1.0;   // s2 (sequential matcher on a copy at m1); -1 when not run
+  bool accepted = false;         // s2 >= loop_match_minimum_response_fine
+  int linked_to = -1;            // chain member the loop edge starts from; -1: no edge (§6.1 quirk)
+  int solver_run = -1;           // index into Mapper::solver_runs() of the solve it triggered
+};
+
+// What Process() did with one scan.
+struct ProcessResult {
+  enum class Outcome { kProcessed, kNotMoved, kWrongReadingCount };
+  Outcome outcome = Outcome::kProcessed;
+  MoveDecision move = MoveDecision::kNotMoved;  // which test of HasMovedEnough accepted it
+  int state_id = -1;                             // when processed
+  std::array<int, kNumEdgeKinds> edges_added{};  // by EdgeKind
+  int loops_closed = 0;
+  double sequential_response = -1.0;  // response of the sequential match (-1 when none)
+};
+
+struct MapperCounters {
+  int scans_offered = 0;
+  int scans_processed = 0;
+  int scans_not_moved = 0;
+  int scans_wrong_reading_count = 0;
+  std::array<int, kNumEdgeKinds> edges_added{};
+  std::array<int, kNumEdgeKinds> duplicate_edges{};  // LinkScans calls dropped as duplicates (§5.1)
+  int near_chain_matches = 0;                        // near chains matched (size >= g)
+  int loop_attempts = 0;
+  int loops_closed = 0;
+
+  friend bool operator==(const MapperCounters&, const MapperCounters&) = default;
+};
+
+class Mapper {
+ public:
+  // Validates `params` (InputError) and picks the back-end.
+  explicit Mapper(const MapperParams& params);
+
+  // Mapper::Process of §3.2. `scan` carries its odometric pose (laser pose, zero offset for
+  // CARMEN logs) and time; its log_index is kept for reports. The first scan fixes the laser
+  // geometry: later scans with another reading count are rejected (§2.1).
+  ProcessResult Process(LaserScan scan);
+
+  // Replaces the parameters for the scans still to come (validated first; on error nothing
+  // changes). Matchers and back-end are rebuilt when their options change. use_scan_matching
+  // cannot change once a scan has been processed.
+  void SetParams(const MapperParams& params);
+  const MapperParams& params() const { return params_; }
+
+  // Processed scans, index = state id, with their current poses.
+  const std::vector<LaserScan>& scans() const { return scans_; }
+  // Reference poses (barycentres or sensor poses, §2.2) of the processed scans.
+  const std::vector<Pose2>& reference_poses() const { return reference_poses_; }
+  const PoseGraph& graph() const { return graph_; }
+  const std::deque<int>& running_buffer() const { return running_buffer_; }
+  const std::vector<LoopAttempt>& loop_attempts() const { return loop_attempts_; }
+  const std::vector<SolveSummary>& solver_runs() const { return solver_runs_; }
+  const MapperCounters& counters() const { return counters_; }
+  // State id of the last processed scan, -1 before the first.
+  int last_processed() const { return last_processed_; }
+  // Range threshold of the laser in use (m), 0 before the first scan.
+  double range_threshold() const { return geometry_ ? geometry_->range_threshold : 0.0; }
+
+ private:
+  void BuildMatchers();
+  void SetScanSensorPose(int id, const Pose2& sensor_pose);
+  std::vector<const LaserScan*> ScanPointers(const std::vector<int>& ids) const;
+  // LinkScans / LinkChainToScan of §5.1-§5.2, counting by kind; return whether an edge was added.
+  bool Link(int from, int to, const Pose2& mean, const Eigen::Matrix3d& covariance, EdgeKind kind,
+            ProcessResult* result);
+  int LinkChainToScan(const std::vector<int>& chain, int scan, const Pose2& mean, const Eigen::Matrix3d& covariance,
+                      EdgeKind kind, ProcessResult* result);
+  void AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult* result);
+  void LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
+                      ProcessResult* result);
+  int TryCloseLoop(int scan, ProcessResult* result);
+  int CorrectPoses();
+
+  MapperParams params_;
+  std::shared_ptr<const PoseGraphSolver> solver_;  // stateless, shared by copies
+  std::shared_ptr<const LaserGeometry> geometry_;  // fixed by the first scan
+  std::optional<ScanMatcher> sequential_matcher_;
+  std::optional<ScanMatcher> loop_matcher_;
+  std::vector<LaserScan> scans_;
+  std::vector<Pose2> reference_poses_;
+  PoseGraph graph_;
+  std::deque<int> running_buffer_;
+  int last_processed_ = -1;
+  std::vector<LoopAttempt> loop_attempts_;
+  std::vector<SolveSummary> solver_runs_;
+  MapperCounters counters_;
+};
+
+}  // namespace slamtune::slam
