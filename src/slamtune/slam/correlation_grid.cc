@@ -5,6 +5,10 @@
 #include <cstring>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/slam/back_face_filter.h"
@@ -58,8 +62,18 @@ CorrelationGrid::CorrelationGrid(double search_dimension, double resolution, dou
       // same value as rho for the usual resolutions); the half-size of the border from rho.
       kernel_(MakeSmearKernel(smear_deviation, 1.0 / scale_)) {
   SLAMTUNE_CHECK(kernel_.size() == static_cast<std::size_t>((2 * geometry_.kernel_half + 1) * (2 * geometry_.kernel_half + 1)));
-  SLAMTUNE_CHECK(geometry_.data_size() + kPadding < std::numeric_limits<std::int32_t>::max());
-  data_.assign(static_cast<std::size_t>(geometry_.data_size() + kPadding), 0);
+  const int side = 2 * geometry_.kernel_half + 1;
+  padded_side_ = (side + 15) / 16 * 16;
+  padded_kernel_.assign(static_cast<std::size_t>(padded_side_) * side, 0);
+  for (int j = 0; j < side; ++j) {
+    std::copy_n(kernel_.begin() + static_cast<std::ptrdiff_t>(j) * side, side,
+                padded_kernel_.begin() + static_cast<std::ptrdiff_t>(j) * padded_side_);
+  }
+  // A padded row starting at the left end of the kernel may run past the stored grid's last
+  // row; the padding absorbs it (the bytes there stay zero: max(0, 0)).
+  const std::int64_t padding = std::max<std::int64_t>(kPadding, padded_side_);
+  SLAMTUNE_CHECK(geometry_.data_size() + padding < std::numeric_limits<std::int32_t>::max());
+  data_.assign(static_cast<std::size_t>(geometry_.data_size() + padding), 0);
   touched_x0_ = touched_y0_ = std::numeric_limits<int>::max();
   touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();
 }
@@ -102,11 +116,20 @@ void CorrelationGrid::Smear(int stored_x, int stored_y) {
   // Max-merge of the kernel centred on the cell (§4.3); the border b = h + 1 keeps every
   // kernel cell inside the stored grid for any ROI cell.
   const int half = geometry_.kernel_half;
-  const int side = 2 * half + 1;
   for (int j = -half; j <= half; ++j) {
     std::uint8_t* row = data_.data() + (stored_x - half) + (stored_y + j) * geometry_.stride;
-    const std::uint8_t* k = kernel_.data() + side * (j + half);
-    for (int i = 0; i < side; ++i) row[i] = std::max(row[i], k[i]);
+    const std::uint8_t* k = padded_kernel_.data() + padded_side_ * (j + half);
+    // Whole 16-byte chunks; bytes past the kernel's edge meet zeros and keep their value.
+    for (int i0 = 0; i0 < padded_side_; i0 += 16) {
+#if defined(__SSE2__)
+      // Explicit unsigned byte max: GCC keeps the loop below scalar (row and kernel may alias).
+      __m128i* dst = reinterpret_cast<__m128i*>(row + i0);
+      const __m128i src = _mm_loadu_si128(reinterpret_cast<const __m128i*>(k + i0));
+      _mm_storeu_si128(dst, _mm_max_epu8(_mm_loadu_si128(dst), src));
+#else
+      for (int i = i0; i < i0 + 16; ++i) row[i] = std::max(row[i], k[i]);
+#endif
+    }
   }
   Touch(stored_x - half, stored_y - half, stored_x + half, stored_y + half);
 }

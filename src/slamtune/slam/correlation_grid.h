@@ -85,6 +85,7 @@ class CorrelationGrid {
 
   std::span<const std::uint8_t> kernel() const { return kernel_; }
 
+  // Zero bytes after the grid; at least 64 for the search kernel and a padded kernel row.
   static constexpr int kPadding = 64;
 
  private:
@@ -96,6 +97,10 @@ class CorrelationGrid {
   double scale_;
   Eigen::Vector2d roi_origin_{0, 0};
   std::vector<std::uint8_t> kernel_;
+  // Kernel rows padded with zeros to a multiple of 16 bytes, so that the max-merge runs on
+  // whole vectors (a zero leaves the grid byte unchanged).
+  int padded_side_;
+  std::vector<std::uint8_t> padded_kernel_;
   std::vector<std::uint8_t> data_;
   // Stored-grid box written since the last Clear (empty when x0 > x1).
   int touched_x0_, touched_y0_, touched_x1_, touched_y1_;

@@ -6,9 +6,12 @@
 // (the double sum of bytes in Karto is exact, being an integer below 2^53).
 //
 // Speed (measured in bench/bench_matcher.cc): candidates of a row of the coarse lattice are
-// two cells apart, so for one beam the bytes of the whole row are read from one contiguous
-// run of memory; the row kernel accumulates 16-bit lanes that compilers vectorise. Rows that
-// are not evenly spaced (the fine pass, centred on an averaged pose) take the plain path.
+// two cells apart, so for one beam the bytes of a block of 16 or 32 candidates are one
+// contiguous run of memory; the row kernel keeps 16-bit accumulators of a block in registers
+// (fixed trip count, vectorised by the compiler) while it walks the beams. Far points whose
+// summed index may leave the grid are clipped to the interval of candidates where it is in
+// range, computed once per row and heading. Rows that are not evenly spaced (the fine pass,
+// centred on an averaged pose) take the plain per-candidate path.
 #pragma once
 
 #include <cstdint>
@@ -34,8 +37,9 @@ std::int64_t SumCandidate(const std::uint8_t* grid, std::int64_t data_size, std:
 
 // Fills `sums` (resized to ny*nx*K) with the byte sum of every candidate, index
 // (y*nx + x)*K + k, i.e. Karto's loop order y, x, heading. `table` must have been
-// partitioned for the range of `cells`. Rows are spread over `threads` threads; the result
-// does not depend on the thread count.
+// partitioned for the range of `cells`, and `grid` must be readable (zero) for 64 bytes past
+// data_size (CorrelationGrid::kPadding): the row kernel reads whole blocks of candidates.
+// Rows are spread over `threads` threads; the result does not depend on the thread count.
 void SumAllCandidates(const std::uint8_t* grid, std::int64_t data_size, const ScanLookupTable& table,
                       const CandidateCells& cells, int threads, std::vector<std::int32_t>* sums);
 

@@ -162,7 +162,9 @@ TEST(OccupancyGrid, SkipRulesAndTruncationAtTheRangeThreshold) {
     if (!grid.Contains(x, y)) return;
     ++inside;
     EXPECT_GE(grid.pass_count(x, y), 1u);
-    if (x > 2) EXPECT_EQ(grid.hit_count(x, y), 0u);
+    if (x > 2) {
+      EXPECT_EQ(grid.hit_count(x, y), 0u);
+    }
   });
   EXPECT_GT(inside, 100);
   // The 3 m beam at 80 degrees is a hit.

@@ -237,7 +237,7 @@ TEST(ScanMatcher, ResponseExpansionWidensTheHeadingSearch) {
   std::vector<testing::WallSegment> pillar;
   // 0.2 m pillars 3.5 m away at bearings 0 and -1.5 rad: a residual turn of 0.35 rad moves
   // them 1.2 m, beyond the +-0.25 m window plus the 0.2 m smear.
-  for (const Eigen::Vector2d c : {Eigen::Vector2d(3.5, 0.0), Eigen::Vector2d(0.2476, -3.4912)}) {
+  for (const Eigen::Vector2d& c : {Eigen::Vector2d(3.5, 0.0), Eigen::Vector2d(0.2476, -3.4912)}) {
     const Eigen::Vector2d a = c + Eigen::Vector2d(-0.1, -0.1), b = c + Eigen::Vector2d(0.1, 0.1);
     pillar.push_back({{a.x(), a.y()}, {b.x(), a.y()}});
     pillar.push_back({{b.x(), a.y()}, {b.x(), b.y()}});

@@ -1,0 +1,177 @@
+// Speed of the correlative scan matcher and the occupancy grid (karto-algorithm.md §4, §8).
+//
+//   bench_matcher [--benchmark_filter=...]
+//
+// Input: the first 900 scans of /work/shared/datasets/intel.clf.gz (every third kept, about
+// the spacing of processed scans), or, if the dataset is absent, synthetic 180-beam scans of
+// a room along a loop. Cases:
+//   * Sequential: a scan against the 70 scans before it (a full running buffer), penalised
+//     and refined, with the slam_karto sequential matcher (§4.1 first row).
+//   * LoopCoarse: a scan against a 12-scan chain with the loop matcher, 81x81x21 poses,
+//     no penalty, no refinement (§6.1 coarse gate).
+//   * Reference*: the same with ReferenceScanMatcher, a plain transcription of Karto's loop
+//     (double per pose, bound check per entry) = the "before" of every optimisation.
+//   * OccupancyGrid: the map of all loaded scans at 5 cm.
+// items_per_second is matches (or maps) per second.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/slam/occupancy_grid.h"
+#include "slamtune/slam/reference_scan_matcher.h"
+#include "slamtune/slam/scan_matcher.h"
+
+namespace {
+
+using slamtune::Pose2;
+using slamtune::slam::LaserGeometry;
+using slamtune::slam::LaserScan;
+
+std::vector<LaserScan> IntelScans() {
+  const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/intel.clf.gz";
+  if (!std::filesystem::exists(path)) return {};
+  slamtune::io::LogReadOptions options;
+  options.max_scans = 900;
+  const slamtune::io::LaserLog log = slamtune::io::ReadCarmenLog(path, options);
+  std::vector<LaserScan> scans;
+  std::shared_ptr<const LaserGeometry> geometry;
+  for (std::size_t i = 0; i < log.scans.size(); i += 3) {
+    const auto& r = log.scans[i];
+    if (!geometry) {
+      auto g = std::make_shared<LaserGeometry>();
+      g->min_angle = r.angle_min;
+      g->angular_resolution = r.angle_increment;
+      g->num_readings = static_cast<int>(r.ranges.size());
+      g->max_range = r.max_range;
+      g->range_threshold = std::min(12.0, r.max_range);
+      geometry = g;
+    }
+    scans.emplace_back(geometry, std::make_shared<const std::vector<double>>(r.ranges), r.laser_pose, r.ipc_time);
+  }
+  return scans;
+}
+
+// A 12 m x 9 m room with a few obstacles, seen along a rounded rectangle.
+std::vector<LaserScan> SyntheticScans() {
+  struct Seg {
+    double ax, ay, bx, by;
+  };
+  const std::vector<Seg> walls = {{0, 0, 12, 0}, {12, 0, 12, 9},  {12, 9, 0, 9},  {0, 9, 0, 0},
+                                  {4, 3, 8, 3},  {8, 3, 8, 6},    {8, 6, 4, 6},   {4, 6, 4, 3},
+                                  {1, 7, 2, 8},  {10, 1, 11, 1.5}, {6.5, 7.5, 7, 7.5}};
+  auto g = std::make_shared<LaserGeometry>();
+  g->min_angle = -slamtune::kPi / 2;
+  g->angular_resolution = slamtune::kPi / 180;
+  g->num_readings = 180;
+  g->max_range = 81.83;
+  std::vector<LaserScan> scans;
+  for (int i = 0; i < 300; ++i) {
+    const double t = 2 * slamtune::kPi * i / 150.0;
+    const Pose2 pose{6 + 4.5 * std::cos(t), 4.5 + 3.2 * std::sin(t), t + slamtune::kPi / 2};
+    auto ranges = std::make_shared<std::vector<double>>();
+    for (int b = 0; b < 180; ++b) {
+      const double a = pose.theta + g->min_angle + b * g->angular_resolution;
+      const double dx = std::cos(a), dy = std::sin(a);
+      double best = 81.83;
+      for (const Seg& s : walls) {
+        const double ex = s.bx - s.ax, ey = s.by - s.ay, wx = s.ax - pose.x, wy = s.ay - pose.y;
+        const double den = dx * ey - dy * ex;
+        if (std::fabs(den) < 1e-12) continue;
+        const double tt = (wx * ey - wy * ex) / den, u = (wx * dy - wy * dx) / den;
+        if (tt > 1e-9 && u >= 0 && u <= 1) best = std::min(best, tt);
+      }
+      ranges->push_back(best);
+    }
+    scans.emplace_back(g, ranges, pose, 0.0);
+  }
+  return scans;
+}
+
+const std::vector<LaserScan>& Scans() {
+  static const std::vector<LaserScan> scans = [] {
+    std::vector<LaserScan> s = IntelScans();
+    return s.empty() ? SyntheticScans() : s;
+  }();
+  return scans;
+}
+
+slamtune::slam::ScanMatcherOptions SequentialOptions() { return {}; }
+
+slamtune::slam::ScanMatcherOptions LoopOptions() {
+  slamtune::slam::ScanMatcherOptions o;
+  o.search_dimension = 8.0;
+  o.search_resolution = 0.05;
+  return o;
+}
+
+// Every iteration runs the same batch of matches: scan i against the `window` scans before
+// it, for i = window, window + stride, ... (30 matches), so runs are comparable.
+template <typename Matcher>
+void RunMatches(benchmark::State& state, Matcher& matcher, std::size_t window, bool penalize, bool refine) {
+  const std::vector<LaserScan>& scans = Scans();
+  const std::size_t batch = 30;
+  const std::size_t stride = std::max<std::size_t>(1, (scans.size() - window) / batch);
+  std::vector<std::vector<const LaserScan*>> bases;
+  std::vector<const LaserScan*> queries;
+  for (std::size_t i = window; i < scans.size() && queries.size() < batch; i += stride) {
+    bases.emplace_back();
+    for (std::size_t j = i - window; j < i; ++j) bases.back().push_back(&scans[j]);
+    queries.push_back(&scans[i]);
+  }
+  double response_sum = 0.0;
+  for (auto _ : state) {
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      const auto result = matcher.Match(*queries[q], bases[q], penalize, refine);
+      response_sum += result.response;
+      benchmark::DoNotOptimize(result);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(queries.size()));
+  state.counters["mean_response"] =
+      response_sum / static_cast<double>(state.iterations() * static_cast<std::int64_t>(queries.size()));
+  state.SetLabel(IntelScans().empty() ? "synthetic" : "intel");
+}
+
+void BM_Sequential(benchmark::State& state) {
+  slamtune::slam::ScanMatcher matcher(SequentialOptions());
+  RunMatches(state, matcher, 70, true, true);
+}
+void BM_ReferenceSequential(benchmark::State& state) {
+  slamtune::slam::ReferenceScanMatcher matcher(SequentialOptions());
+  RunMatches(state, matcher, 70, true, true);
+}
+void BM_LoopCoarse(benchmark::State& state) {
+  auto o = LoopOptions();
+  o.threads = static_cast<int>(state.range(0));
+  slamtune::slam::ScanMatcher matcher(o);
+  RunMatches(state, matcher, 12, false, false);
+}
+void BM_ReferenceLoopCoarse(benchmark::State& state) {
+  slamtune::slam::ReferenceScanMatcher matcher(LoopOptions());
+  RunMatches(state, matcher, 12, false, false);
+}
+void BM_OccupancyGrid(benchmark::State& state) {
+  const std::vector<LaserScan>& scans = Scans();
+  for (auto _ : state) {
+    const auto grid = slamtune::slam::OccupancyGrid::FromScans(std::span<const LaserScan>(scans), {});
+    benchmark::DoNotOptimize(grid.summary());
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["scans"] = static_cast<double>(scans.size());
+}
+
+BENCHMARK(BM_Sequential)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceSequential)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LoopCoarse)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ReferenceLoopCoarse)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OccupancyGrid)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
