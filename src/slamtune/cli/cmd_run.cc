@@ -184,9 +184,10 @@ int Run(const RunArgs& args) {
   if (!json_out) throw InputError(file("run.json"), 0, "cannot write");
   json_out << run.dump(2) << "\n";
 
-  progress.Finish(fmt::format("run: {} scans, {} nodes, {} loop closures, {} edges, {:.1f} s wall{}; wrote {}",
-                              summary.scans_read, summary.nodes, summary.loop_closures.size(), summary.total_edges(),
-                              summary.wall_s, gt_line, args.out));
+  progress.Finish();
+  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s; wrote %s\n", summary.scans_read,
+              summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, gt_line.c_str(),
+              args.out.c_str());
   return 0;
 }
 

@@ -1,0 +1,104 @@
+#include "slamtune/slam/log_runner.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <limits>
+
+#include "slamtune/common/error.h"
+#include "slamtune/io/carmen_reader.h"
+
+namespace slamtune::slam {
+namespace {
+
+io::LaserScanRecord Record(const Pose2& pose, double time, double max_range = 50.0) {
+  io::LaserScanRecord r;
+  r.angle_min = -kPi / 2;
+  r.angle_increment = kPi / 4;
+  r.ranges = {2.0, 2.5, 3.0, 2.5, 2.0};
+  r.max_range = max_range;
+  r.laser_pose = r.robot_pose = pose;
+  r.ipc_time = time;
+  return r;
+}
+
+TEST(GeometryForRecord, CapsMaxRangeAndAppliesTheThresholdRule) {
+  MapperParams p;
+  io::LaserScanRecord r = Record({}, 0.0, 81.83);
+  LaserGeometry g = GeometryForRecord(r, p);
+  EXPECT_EQ(g.max_range, 80.0);  // intel: min(80, 81.83)
+  EXPECT_EQ(g.range_threshold, 12.0);
+  EXPECT_EQ(g.num_readings, 5);
+  EXPECT_EQ(g.offset, Pose2{});
+  r.max_range = 51.22;
+  EXPECT_EQ(GeometryForRecord(r, p).max_range, 51.22);  // mit-killian
+  r.max_range = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(GeometryForRecord(r, p).max_range, 80.0);  // no no-return value: the cap
+  r.max_range = 8.0;
+  EXPECT_EQ(GeometryForRecord(r, p).range_threshold, 8.0);
+  p = MapperParams::Preset("slam_toolbox");
+  r.max_range = 50.0;
+  EXPECT_EQ(GeometryForRecord(r, p).range_threshold, 20.0);
+}
+
+TEST(LogRunner, TrajectoryComposesOdometryOfSkippedScans) {
+  auto log = std::make_shared<io::LaserLog>();
+  log->path = "<memory>";
+  // Scan 1 moves 5 cm (not enough), scan 2 moves 30 cm from scan 0 (processed), scan 3 turns a little.
+  log->scans = {Record({0, 0, 0}, 1.0), Record({0.05, 0, 0}, 2.0), Record({0.3, 0, 0}, 3.0),
+                Record({0.32, 0.01, 0.05}, 4.0)};
+  MapperParams p;
+  p.use_scan_matching = false;
+  LogRunner runner(log, p);
+  runner.RunToEnd();
+  const RunSummary s = runner.Summary();
+  EXPECT_EQ(s.nodes, 2);
+  EXPECT_EQ(s.scans_not_moved, 2);
+  EXPECT_EQ(s.log_duration_s, 3.0);
+  const auto t = runner.Trajectory();
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[1].time, 2.0);
+  EXPECT_NEAR(t[1].pose.x, 0.05, 1e-12);
+  EXPECT_NEAR(t[3].pose.y, 0.01, 1e-12);
+  EXPECT_NEAR(t[3].pose.theta, 0.05, 1e-12);
+}
+
+TEST(LogRunner, ThrottleKeepsEveryNthScan) {
+  auto log = std::make_shared<io::LaserLog>();
+  for (int i = 0; i < 9; ++i) log->scans.push_back(Record({0.5 * i, 0, 0}, i));
+  MapperParams p;
+  p.use_scan_matching = false;
+  p.throttle_scans = 3;
+  LogRunner runner(log, p);
+  runner.RunToEnd();
+  EXPECT_EQ(runner.Summary().scans_offered, 3);
+  EXPECT_EQ(runner.Summary().scans_throttled, 6);
+  EXPECT_EQ(runner.Summary().nodes, 3);
+  EXPECT_NEAR(runner.Trajectory()[4].pose.x, 2.0, 1e-12);
+}
+
+TEST(LogRunner, EmptyLogIsAnInputError) {
+  auto log = std::make_shared<io::LaserLog>();
+  log->path = "empty.clf";
+  EXPECT_THROW(LogRunner(log, MapperParams{}), InputError);
+}
+
+// Node counts depend only on odometry and HasMovedEnough (§3.2 step 5), so they can be checked
+// on a whole (short) dataset without scan matching: the reference Karto build made 1469 nodes
+// on mit-csail.
+TEST(LogRunner, MitCsailNodeCountMatchesReferenceKarto) {
+  const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/mit-csail.clf.gz";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "dataset not available: " << path;
+  auto log = std::make_shared<const io::LaserLog>(io::ReadCarmenLog(path));
+  MapperParams p;
+  p.use_scan_matching = false;
+  LogRunner runner(log, p);
+  runner.RunToEnd();
+  EXPECT_EQ(runner.Summary().scans_read, 1988);
+  EXPECT_EQ(runner.Summary().nodes, 1469);
+  EXPECT_EQ(runner.Summary().laser_max_range, 80.0);
+}
+
+}  // namespace
+}  // namespace slamtune::slam
