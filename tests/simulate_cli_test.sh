@@ -51,6 +51,7 @@ grep -q "moon" "$tmp/err.txt" || fail "unknown world not named in the error"
 expect_failure --beams 1 --out "$tmp/x"
 grep -q "beams" "$tmp/err.txt" || fail "bad beam count not named in the error"
 expect_failure --speed -1 --out "$tmp/x"
+expect_failure --seed -1 --out "$tmp/x"
 expect_failure --seed 1
 grep -q -- "--out" "$tmp/err.txt" || fail "missing --out not explained"
 [[ ! -e "$tmp/x" ]] || fail "a failed run created its output folder"

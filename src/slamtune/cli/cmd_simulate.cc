@@ -49,7 +49,9 @@ std::function<int()> Setup(CLI::App& app) {
   app.add_flag("--list", state->list, "List the built-in worlds and exit");
   app.add_option("--out", state->out, "Output folder (created if missing)");
   app.add_option("--world", o.world, "World name (see --list)")->capture_default_str();
-  app.add_option("--seed", o.seed, "Random seed; same seed, same files")->capture_default_str();
+  app.add_option("--seed", o.seed, "Random seed; same seed, same files")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--speed", o.speed_mps, "Robot speed along the route (m/s)")->capture_default_str();
   app.add_option("--scan-rate", o.scan_rate_hz, "Laser scans per second (Hz)")->capture_default_str();
   app.add_option("--step-length", o.step_length_m, "Distance between ODOM records (m)")->capture_default_str();

@@ -23,9 +23,12 @@ void RequireRange(const char* field, double value, double low, double high, bool
   if (!ok) throw InputError(fmt::format("{} = {}: must be in {}{}, {}]", field, value, low_open ? "(" : "[", low, high));
 }
 
-// Rounds a time to whole microseconds: k / 1e6 is the double nearest to the decimal that
-// "%.6f" prints, so all files name exactly the same instants.
-double ToMicroseconds(double t) { return std::round(t * 1e6) / 1e6; }
+// Rounds to 6 decimals: k / 1e6 is the double nearest to the decimal that "%.6f" prints, so
+// timestamps name exactly the same instants in every file, and the in-memory log equals the
+// written log read back (times, poses and velocities are written with 6 decimals).
+double Round6(double v) { return std::round(v * 1e6) / 1e6; }
+
+Pose2 Round6(const Pose2& p) { return {Round6(p.x), Round6(p.y), Round6(p.theta)}; }
 
 }  // namespace
 
@@ -104,9 +107,9 @@ Simulation Simulate(const SimulationOptions& options) {
   double previous_s = 0.0;
   Pose2 previous_true = route.PoseAt(0.0);
   while (next_scan < num_scans || next_odometry < num_odometry) {
-    const double scan_time = ToMicroseconds(options.start_time_s + next_scan / options.scan_rate_hz);
+    const double scan_time = Round6(options.start_time_s + next_scan / options.scan_rate_hz);
     const double odometry_time =
-        ToMicroseconds(options.start_time_s + next_odometry * options.step_length_m / options.speed_mps);
+        Round6(options.start_time_s + next_odometry * options.step_length_m / options.speed_mps);
     const bool is_odometry = next_odometry < num_odometry && (next_scan >= num_scans || odometry_time <= scan_time);
     const double time = is_odometry ? odometry_time : scan_time;
     const double s = std::min((time - options.start_time_s) * options.speed_mps, route.length());
@@ -114,12 +117,12 @@ Simulation Simulate(const SimulationOptions& options) {
     if (s > previous_s) odometry.Advance(Between(previous_true, true_pose));
     previous_s = s;
     previous_true = true_pose;
-    const double logger_time = time - options.start_time_s;
+    const double logger_time = Round6(time - options.start_time_s);
     if (is_odometry) {
       io::OdomRecord record;
-      record.pose = odometry.pose();
-      record.tv = options.speed_mps;
-      record.rv = options.speed_mps * route.CurvatureAt(s);
+      record.pose = Round6(odometry.pose());
+      record.tv = Round6(options.speed_mps);
+      record.rv = Round6(options.speed_mps * route.CurvatureAt(s));
       record.ipc_time = time;
       record.logger_time = logger_time;
       log.odometry.push_back(record);
@@ -134,8 +137,8 @@ Simulation Simulate(const SimulationOptions& options) {
     record.max_range = laser.max_range_m;
     record.ranges = std::move(scan.ranges);
     record.no_returns = scan.no_returns;
-    record.laser_pose = odometry.pose();
-    record.robot_pose = odometry.pose();
+    record.laser_pose = Round6(odometry.pose());
+    record.robot_pose = record.laser_pose;
     record.ipc_time = time;
     record.logger_time = logger_time;
     log.scans.push_back(std::move(record));

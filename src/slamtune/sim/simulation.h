@@ -6,7 +6,9 @@
 //
 // Timing: laser scan k is at start_time + k / scan_rate, ODOM record j at start_time +
 // j * step_length / speed; both rounded to whole microseconds so the %.6f timestamps written to
-// the log, relations and truth files denote the same doubles. Odometry is integrated over
+// the log, relations and truth files denote the same doubles. Recorded poses and velocities
+// are rounded to 6 decimals and readings to the range resolution (1 mm), so the in-memory
+// log equals the written log read back by io::ReadCarmenLog, value for value. Odometry is integrated over
 // every interval between consecutive records, and the laser is at the robot origin, so a
 // scan's laser pose = its odometry pose = the ODOM pose at the same instant.
 //
@@ -30,6 +32,7 @@
 #include "slamtune/sim/odometry_model.h"
 #include "slamtune/sim/relation_sampler.h"
 #include "slamtune/sim/world.h"
+#include "slamtune/sim/world_catalog.h"
 
 namespace slamtune::sim {
 
@@ -38,7 +41,7 @@ inline constexpr const char* kMaxRangeParam = "laser_front_laser_max_range";
 
 struct SimulationOptions {
   uint64_t seed = 1;               // all randomness follows from it
-  std::string world = "office";    // a name from ListWorlds()
+  std::string world = kDefaultWorld;  // a name from ListWorlds()
   LaserOptions laser;
   OdometryNoiseOptions odometry;
   RelationSamplingOptions relations;

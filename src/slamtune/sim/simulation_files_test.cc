@@ -59,10 +59,20 @@ TEST_F(SimulationFilesTest, WritesThreeFilesThatReadBackAsSimulated) {
     ASSERT_EQ(read.ipc_time, made.ipc_time);
     ASSERT_DOUBLE_EQ(read.angle_min, -kPi / 2);
     ASSERT_DOUBLE_EQ(read.angle_increment, DegToRad(1.0));
-    ASSERT_NEAR(read.laser_pose.x, made.laser_pose.x, 5e-7);
-    ASSERT_NEAR(read.laser_pose.theta, made.laser_pose.theta, 5e-7);
+    ASSERT_EQ(read.laser_pose, made.laser_pose);  // the in-memory log is the file's, exactly
+    ASSERT_EQ(read.robot_pose, made.robot_pose);
+    ASSERT_EQ(read.logger_time, made.logger_time);
     ASSERT_EQ(read.no_returns, made.no_returns);
   }
+  for (std::size_t j = 0; j < log.odometry.size(); ++j) {
+    const io::OdomRecord &read = log.odometry[j], &made = sim.log.odometry[j];
+    ASSERT_EQ(read.pose, made.pose);
+    ASSERT_EQ(read.ipc_time, made.ipc_time);
+    ASSERT_EQ(read.tv, made.tv);
+    ASSERT_EQ(read.rv, made.rv);
+  }
+  EXPECT_EQ(log.total_readings, sim.log.total_readings);
+  EXPECT_EQ(log.total_no_returns, sim.log.total_no_returns);
 
   // Relations: timestamps name scans exactly; deltas are exact.
   std::set<double> scan_times;
