@@ -110,13 +110,17 @@ std::vector<std::vector<double>> Normalization::NormalizeAll(const std::vector<s
 }
 
 Normalization ComputeNormalization(const std::vector<std::vector<double>>& candidates,
-                                   const std::vector<std::size_t>& first_front, const NormalizationOptions& options) {
+                                   const std::vector<std::size_t>& first_front, const NormalizationOptions& options,
+                                   const std::vector<double>& earlier_ideal) {
   SLAMTUNE_CHECK(!candidates.empty() && !first_front.empty());
   const std::size_t m = candidates[0].size();
   SLAMTUNE_CHECK(m >= 1);
+  SLAMTUNE_CHECK(earlier_ideal.empty() || earlier_ideal.size() == m);
   Normalization result;
-  // Step 1: ideal point (§IV-C), and the worst values used by the fall-backs.
-  result.ideal.assign(m, std::numeric_limits<double>::infinity());
+  // Step 1: ideal point over S_t and earlier generations (§IV-C), and the worst values used
+  // by the fall-backs.
+  result.ideal = earlier_ideal;
+  if (result.ideal.empty()) result.ideal.assign(m, std::numeric_limits<double>::infinity());
   std::vector<double> worst(m, -std::numeric_limits<double>::infinity());
   for (const auto& f : candidates) {
     SLAMTUNE_CHECK(f.size() == m);

@@ -4,7 +4,8 @@
 // scale before association, otherwise an objective measured in larger units would dominate
 // the distances. The paper's procedure, applied each generation to the survival candidates
 // S_t:
-//   1. ideal point z_min: the per-objective minimum over S_t;
+//   1. ideal point z_min: the per-objective minimum over S_t and all earlier generations
+//      (the union of S_tau, tau = 0..t; the caller carries the earlier minimum);
 //   2. extreme point of axis j: the member minimising the achievement scalarising function
 //      ASF(f, w_j) = max_i (f_i - z_min_i) / w_ji with w_j = e_j and 1e-6 off the axis (eq. 4);
 //   3. intercepts a_j of the hyperplane through the M translated extreme points;
@@ -62,8 +63,11 @@ struct Normalization {
 
 // Computes the normalisation of `candidates` (objective vectors, all of the same dimension
 // M >= 1, finite) given the indices of their first non-dominated front `first_front`
-// (non-empty, indices into `candidates`). `options` must be valid.
+// (non-empty, indices into `candidates`). The ideal point is the per-objective minimum of the
+// candidates and of `earlier_ideal` (the ideal of earlier generations, M values, or empty
+// when there is none). `options` must be valid.
 Normalization ComputeNormalization(const std::vector<std::vector<double>>& candidates,
-                                   const std::vector<std::size_t>& first_front, const NormalizationOptions& options);
+                                   const std::vector<std::size_t>& first_front, const NormalizationOptions& options,
+                                   const std::vector<double>& earlier_ideal = {});
 
 }  // namespace slamtune::optim

@@ -33,6 +33,19 @@ TEST(Normalization, HyperplaneThroughAxisExtremesGivesInterceptsInAbsoluteCoordi
   EXPECT_NEAR(g[2], 1.0 / 6.0, 1e-12);
 }
 
+TEST(Normalization, IdealPointOfEarlierGenerationsIsKept) {
+  // Same population as above, but an earlier generation reached f_0 = 9: the ideal stays there
+  // and the translated extremes become (3,0,0), (1,4,0), (1,0,6), intercepts 3, 6, 9.
+  const std::vector<std::vector<double>> f = {{12, 20, 30}, {10, 24, 30}, {10, 20, 36}, {11, 21, 31}};
+  const Normalization n = ComputeNormalization(f, {0, 1, 2, 3}, NormalizationOptions{}, {9, 25, 31});
+  EXPECT_THAT(n.ideal, ElementsAre(9, 20, 30));
+  EXPECT_THAT(n.extreme_points, ElementsAre(0, 1, 2));
+  ASSERT_THAT(n.hyperplane_rejection, IsEmpty());
+  EXPECT_NEAR(n.nadir[0], 12.0, 1e-12);
+  EXPECT_NEAR(n.nadir[1], 26.0, 1e-12);
+  EXPECT_NEAR(n.nadir[2], 39.0, 1e-12);
+}
+
 TEST(Normalization, TiltedHyperplaneInterceptsExceedTheExtremeCoordinates) {
   // Extremes (1, 0, 0.9), (0.9, 1, 0), (0, 0.9, 1): the plane sum(f) = 1.9 cuts every axis at 1.9.
   const std::vector<std::vector<double>> f = {{1, 0, 0.9}, {0.9, 1, 0}, {0, 0.9, 1}};

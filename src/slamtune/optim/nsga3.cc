@@ -1,6 +1,8 @@
 #include "slamtune/optim/nsga3.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -60,6 +62,16 @@ void CheckPopulation(const pagmo::population& pop, std::size_t required_size) {
   }
 }
 
+// Sanity bound on the objective count read back from a saved state.
+constexpr std::size_t kMaxStateObjectives = 10'000;
+
+// ideal = min(ideal, f) per objective over all `points`.
+void LowerIdeal(const std::vector<std::vector<double>>& points, std::vector<double>& ideal) {
+  for (const auto& p : points) {
+    for (std::size_t i = 0; i < ideal.size(); ++i) ideal[i] = std::min(ideal[i], p[i]);
+  }
+}
+
 }  // namespace
 
 const char* ToString(StopReason reason) {
@@ -86,20 +98,33 @@ Nsga3::Nsga3(Nsga3Options options, unsigned seed) : options_(std::move(options))
 void Nsga3::set_seed(unsigned seed) {
   seed_ = seed;
   rng_.seed(seed);
+  ideal_.clear();
 }
 
+// Format: the generator's standard text, then "ideal <M> <z_1> ... <z_M>" with each value in
+// shortest round-trip form, so a restored run continues bit for bit.
 std::string Nsga3::RngState() const {
   std::ostringstream out;
-  out << rng_;
+  out << rng_ << "\nideal " << ideal_.size();
+  for (double z : ideal_) out << ' ' << fmt::format("{}", z);
   return out.str();
 }
 
 void Nsga3::RestoreRngState(const std::string& state) {
   std::istringstream in(state);
-  std::mt19937 restored;
-  in >> restored;
-  if (in.fail()) throw InputError("nsga3: the random generator state text is malformed");
-  rng_ = restored;
+  std::mt19937 restored_rng;
+  in >> restored_rng;
+  std::string tag;
+  std::size_t m = 0;
+  in >> tag >> m;
+  const bool header_ok = !in.fail() && tag == "ideal" && m <= kMaxStateObjectives;
+  std::vector<double> restored_ideal(header_ok ? m : 0);
+  for (double& z : restored_ideal) in >> z;
+  if (!header_ok || in.fail()) {
+    throw InputError("nsga3: the saved run state is malformed (expected a generator state, then 'ideal M z_1 .. z_M')");
+  }
+  rng_ = restored_rng;
+  ideal_ = std::move(restored_ideal);
 }
 
 std::string Nsga3::get_extra_info() const {
@@ -137,16 +162,20 @@ pagmo::population Nsga3::evolve(pagmo::population pop) const {
 
   std::vector<std::vector<double>> x = pop.get_x();
   std::vector<std::vector<double>> f = pop.get_f();
+  // The ideal point covers every generation of the run (§IV-C: the union of S_tau).
+  if (ideal_.size() != m) ideal_.assign(m, std::numeric_limits<double>::infinity());
+  LowerIdeal(f, ideal_);
   const unsigned long long fevals_at_start = prob.get_fevals();
   for (unsigned gen = 1; gen <= options_.generations; ++gen) {
     // Algorithm 1, step 2: offspring Q_t by random mating, SBX, mutation and integer repair.
     std::vector<std::vector<double>> qx = MakeOffspring(x, n, bounds, nix, options_.variation, rng_);
     OffspringEvaluation evaluation = EvaluateOffspring(prob, bfe_, x, f, qx);
+    LowerIdeal(evaluation.fitness, ideal_);
     // Step 3: R_t = P_t u Q_t; steps 4-17: survival.
     x.insert(x.end(), std::make_move_iterator(qx.begin()), std::make_move_iterator(qx.end()));
     f.insert(f.end(), std::make_move_iterator(evaluation.fitness.begin()),
              std::make_move_iterator(evaluation.fitness.end()));
-    const SurvivalResult survival = SelectSurvivors(f, n, reference_points, options_.normalization, rng_);
+    const SurvivalResult survival = SelectSurvivors(f, n, reference_points, options_.normalization, rng_, ideal_);
     std::vector<std::vector<double>> next_x, next_f;
     next_x.reserve(n);
     next_f.reserve(n);
@@ -164,6 +193,7 @@ pagmo::population Nsga3::evolve(pagmo::population pop) const {
     record.duplicates_skipped = evaluation.copied_from_population + evaluation.copied_within_batch;
     record.fronts_used = survival.fronts_used;
     record.niched = survival.niched;
+    record.ideal = ideal_;
     if (survival.normalization) {
       record.nadir_source = survival.normalization->nadir_source;
       if (!survival.normalization->hyperplane_rejection.empty()) ++summary_.hyperplane_rejections;

@@ -49,6 +49,7 @@ struct GenerationRecord {
   std::size_t fronts_used = 0;           // fronts that entered S_t
   std::size_t niched = 0;                // survivors chosen by niching from the last front
   std::vector<NadirSource> nadir_source; // per objective; empty when S_t fit exactly
+  std::vector<double> ideal;             // ideal point over all generations so far (§IV-C)
   // Population after survival. Always set in the record handed to the callback; kept in
   // history() only when Nsga3Options::record_history is true.
   std::vector<std::vector<double>> x;
@@ -57,11 +58,11 @@ struct GenerationRecord {
 
 enum class CallbackAction { kContinue, kStop };
 
-// Called after every generation with the record and the generator state (RngState()
-// format). Saving the population (record.x, record.f) and the state lets a later run resume
+// Called after every generation with the record and the run's resumable state (RngState()
+// text). Saving the population (record.x, record.f) and the state lets a later run resume
 // bit for bit: build a population from them, RestoreRngState, evolve the remaining
 // generations. Returning kStop ends evolve() after this generation.
-using GenerationCallback = std::function<CallbackAction(const GenerationRecord& record, const std::string& rng_state)>;
+using GenerationCallback = std::function<CallbackAction(const GenerationRecord& record, const std::string& state)>;
 
 enum class StopReason { kNotRun, kGenerationLimit, kCallbackStop };
 
@@ -89,7 +90,8 @@ class Nsga3 {
   // integer gene, or the reference points do not fit M.
   pagmo::population evolve(pagmo::population pop) const;
 
-  // pagmo UDA interface.
+  // pagmo UDA interface. set_seed starts a new run: it reseeds the generator and forgets the
+  // ideal point carried from earlier evolve() calls.
   void set_seed(unsigned seed);
   unsigned get_seed() const { return seed_; }
   void set_bfe(const pagmo::bfe& bfe) { bfe_ = bfe; }
@@ -106,7 +108,10 @@ class Nsga3 {
   const std::vector<GenerationRecord>& history() const { return history_; }
   const Nsga3Summary& summary() const { return summary_; }
 
-  // The random generator's state as text, and its restoration (InputError if malformed).
+  // The run state that is not in the population, as text: the random generator and the
+  // ideal point over all generations so far (which the paper's normalisation keeps, §IV-C,
+  // and which a population cannot recover once its extreme members are gone). Restoring it
+  // (InputError if malformed) and evolving a saved population continues a run exactly.
   std::string RngState() const;
   void RestoreRngState(const std::string& state);
 
@@ -117,6 +122,9 @@ class Nsga3 {
   GenerationCallback callback_;
   // evolve() is const for pagmo; the generator advances across calls as in pagmo's algorithms.
   mutable std::mt19937 rng_;
+  // Ideal point over every population seen since the last set_seed (empty before the first
+  // evolve); carried across evolve() calls like the generator, for pagmo islands.
+  mutable std::vector<double> ideal_;
   mutable std::vector<GenerationRecord> history_;
   mutable Nsga3Summary summary_;
 };

@@ -9,7 +9,7 @@ namespace slamtune::optim {
 
 SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objectives, std::size_t n,
                                const ReferencePoints& reference_points, const NormalizationOptions& options,
-                               std::mt19937& rng) {
+                               std::mt19937& rng, const std::vector<double>& earlier_ideal) {
   SLAMTUNE_CHECK(objectives.size() >= 2 && n >= 1 && n <= objectives.size());
   SurvivalResult result;
   // Steps 3-7: non-dominated sorting, then whole fronts into S_t until |S_t| >= N.
@@ -35,7 +35,7 @@ SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objective
   for (std::size_t index : s_t) s_objectives.push_back(objectives[index]);
   std::vector<std::size_t> first_front(fronts.front().size());
   for (std::size_t k = 0; k < first_front.size(); ++k) first_front[k] = k;
-  result.normalization = ComputeNormalization(s_objectives, first_front, options);
+  result.normalization = ComputeNormalization(s_objectives, first_front, options, earlier_ideal);
   // Step 13: associate every member of S_t with a reference line.
   const Association association = Associate(result.normalization->NormalizeAll(s_objectives), reference_points);
   // Step 14: niche counts of P_{t+1} = F_1 u ... u F_{l-1}.

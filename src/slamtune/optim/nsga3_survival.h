@@ -30,9 +30,11 @@ struct SurvivalResult {
 };
 
 // Selects `n` survivors (1 <= n <= objectives.size(), objectives.size() >= 2, finite values of
-// one common dimension M equal to that of the reference points). `options` must be valid.
+// one common dimension M equal to that of the reference points). `earlier_ideal` is the ideal
+// point of the earlier generations (M values, or empty), see ComputeNormalization. `options`
+// must be valid.
 SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objectives, std::size_t n,
                                const ReferencePoints& reference_points, const NormalizationOptions& options,
-                               std::mt19937& rng);
+                               std::mt19937& rng, const std::vector<double>& earlier_ideal = {});
 
 }  // namespace slamtune::optim

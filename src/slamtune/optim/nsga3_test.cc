@@ -85,10 +85,12 @@ double SphereIgd(const std::vector<pagmo::vector_double>& f) {
   return InvertedGenerationalDistance(TargetsOnUnitSphere(DasDennisPoints(3, 12)), f);
 }
 
-// Calibrated on DTLZ2 (M = 3, N = 92, 150 generations, seeds 1-5): NSGA-III reaches IGD of
-// about 2e-3 to 4e-3 (see the report); random choice of the last front's survivors (no
-// niching) stays above 3e-2, and so does NSGA-III with normalisation or association broken.
-constexpr double kDtlz2IgdThreshold = 1e-2;
+// Calibrated on DTLZ2 (M = 3, N = 92, 150 generations, seeds 1-20): NSGA-III reaches IGD
+// 3.7e-3 / 5.0e-3 / 1.3e-2 (best / median / worst). Broken on purpose, the same runs give
+// >= 5.1e-2 when an empty niche takes a random member instead of the closest, >= 6.6e-2 when
+// the reference point is drawn at random instead of least crowded, and random last-front
+// survival (below) gives about 0.1. The threshold sits between the two groups.
+constexpr double kDtlz2IgdThreshold = 2.5e-2;
 constexpr unsigned kDtlz2Generations = 150;
 
 TEST(Nsga3Options, InvalidOptionsAreRejectedNamingTheField) {
@@ -180,7 +182,9 @@ TEST(Nsga3Evolve, RandomLastFrontSurvivalMissesTheDtlz2Threshold) {
     x = std::move(nx);
     f = std::move(nf);
   }
-  EXPECT_GT(SphereIgd(f), 3 * kDtlz2IgdThreshold);
+  const double igd = SphereIgd(f);
+  RecordProperty("igd", std::to_string(igd));
+  EXPECT_GT(igd, kDtlz2IgdThreshold);
 }
 
 TEST(Nsga3Evolve, ScaledObjectivesDoNotBiasTheFront) {
@@ -195,8 +199,9 @@ TEST(Nsga3Evolve, ScaledObjectivesDoNotBiasTheFront) {
   const double igd_scaled = SphereIgd(f);
   RecordProperty("igd_plain", std::to_string(igd_plain));
   RecordProperty("igd_scaled", std::to_string(igd_scaled));
+  // Without normalisation the scaled runs end near IGD 0.2 (seeds 1-20: 0.18 / 0.23 / 0.25).
   EXPECT_LT(igd_scaled, kDtlz2IgdThreshold);
-  EXPECT_LT(igd_scaled, 1.5 * igd_plain);
+  EXPECT_LT(igd_scaled, 2.0 * igd_plain);
 }
 
 TEST(Nsga3Evolve, SameSeedSameRunDifferentSeedDifferentRun) {
@@ -333,7 +338,22 @@ TEST(Nsga3Evolve, CallbackStopsEarlyAndASavedStateResumesBitForBit) {
   resumed = second.evolve(resumed);
   EXPECT_EQ(resumed.get_x(), full.get_x());
   EXPECT_EQ(resumed.get_f(), full.get_f());
-  EXPECT_THROW(second.RestoreRngState("not a state"), InputError);
+}
+
+TEST(Nsga3State, RoundTripsAndRejectsMalformedText) {
+  Nsga3 nsga3(Generations(3), 5);
+  nsga3.evolve(pagmo::population(Dtlz2(), 92, 5));
+  const std::string state = nsga3.RngState();
+  EXPECT_THAT(state, HasSubstr("\nideal 3 "));
+  EXPECT_EQ(nsga3.history().back().ideal.size(), 3u);
+  Nsga3 other(Generations(3), 77);
+  other.RestoreRngState(state);
+  EXPECT_EQ(other.RngState(), state);
+  EXPECT_THROW(other.RestoreRngState("not a state"), InputError);
+  const std::string generator_only = state.substr(0, state.find("\nideal"));
+  EXPECT_THAT([&] { other.RestoreRngState(generator_only); },
+              testing::ThrowsMessage<InputError>(HasSubstr("saved run state is malformed")));
+  EXPECT_EQ(other.RngState(), state) << "a failed restore must leave the state unchanged";
 }
 
 }  // namespace
