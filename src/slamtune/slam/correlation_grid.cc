@@ -105,9 +105,25 @@ void CorrelationGrid::Touch(int x0, int y0, int x1, int y1) {
 void CorrelationGrid::Clear() {
   if (touched_x0_ > touched_x1_) return;
   const std::size_t width = static_cast<std::size_t>(touched_x1_ - touched_x0_ + 1);
-  for (int y = touched_y0_; y <= touched_y1_; ++y) {
-    std::memset(data_.data() + static_cast<std::size_t>(touched_x0_ + y * geometry_.stride), 0, width);
+  const std::size_t box = width * static_cast<std::size_t>(touched_y1_ - touched_y0_ + 1);
+  const int half = geometry_.kernel_half;
+  const std::size_t side = static_cast<std::size_t>(2 * half + 1);
+  if (smeared_centres_.size() * side * static_cast<std::size_t>(padded_side_) < box) {
+    // Zero each written kernel square, in the padded 16-byte chunks Smear used: every
+    // non-zero byte lies in one of these squares, and the extra bytes of a padded row are
+    // either zero or inside another square of the list.
+    for (const std::int32_t centre : smeared_centres_) {
+      std::uint8_t* row = data_.data() + (centre - half - half * geometry_.stride);
+      for (std::size_t j = 0; j < side; ++j, row += geometry_.stride) {
+        for (int i0 = 0; i0 < padded_side_; i0 += 16) std::memset(row + i0, 0, 16);
+      }
+    }
+  } else {
+    for (int y = touched_y0_; y <= touched_y1_; ++y) {
+      std::memset(data_.data() + static_cast<std::size_t>(touched_x0_ + y * geometry_.stride), 0, width);
+    }
   }
+  smeared_centres_.clear();
   touched_x0_ = touched_y0_ = std::numeric_limits<int>::max();
   touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();
 }
@@ -150,6 +166,7 @@ bool CorrelationGrid::AddPoint(const Eigen::Vector2d& world) {
   cell = kCorrelationOccupied;
   Touch(x, y, x, y);
   Smear(x, y);
+  smeared_centres_.push_back(x + y * geometry_.stride);
   return true;
 }
 

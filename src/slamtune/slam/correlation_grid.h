@@ -9,8 +9,9 @@
 // up to a multiple of 8 (§1.2), and linear indices x + y*stride are what the lookup tables of
 // §4.4 add to candidate cells.
 //
-// The grid is reused across matches: Clear() zeroes only the region written since the last
-// clear, which keeps a 6 MB sequential grid cheap to rebuild for every scan.
+// The grid is reused across matches: Clear() zeroes only what was written since the last
+// clear (the kernel squares of the inserted points, or their bounding box when that is
+// smaller), which keeps a 6 MB sequential grid cheap to rebuild for every scan.
 #pragma once
 
 #include <Eigen/Core>
@@ -102,8 +103,11 @@ class CorrelationGrid {
   int padded_side_;
   std::vector<std::uint8_t> padded_kernel_;
   std::vector<std::uint8_t> data_;
-  // Stored-grid box written since the last Clear (empty when x0 > x1).
+  // Stored-grid box written since the last Clear (empty when x0 > x1), and the centres of
+  // the kernels written into it: Clear zeroes those kernel squares when that is less work
+  // than zeroing the box.
   int touched_x0_, touched_y0_, touched_x1_, touched_y1_;
+  std::vector<std::int32_t> smeared_centres_;
   std::vector<Eigen::Vector2d> valid_points_;  // scratch of AddScans, reused
 };
 

@@ -103,7 +103,9 @@ struct ScanMatcher::Impl {
   CandidateCells cells;
   std::vector<double> offsets;  // lattice offsets from the centre, both axes
   std::vector<std::int32_t> sums;
-  std::vector<double> responses;
+  std::vector<double> responses;       // penalised passes only
+  std::vector<std::int32_t> max_sum_at;  // unpenalised passes: best sum over headings per position
+  std::vector<double> cell_maximum;     // coarse passes: best response over headings per position
   std::vector<double> response_of_sum;  // sum -> sum / (100 * beams), for the current beam count
   std::vector<double> heading_cos, heading_sin;  // of the normalised heading alpha_k
   std::vector<double> raw_at_best, angles;       // angular covariance inputs
@@ -145,42 +147,74 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     for (std::size_t s = 0; s <= max_sum; ++s) response_of_sum[s] = static_cast<double>(s) / divisor;
   }
 
-  // Responses in Karto's order y, x, heading, with the penalties of §4.5 (offsets from the
-  // search centre; not applied to zero responses).
-  responses.resize(sums.size());
-  for (int yi = 0; yi < n; ++yi) {
-    const double y = offsets[static_cast<std::size_t>(yi)];
-    for (int xi = 0; xi < n; ++xi) {
-      const double x = offsets[static_cast<std::size_t>(xi)];
-      const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
-      for (int k = 0; k < num_angles; ++k) {
-        double response = response_of_sum[static_cast<std::size_t>(sums[base + k])];
-        if (penalize && !KartoEqual(response, 0.0)) {
-          const double squared_distance = x * x + y * y;
-          const double distance_penalty =
-              std::max(1.0 - (kDistancePenaltyGain * squared_distance / options.distance_variance_penalty),
-                       options.minimum_distance_penalty);
-          const double da = table.angle(k) - center.theta;
-          const double angle_penalty = std::max(
-              1.0 - (kAnglePenaltyGain * (da * da) / options.angle_variance_penalty), options.minimum_angle_penalty);
-          response *= (distance_penalty * angle_penalty);
+  const std::size_t num_cells = static_cast<std::size_t>(n) * n;
+  double best = -1.0;  // Karto's start value
+  std::int32_t tie_min_sum = 0;
+  if (penalize) {
+    // Responses in Karto's order y, x, heading, with the penalties of §4.5 (offsets from the
+    // search centre; not applied to zero responses).
+    responses.resize(sums.size());
+    for (int yi = 0; yi < n; ++yi) {
+      const double y = offsets[static_cast<std::size_t>(yi)];
+      for (int xi = 0; xi < n; ++xi) {
+        const double x = offsets[static_cast<std::size_t>(xi)];
+        const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
+        for (int k = 0; k < num_angles; ++k) {
+          double response = response_of_sum[static_cast<std::size_t>(sums[base + k])];
+          if (!KartoEqual(response, 0.0)) {
+            const double squared_distance = x * x + y * y;
+            const double distance_penalty =
+                std::max(1.0 - (kDistancePenaltyGain * squared_distance / options.distance_variance_penalty),
+                         options.minimum_distance_penalty);
+            const double da = table.angle(k) - center.theta;
+            const double angle_penalty =
+                std::max(1.0 - (kAnglePenaltyGain * (da * da) / options.angle_variance_penalty),
+                         options.minimum_angle_penalty);
+            response *= (distance_penalty * angle_penalty);
+          }
+          responses[base + k] = response;
         }
-        responses[base + k] = response;
+      }
+    }
+    for (const double r : responses) best = std::max(best, r);
+    if (!fine) {
+      cell_maximum.resize(num_cells);
+      for (std::size_t c = 0; c < num_cells; ++c) {
+        cell_maximum[c] = *std::max_element(responses.begin() + static_cast<std::ptrdiff_t>(c * num_angles),
+                                            responses.begin() + static_cast<std::ptrdiff_t>((c + 1) * num_angles));
+      }
+    }
+  } else {
+    // Without penalties the response is an increasing function of the integer sum, so the
+    // best response, each position's maximum over headings and the ties (§4.5) are found on
+    // the sums: ties are exactly the sums s with |table[s] - best| <= 1e-6, an interval
+    // [tie_min_sum, best_sum].
+    max_sum_at.resize(num_cells);
+    std::int32_t best_sum = 0;
+    for (std::size_t c = 0; c < num_cells; ++c) {
+      const auto first = sums.begin() + static_cast<std::ptrdiff_t>(c * num_angles);
+      max_sum_at[c] = *std::max_element(first, first + num_angles);
+      best_sum = std::max(best_sum, max_sum_at[c]);
+    }
+    best = std::max(best, response_of_sum[static_cast<std::size_t>(best_sum)]);
+    tie_min_sum = best_sum;
+    while (tie_min_sum > 0 && KartoEqual(response_of_sum[static_cast<std::size_t>(tie_min_sum - 1)], best)) {
+      --tie_min_sum;
+    }
+    if (!fine) {
+      cell_maximum.resize(num_cells);
+      for (std::size_t c = 0; c < num_cells; ++c) {
+        cell_maximum[c] = response_of_sum[static_cast<std::size_t>(max_sum_at[c])];
       }
     }
   }
-
-  // Best response (start value -1) and, in the coarse pass, the probability grid: the max
-  // over headings at each lattice position (§4.5).
-  double best = -1.0;
-  for (const double r : responses) best = std::max(best, r);
+  // Coarse pass: the probability grid keeps each position's best response over headings.
   if (!fine) {
     for (int yi = 0; yi < n; ++yi) {
       for (int xi = 0; xi < n; ++xi) {
         double& cell = probabilities.at(probabilities.IndexOf(center.x + offsets[static_cast<std::size_t>(xi)],
                                                               center.y + offsets[static_cast<std::size_t>(yi)]));
-        const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
-        for (int k = 0; k < num_angles; ++k) cell = std::max(responses[base + k], cell);
+        cell = std::max(cell_maximum[static_cast<std::size_t>(yi) * n + xi], cell);
       }
     }
   }
@@ -200,9 +234,12 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     const double position_y = center.y + offsets[static_cast<std::size_t>(yi)];
     for (int xi = 0; xi < n; ++xi) {
       const double position_x = center.x + offsets[static_cast<std::size_t>(xi)];
-      const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
+      const std::size_t cell = static_cast<std::size_t>(yi) * n + xi;
+      if (!penalize && max_sum_at[cell] < tie_min_sum) continue;
+      const std::size_t base = cell * num_angles;
       for (int k = 0; k < num_angles; ++k) {
-        if (!KartoEqual(responses[base + k], best)) continue;
+        const bool tie = penalize ? KartoEqual(responses[base + k], best) : sums[base + k] >= tie_min_sum;
+        if (!tie) continue;
         sum_x += position_x;
         sum_y += position_y;
         sum_cos += heading_cos[static_cast<std::size_t>(k)];
