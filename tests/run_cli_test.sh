@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# End-to-end test of `slamtune run` on a simulated corridor log (and a short slice of aces when
+# the datasets are present): output files, run.json keys, determinism, parameter handling and
+# input errors.
+# Usage: run_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR
+# Exit 0 = pass, 1 = fail, 77 = skip (binary missing).
+set -u
+bin=${1:?usage: run_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
+datasets=${2:-}
+if [[ ! -x "$bin" ]]; then
+  echo "SKIP: $bin is not an executable" >&2
+  exit 77
+fi
+work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_run_cli.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+json_has() {  # FILE KEY: a top-level key "KEY": in the pretty-printed JSON
+  grep -q "^  \"$2\":" "$1" || fail "$1 has no top-level key $2"
+}
+json_int() {  # FILE KEY -> integer value of a top-level key
+  sed -n "s/^  \"$2\": \([0-9]*\),\{0,1\}$/\1/p" "$1"
+}
+
+"$bin" simulate --world corridor --speed 1.0 --seed 3 --out "$work/sim" >/dev/null 2>&1 ||
+  { echo "FAIL: slamtune simulate failed" >&2; exit 1; }
+log="$work/sim/corridor.clf"
+rel="$work/sim/corridor.relations"
+fast=(--set minimum_travel_distance=0.4 --set scan_buffer_size=20 --set loop_match_minimum_chain_size=5)
+
+# 1. A run writes every output.
+if ! "$bin" run "$log" --out "$work/a" --relations "$rel" "${fast[@]}" --quiet >"$work/a.out" 2>"$work/a.err"; then
+  fail "run exited non-zero: $(cat "$work/a.err")"
+fi
+for f in map.pgm map.yaml map.png trajectory.txt loop_closures.csv run.json; do
+  [[ -s "$work/a/$f" ]] || fail "missing or empty output $f"
+done
+for key in scans nodes loop_closures wall_s params edges solver_runs peak_memory_mb gt_error map; do
+  json_has "$work/a/run.json" "$key"
+done
+grep -q '"loop_match_minimum_chain_size": 5' "$work/a/run.json" || fail "run.json params do not show the --set value"
+grep -q '"trans_mean_m":' "$work/a/run.json" || fail "run.json gt_error has no trans_mean_m"
+grep -q "^run: .* nodes, .* loop closures" "$work/a.out" || fail "no summary line on stdout: $(cat "$work/a.out")"
+scans=$(json_int "$work/a/run.json" scans)
+lines=$(grep -vc '^#' "$work/a/trajectory.txt")
+[[ "$scans" == "$lines" ]] || fail "trajectory has $lines poses for $scans scans"
+loops=$(json_int "$work/a/run.json" loop_closures)
+csv_rows=$(($(wc -l <"$work/a/loop_closures.csv") - 1))
+[[ "$loops" == "$csv_rows" ]] || fail "loop_closures.csv has $csv_rows rows, run.json says $loops"
+[[ "$loops" -ge 1 ]] || fail "the corridor run closed no loop"
+grep -q '^image: map.pgm' "$work/a/map.yaml" || fail "map.yaml does not name map.pgm"
+[[ "$(head -c 2 "$work/a/map.pgm")" == "P5" ]] || fail "map.pgm is not a binary PGM"
+
+# 2. Determinism: the same command gives the same trajectory and map.
+"$bin" run "$log" --out "$work/b" --relations "$rel" "${fast[@]}" --quiet >/dev/null 2>&1 || fail "second run failed"
+cmp -s "$work/a/trajectory.txt" "$work/b/trajectory.txt" || fail "trajectories of two identical runs differ"
+cmp -s "$work/a/map.pgm" "$work/b/map.pgm" || fail "maps of two identical runs differ"
+
+# 3. --no-loop-closure and a ROS 2 parameter file.
+cat >"$work/params.yaml" <<'EOF'
+slam_toolbox:
+  ros__parameters:
+    odom_frame: odom
+    minimum_travel_distance: 0.4
+    scan_buffer_size: 20
+    loop_match_minimum_chain_size: 5
+EOF
+"$bin" run "$log" --out "$work/c" --params "$work/params.yaml" --no-loop-closure --quiet >/dev/null 2>&1 ||
+  fail "run with --params and --no-loop-closure failed"
+[[ "$(json_int "$work/c/run.json" loop_closures)" == "0" ]] || fail "--no-loop-closure still closed loops"
+[[ "$(json_int "$work/c/run.json" nodes)" == "$(json_int "$work/a/run.json" nodes)" ]] ||
+  fail "node count depends on loop closure (it must depend on odometry only)"
+
+# 4. Bad input: exit 2 with a message naming the problem.
+expect_error() {  # PATTERN ARGS...
+  local pattern=$1
+  shift
+  "$bin" run "$@" >"$work/err.out" 2>"$work/err.txt"
+  local code=$?
+  [[ $code -eq 2 ]] || fail "run $* exited $code, expected 2"
+  grep -q -- "$pattern" "$work/err.txt" || fail "run $*: message lacks '$pattern': $(cat "$work/err.txt")"
+}
+expect_error "unknown mapper parameter 'loop_radius'" "$log" --out "$work/e1" --set loop_radius=3
+expect_error "loop_match_minimum_chain_size = 0 is out of range" "$log" --out "$work/e2" \
+  --set loop_match_minimum_chain_size=0
+expect_error "unknown preset 'cartographer'" "$log" --out "$work/e3" --preset cartographer
+expect_error "no_such.clf" "$work/no_such.clf" --out "$work/e4"
+
+# 5. A short slice of a real dataset, with its relations, when available.
+if [[ -n "$datasets" && -f "$datasets/aces.clf.gz" ]]; then
+  if "$bin" run "$datasets/aces.clf.gz" --max-scans 400 --relations "$datasets/aces.relations" --out "$work/aces" \
+    --quiet >/dev/null 2>"$work/aces.err"; then
+    grep -q '"laser_max_range_m": 50.0' "$work/aces/run.json" || fail "aces: maxRange is not the 50 m no-return value"
+    grep -q '"relations_used": [1-9]' "$work/aces/run.json" || fail "aces: no relation used"
+  else
+    fail "aces slice failed: $(cat "$work/aces.err")"
+  fi
+else
+  echo "note: datasets not found, aces slice skipped" >&2
+fi
+
+if ((failures > 0)); then
+  echo "$failures failure(s)" >&2
+  exit 1
+fi
+echo "run CLI: all checks passed"
