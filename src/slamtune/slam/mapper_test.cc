@@ -223,6 +223,24 @@ TEST_F(MapperOnCorridor, LoopAcceptedWithoutEdgeStillSolves) {
   EXPECT_GE(result.loops_closed, 1);
 }
 
+// The slam_toolbox back-end closes the same loop from the same state (its own solve).
+TEST_F(MapperOnCorridor, CeresBackEndClosesTheSameLoop) {
+  LogRunner r = *before_loop_;
+  MapperParams p = FastParams();
+  p.solver = "ceres";
+  r.SetParams(p);
+  const ProcessResult result = r.Step();
+  ASSERT_GE(result.loops_closed, 1);
+  EXPECT_EQ(r.mapper().solver_runs().back().backend, "ceres");
+  EXPECT_TRUE(r.mapper().solver_runs().back().updated);
+  const int id = result.state_id;
+  LogRunner spa = *before_loop_;
+  spa.Step();
+  const Pose2 a = r.mapper().scans()[id].corrected_pose(), b = spa.mapper().scans()[id].corrected_pose();
+  EXPECT_NEAR(a.x, b.x, 0.05);
+  EXPECT_NEAR(a.y, b.y, 0.05);
+}
+
 TEST(Mapper, PoseIsOdometryWithoutScanMatching) {
   sim::SimulationOptions o;
   o.world = "corridor";
