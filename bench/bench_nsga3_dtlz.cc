@@ -121,16 +121,19 @@ std::vector<std::string> Split(const std::string& text) {
 }
 
 int Run(const std::vector<std::string>& problems, unsigned seeds, double generations_scale, bool json) {
+  std::vector<DtlzCase> cases;
+  for (const std::string& name : problems) {
+    const auto it = std::find_if(kCases.begin(), kCases.end(), [&](const DtlzCase& c) { return c.name == name; });
+    if (it == kCases.end()) throw slamtune::InputError("--problems: unknown problem '" + name + "', expected dtlz1..dtlz4");
+    cases.push_back(*it);
+  }
   const ReferencePoints directions = slamtune::optim::DasDennisPoints(kObjectives, kDivisions);
   nlohmann::json out = nlohmann::json::array();
   if (!json) {
     std::printf("%-6s %-9s %5s | %-33s | %-33s | %s\n", "prob", "algo", "gens", "IGD best / median / worst",
                 "HV best / median / worst", "s/run");
   }
-  for (const std::string& name : problems) {
-    const auto it = std::find_if(kCases.begin(), kCases.end(), [&](const DtlzCase& c) { return c.name == name; });
-    if (it == kCases.end()) throw slamtune::InputError("--problems: unknown problem '" + name + "', expected dtlz1..dtlz4");
-    const DtlzCase& c = *it;
+  for (const DtlzCase& c : cases) {
     const unsigned generations =
         std::max(1u, static_cast<unsigned>(std::lround(generations_scale * static_cast<double>(c.generations))));
     const std::size_t n = kObjectives + c.k - 1;
