@@ -16,6 +16,7 @@
 #include "slamtune/slam/correlation_grid.h"
 #include "slamtune/slam/correlation_search.h"
 #include "slamtune/slam/match_covariance.h"
+#include "slamtune/slam/pruned_search.h"
 #include "slamtune/slam/scan_lookup_table.h"
 
 namespace slamtune::slam {
@@ -107,6 +108,8 @@ struct ScanMatcher::Impl {
   std::vector<std::int32_t> max_sum_at;  // unpenalised passes: best sum over headings per position
   std::vector<double> cell_maximum;     // coarse passes: best response over headings per position
   std::vector<double> response_of_sum;  // sum -> sum / (100 * beams), for the current beam count
+  PrunedSearchScratch pruned_scratch;
+  PrunedSearchStats last_pruning;  // of the last pass (zero when not pruned)
   std::vector<double> heading_cos, heading_sin;  // of the normalised heading alpha_k
   std::vector<double> raw_at_best, angles;       // angular covariance inputs
 };
@@ -136,7 +139,6 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
   }
   const auto [min_cell, max_cell] = std::minmax_element(cells.index.begin(), cells.index.end());
   table.Partition(*min_cell, *max_cell, grid.data_size());
-  SumAllCandidates(grid.data(), grid.data_size(), table, cells, fine ? 1 : options.threads, &sums);
 
   // response = sum / (beams * 100) (§4.5), the divisor counting INVALID beams too. A table
   // indexed by the integer sum gives the same double as dividing each time.
@@ -145,6 +147,26 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
   if (response_of_sum.size() != max_sum + 1) {
     response_of_sum.resize(max_sum + 1);
     for (std::size_t s = 0; s <= max_sum; ++s) response_of_sum[s] = static_cast<double>(s) / divisor;
+  }
+
+  // Branch and bound pays when the grid is small next to the work (the loop matcher); the
+  // pooled copy of a 6 MB sequential grid would cost more than its 16 x 16 search.
+  const std::int64_t reads = static_cast<std::int64_t>(cells.index.size()) * num_angles * num_beams;
+  const bool prune = !penalize && !fine && options.branch_and_bound &&
+                     static_cast<std::int64_t>(grid.data_size()) * 8 < reads &&
+                     IsStepTwoLattice(cells, grid.geometry().stride);
+  if (prune) {
+    // Skippable: every sum <= bound gives a response below best - 0.1, which Karto never uses
+    // (not the best, not a tie, outside the covariance window; pruned_search.h).
+    auto prunable = [this](std::int32_t bound, std::int32_t best_sum) {
+      return response_of_sum[static_cast<std::size_t>(bound)] <
+             response_of_sum[static_cast<std::size_t>(best_sum)] - 0.1;
+    };
+    last_pruning = SumCandidatesPruned(grid.data(), grid.data_size(), grid.geometry().stride, table, cells, prunable,
+                                       &pruned_scratch, &sums, &max_sum_at);
+  } else {
+    SumAllCandidates(grid.data(), grid.data_size(), table, cells, fine ? 1 : options.threads, &sums);
+    last_pruning = {};
   }
 
   const std::size_t num_cells = static_cast<std::size_t>(n) * n;
@@ -189,13 +211,16 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     // best response, each position's maximum over headings and the ties (§4.5) are found on
     // the sums: ties are exactly the sums s with |table[s] - best| <= 1e-6, an interval
     // [tie_min_sum, best_sum].
-    max_sum_at.resize(num_cells);
-    std::int32_t best_sum = 0;
-    for (std::size_t c = 0; c < num_cells; ++c) {
-      const auto first = sums.begin() + static_cast<std::ptrdiff_t>(c * num_angles);
-      max_sum_at[c] = *std::max_element(first, first + num_angles);
-      best_sum = std::max(best_sum, max_sum_at[c]);
+    // (After branch and bound, max_sum_at is already filled, -1 for skipped positions.)
+    if (!prune) {
+      max_sum_at.resize(num_cells);
+      for (std::size_t c = 0; c < num_cells; ++c) {
+        const auto first = sums.begin() + static_cast<std::ptrdiff_t>(c * num_angles);
+        max_sum_at[c] = *std::max_element(first, first + num_angles);
+      }
     }
+    std::int32_t best_sum = 0;
+    for (const std::int32_t m : max_sum_at) best_sum = std::max(best_sum, m);
     best = std::max(best, response_of_sum[static_cast<std::size_t>(best_sum)]);
     tie_min_sum = best_sum;
     while (tie_min_sum > 0 && KartoEqual(response_of_sum[static_cast<std::size_t>(tie_min_sum - 1)], best)) {
@@ -203,8 +228,10 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     }
     if (!fine) {
       cell_maximum.resize(num_cells);
+      // A skipped position is below best - 0.1 > 0, so 0 keeps it out of the covariance
+      // window exactly as its true value would.
       for (std::size_t c = 0; c < num_cells; ++c) {
-        cell_maximum[c] = response_of_sum[static_cast<std::size_t>(max_sum_at[c])];
+        cell_maximum[c] = max_sum_at[c] < 0 ? 0.0 : response_of_sum[static_cast<std::size_t>(max_sum_at[c])];
       }
     }
   }

@@ -33,6 +33,10 @@ struct ScanMatcherOptions {
   double minimum_angle_penalty = 0.9;
   bool use_response_expansion = false;
   int threads = 1;  // angle search spread over this many threads; results independent of it
+  // Skip, in unpenalised coarse passes over small grids (the loop matcher), the blocks of
+  // candidates provably more than 0.1 below the best response (pruned_search.h); results are
+  // identical either way, only the time changes.
+  bool branch_and_bound = true;
 
   // Throws InputError naming the field when D/rho is not an even integer, sigma is outside
   // [0.5 rho, 10 rho], or a value is non-positive (§4.1 [DECIDE]).

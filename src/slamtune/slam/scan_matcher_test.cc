@@ -290,13 +290,30 @@ TEST(ScanMatcher, ReusedGridsGiveTheResultsOfAFreshMatcher) {
 
 TEST(ScanMatcher, ThreadCountDoesNotChangeResults) {
   Scene scene = MakeScene({3.0, 4.0, -0.6}, {0.7, -0.4, 0.1}, 10);
-  ScanMatcherOptions one = LoopOptions(), two = LoopOptions();
+  ScanMatcherOptions one = LoopOptions();
+  one.branch_and_bound = false;  // the exhaustive search is the one spread over threads
+  ScanMatcherOptions two = one;
   two.threads = 2;
   ScanMatcher a(one), b(two);
   ExpectIdentical(a.Match(scene.scan, scene.base_ptrs(), false, false),
                   b.Match(scene.scan, scene.base_ptrs(), false, false));
   ExpectIdentical(a.Match(scene.scan, scene.base_ptrs(), true, true),
                   b.Match(scene.scan, scene.base_ptrs(), true, true));
+}
+
+TEST(ScanMatcher, BranchAndBoundDoesNotChangeResults) {
+  ScanMatcherOptions exhaustive = LoopOptions();
+  exhaustive.branch_and_bound = false;
+  ScanMatcher pruned(LoopOptions()), full(exhaustive);
+  const Pose2 perturbations[] = {{0.0, 0.0, 0.0}, {0.7, -0.4, 0.1}, {-2.5, 1.8, -0.3}, {3.9, 3.9, 0.34}};
+  for (const Pose2& d : perturbations) {
+    SCOPED_TRACE(ToString(d));
+    Scene scene = MakeScene({3.0, 4.0, -0.6}, d, 10);
+    ExpectIdentical(pruned.Match(scene.scan, scene.base_ptrs(), false, false),
+                    full.Match(scene.scan, scene.base_ptrs(), false, false));
+    ExpectIdentical(pruned.Match(scene.scan, scene.base_ptrs(), false, true),
+                    full.Match(scene.scan, scene.base_ptrs(), false, true));
+  }
 }
 
 // The fast matcher must give the plain transcription's numbers bit for bit.
