@@ -16,10 +16,53 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+#include <cstddef>
 #include <span>
 #include <vector>
 
 namespace slamtune::slam {
+
+// Calls visit(point) for every point that passes the back-face filter seen from
+// `viewpoint` (§4.3), in beam order. Inline so that the grid can draw the points as they come
+// instead of collecting them first.
+template <typename Visit>
+void ForEachValidPoint(std::span<const Eigen::Vector2d> points, const Eigen::Vector2d& viewpoint, Visit&& visit) {
+  // Karto squares 0.1 in double arithmetic; 0.1 * 0.1 is 0.010000000000000002, not 0.01, and
+  // we keep that exact threshold (§4.3 "10 cm").
+  const double min_squared_distance = 0.1 * 0.1;
+  const double vx = viewpoint.x(), vy = viewpoint.y();
+  // Anchor F: (0, 0) until the first point whose x and y are both not NaN (an inf point can
+  // be the anchor, §4.3 [QUIRK]).
+  double fx = 0.0, fy = 0.0;
+  bool anchor_set = false;
+  std::size_t pending_start = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double cx = points[i].x(), cy = points[i].y();
+    if (!anchor_set && !std::isnan(cx) && !std::isnan(cy)) {
+      fx = cx;
+      fy = cy;
+      anchor_set = true;
+    }
+    const double dx = fx - cx, dy = fy - cy;
+    // A NaN squared distance compares false: the point neither opens nor closes a stretch.
+    if (!(dx * dx + dy * dy > min_squared_distance)) continue;
+    // s = z component of (F - V) x (C - V), in the spec's exact expression so that NaN and inf
+    // propagate identically (§4.3).
+    const double a = vy - fy;
+    const double b = fx - vx;
+    const double c = fy * vx - fx * vy;
+    const double s = cx * a + cy * b + c;
+    fx = cx;
+    fy = cy;
+    // Seen from behind (s < 0): drop the pending stretch. Otherwise (including NaN, which is
+    // "not < 0") output it. Either way a new stretch starts at C.
+    if (!(s < 0.0)) {
+      for (std::size_t k = pending_start; k < i; ++k) visit(points[k]);
+    }
+    pending_start = i;
+  }
+}
 
 // Appends to `*valid` (cleared first) the points of `points` (a scan's unfiltered list, beam
 // order) that pass the back-face filter seen from `viewpoint` (§4.3). `valid` is an output

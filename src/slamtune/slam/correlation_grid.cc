@@ -95,13 +95,6 @@ std::uint8_t CorrelationGrid::ValueAt(int roi_x, int roi_y) const {
   return data_[static_cast<std::size_t>(GridIndex({roi_x, roi_y}))];
 }
 
-void CorrelationGrid::Touch(int x0, int y0, int x1, int y1) {
-  touched_x0_ = std::min(touched_x0_, x0);
-  touched_y0_ = std::min(touched_y0_, y0);
-  touched_x1_ = std::max(touched_x1_, x1);
-  touched_y1_ = std::max(touched_y1_, y1);
-}
-
 void CorrelationGrid::Clear() {
   if (touched_x0_ > touched_x1_) return;
   const std::size_t width = static_cast<std::size_t>(touched_x1_ - touched_x0_ + 1);
@@ -164,7 +157,6 @@ bool CorrelationGrid::AddPoint(const Eigen::Vector2d& world) {
   // "Already 100 -> skip, no smear" (§4.3 [QUIRK]): a kernel value may have rounded to 100.
   if (cell == kCorrelationOccupied) return false;
   cell = kCorrelationOccupied;
-  Touch(x, y, x, y);
   Smear(x, y);
   smeared_centres_.push_back(x + y * geometry_.stride);
   return true;
@@ -174,8 +166,7 @@ void CorrelationGrid::AddScans(std::span<const LaserScan* const> base_scans, con
   Clear();
   for (const LaserScan* scan : base_scans) {
     SLAMTUNE_CHECK(scan != nullptr);
-    FilterBackFaces(scan->unfiltered_points(), viewpoint, &valid_points_);
-    for (const Eigen::Vector2d& p : valid_points_) AddPoint(p);
+    ForEachValidPoint(scan->unfiltered_points(), viewpoint, [this](const Eigen::Vector2d& p) { AddPoint(p); });
   }
 }
 

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -91,7 +92,12 @@ class CorrelationGrid {
 
  private:
   void Smear(int stored_x, int stored_y);
-  void Touch(int x0, int y0, int x1, int y1);
+  void Touch(int x0, int y0, int x1, int y1) {
+    touched_x0_ = std::min(touched_x0_, x0);
+    touched_y0_ = std::min(touched_y0_, y0);
+    touched_x1_ = std::max(touched_x1_, x1);
+    touched_y1_ = std::max(touched_y1_, y1);
+  }
 
   CorrelationGridGeometry geometry_;
   double resolution_;
@@ -108,7 +114,6 @@ class CorrelationGrid {
   // than zeroing the box.
   int touched_x0_, touched_y0_, touched_x1_, touched_y1_;
   std::vector<std::int32_t> smeared_centres_;
-  std::vector<Eigen::Vector2d> valid_points_;  // scratch of AddScans, reused
 };
 
 }  // namespace slamtune::slam
