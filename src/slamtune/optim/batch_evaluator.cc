@@ -77,12 +77,20 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
       const std::size_t i = todo[t];
       fresh[t] = RunOne(batch[i], keys[i]);
       if (store_) store_->Put(fresh[t]);  // committed at once: an interruption loses nothing finished
-      std::lock_guard guard(mutex_);
-      memory_[keys[i]] = fresh[t];
-      ++stats_.evaluated;
-      if (fresh[t].status != "ok") ++stats_.failed;
-      stats_.busy_s += fresh[t].wall_s;
-      if (progress_) progress_(fresh[t], stats_);
+      BatchEvaluatorStats snapshot;
+      {
+        std::lock_guard guard(mutex_);
+        memory_[keys[i]] = fresh[t];
+        ++stats_.evaluated;
+        if (fresh[t].status != "ok") ++stats_.failed;
+        stats_.busy_s += fresh[t].wall_s;
+        snapshot = stats_;
+      }
+      // Outside the lock: the callback may ask for stats().
+      if (progress_) {
+        std::lock_guard guard(progress_mutex_);
+        progress_(fresh[t], snapshot);
+      }
     }
   };
   const int threads = std::min<int>(jobs_, static_cast<int>(todo.size()));

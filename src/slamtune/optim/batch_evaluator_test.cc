@@ -71,6 +71,14 @@ TEST(BatchEvaluator, DatabaseServesEarlierResultsAcrossProcesses) {
   EXPECT_EQ(store.Count(), 3u);
 }
 
+TEST(BatchEvaluator, ProgressCallbackMayReadStats) {
+  BatchEvaluator eval(Fake, nullptr, 2);
+  std::size_t seen = 0;
+  eval.SetProgressCallback([&](const EvaluationRecord&, const BatchEvaluatorStats&) { seen = eval.stats().evaluated; });
+  eval.Evaluate({{{"r", 1}}, {{"r", 2}}, {{"r", 3}}});
+  EXPECT_GE(seen, 1u);
+}
+
 TEST(BatchEvaluator, ParallelEqualsSerial) {
   std::vector<Assignment> batch;
   for (int i = 0; i < 20; ++i) batch.push_back({{"r", 0.1 * i}});

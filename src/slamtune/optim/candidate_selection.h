@@ -38,7 +38,7 @@ std::size_t Knee(const std::vector<EvaluationRecord>& records);
 std::size_t Worst(const std::vector<EvaluationRecord>& records);
 
 struct VerdictOptions {
-  double equivalence_tolerance = 0.02;  // relative difference per objective treated as no difference
+  double equivalence_tolerance = 0.05;  // relative difference per objective treated as no difference
 };
 
 // One paragraph comparing `recommended` with `defaults` (slam_karto's r = 4, g = 10).

@@ -95,16 +95,23 @@ void EvaluationStore::Exec(const std::string& sql) const {
   }
 }
 
-void EvaluationStore::SetSettings(const nlohmann::json& settings) {
+void EvaluationStore::SetSettings(const nlohmann::json& settings) { SetMeta("settings", settings); }
+
+std::optional<nlohmann::json> EvaluationStore::Settings() const { return Meta("settings"); }
+
+void EvaluationStore::SetMeta(const std::string& key, const nlohmann::json& value) {
+  SLAMTUNE_CHECK(key != "format");
   std::lock_guard guard(lock_->mutex);
-  Statement put(db_, "INSERT OR REPLACE INTO meta(key, value) VALUES('settings', ?)");
-  put.Bind(1, settings.dump());
+  Statement put(db_, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+  put.Bind(1, key);
+  put.Bind(2, value.dump());
   put.Step();
 }
 
-std::optional<nlohmann::json> EvaluationStore::Settings() const {
+std::optional<nlohmann::json> EvaluationStore::Meta(const std::string& key) const {
   std::lock_guard guard(lock_->mutex);
-  Statement get(db_, "SELECT value FROM meta WHERE key = 'settings'");
+  Statement get(db_, "SELECT value FROM meta WHERE key = ?");
+  get.Bind(1, key);
   if (!get.Step()) return std::nullopt;
   return nlohmann::json::parse(get.Text(0));
 }

@@ -33,6 +33,9 @@ class EvaluationStore {
   // Run settings (JSON), written once at the start of a run and compared on --resume.
   void SetSettings(const nlohmann::json& settings);
   std::optional<nlohmann::json> Settings() const;
+  // Free-form run metadata by key (e.g. the command line that started the run).
+  void SetMeta(const std::string& key, const nlohmann::json& value);
+  std::optional<nlohmann::json> Meta(const std::string& key) const;
 
   // Finished evaluations, keyed by SearchSpace::Key. Put commits at once; thread-safe.
   void Put(const EvaluationRecord& record);

@@ -1,0 +1,203 @@
+// `slamtune optimize [LOG] --out DIR`: NSGA-III over the loop-closure parameters, scored by
+// the map objectives of each SLAM run, with a report an engineer can act on.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "slamtune/cli/command_registry.h"
+#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/common/error.h"
+#include "slamtune/common/progress.h"
+#include "slamtune/optim/optimizer.h"
+#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/report/optimize_report.h"
+#include "slamtune/slam/params_yaml.h"
+
+namespace slamtune::cli {
+namespace {
+
+struct OptimizeArgs {
+  TuningInputOptions inputs;
+  std::string out;
+  std::string resume;
+  std::string space_file;
+  std::size_t population = 66;
+  unsigned generations = 60;
+  std::size_t divisions = 10;
+  unsigned seed = 1;
+  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  bool quiet = false;
+};
+
+// The budget of the main job on the built-in world: a few minutes on 2 cores.
+constexpr std::size_t kBuiltInPopulation = 20;
+constexpr unsigned kBuiltInGenerations = 8;
+
+void EnsureWritableDir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir, 0, "cannot create output folder: " + ec.message());
+  const auto probe = std::filesystem::path(dir) / ".slamtune_write_test";
+  {
+    std::ofstream f(probe);
+    if (!f) throw InputError(dir, 0, "output folder is not writable");
+  }
+  std::filesystem::remove(probe, ec);
+}
+
+nlohmann::json InvocationJson(const OptimizeArgs& a) {
+  return {{"inputs", a.inputs.ToJson()}, {"space", a.space_file},   {"population", a.population},
+          {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed}};
+}
+
+int RunOptimize(OptimizeArgs args, const CLI::App& app) {
+  const bool resume = !args.resume.empty();
+  if (resume && !args.out.empty() && args.out != args.resume) {
+    throw InputError("give either --out DIR or --resume DIR, not both with different folders");
+  }
+  const std::string dir = resume ? args.resume : args.out;
+  if (dir.empty()) throw InputError("--out DIR is required (or --resume DIR to continue a run)");
+  const std::string db_path = (std::filesystem::path(dir) / "run.sqlite").string();
+
+  // --resume with nothing else: the settings come from the run database.
+  if (resume) {
+    if (!std::filesystem::exists(db_path)) {
+      throw InputError(dir, 0, "--resume: not a slamtune optimisation folder (no run.sqlite)");
+    }
+    bool only_resume = true;
+    for (const CLI::Option* opt : app.get_options()) {
+      const std::string name = opt->get_name();
+      if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out") {
+        only_resume = false;
+      }
+    }
+    if (only_resume) {
+      optim::EvaluationStore probe(db_path);
+      const auto inv = probe.Meta("invocation");
+      if (!inv) throw InputError(db_path, 0, "--resume: the run database holds no command line");
+      args.inputs = TuningInputOptions::FromJson(inv->at("inputs"));
+      args.space_file = inv->at("space");
+      args.population = inv->at("population");
+      args.generations = inv->at("generations");
+      args.divisions = inv->at("divisions");
+      args.seed = inv->at("seed");
+    }
+  } else if (std::filesystem::exists(db_path)) {
+    throw InputError(dir, 0, "already holds an optimisation; use --resume DIR or a new --out");
+  }
+
+  const bool built_in = args.inputs.log.empty();
+  if (built_in && !resume) {
+    if (app.get_option("--population")->count() == 0) args.population = kBuiltInPopulation;
+    if (app.get_option("--generations")->count() == 0) args.generations = kBuiltInGenerations;
+  }
+
+  // Preamble: every input is loaded and validated before any work starts.
+  optim::OptimizeSettings settings;
+  settings.space = args.space_file.empty() ? optim::SearchSpace::PaperDefault()
+                                           : optim::SearchSpace::FromYaml(args.space_file);
+  settings.population = args.population;
+  settings.generations = args.generations;
+  settings.divisions = args.divisions;
+  settings.seed = args.seed;
+  settings.Validate();
+  if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
+  TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
+  for (const auto& d : settings.space.dimensions) {
+    slam::MapperParams probe = inputs.base;
+    slam::SetNumeric(probe, d.name, d.lower);  // InputError for unknown names or bad bounds
+    slam::SetNumeric(probe, d.name, d.upper);
+  }
+  auto context = std::make_shared<optim::SlamEvaluationContext>();
+  context->log = inputs.log;
+  context->relations = inputs.relations;
+  context->base = inputs.base;
+  for (const auto& [name, value] : settings.space.fixed) slam::SetNumeric(context->base, name, value);
+  for (const auto& d : settings.space.dimensions) {
+    settings.default_assignment[d.name] = slam::GetNumeric(slam::MapperParams{}, d.name);
+  }
+  for (const auto& [name, value] : settings.space.fixed) settings.default_assignment[name] = value;
+  settings.log_path = inputs.log_label;
+  settings.relations_path = inputs.relations_label;
+  settings.engine = {{"inputs", args.inputs.ToJson()}, {"base", nlohmann::json::object()}};
+  for (const auto& p : slam::ToNamedValues(inputs.base)) {
+    std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);
+  }
+  EnsureWritableDir(dir);
+
+  optim::EvaluationStore store(db_path);
+  if (!resume) store.SetMeta("invocation", InvocationJson(args));
+  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
+  const std::size_t total = settings.population * (settings.generations + 1);
+  progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {} jobs, "
+                              "seed {}; results in {}",
+                              settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label,
+                              settings.population, settings.generations, total, args.jobs, settings.seed, dir),
+                  true);
+  progress.Finish();
+
+  optim::BatchEvaluator evaluator(
+      [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); }, &store, args.jobs);
+  optim::OptimizeHooks hooks;
+  hooks.progress = [&progress](const std::string& line, bool force) { progress.Update(line, force); };
+  hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
+  optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
+  progress.Finish();
+
+  const auto* best = result.Find("recommended");
+  slam::MapperParams best_params = context->ParamsFor(best->record.params);
+  {
+    std::ofstream yaml(std::filesystem::path(dir) / "best.yaml");
+    yaml << "# slamtune optimize: recommended loop-closure parameters for " << inputs.log_label << "\n"
+         << slam::ToRosYaml(best_params);
+  }
+  const auto summary = report::WriteOptimizeReport(result, dir);
+  if (!args.quiet) {
+    std::printf("%s\n\n", result.verdict.c_str());
+    for (const auto& c : result.candidates) {
+      std::string params;
+      for (const auto& d : settings.space.dimensions) {
+        params += fmt::format("{}{}={:.4g}", params.empty() ? "" : " ", d.name, c.record.params.at(d.name));
+      }
+      std::printf("%-12s %s | eta %.5f corner px %.0f enclosed %.0f | loops %d%s\n", c.label.c_str(),
+                  params.c_str(), c.record.occupied_ratio, c.record.corner_pixels, c.record.enclosed_areas,
+                  c.record.loop_closures,
+                  c.record.has_gt ? fmt::format(" | trans {:.4f} m rot {:.3f} deg", c.record.trans_mean_m,
+                                                c.record.rot_mean_deg)
+                                        .c_str()
+                                  : "");
+    }
+    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml, report.html and %zu other files to %s\n",
+                result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
+  }
+  return 0;
+}
+
+const SubcommandRegistrar kRegistrar{{
+    "optimize",
+    "Tune loop closure (r, g by default) with NSGA-III on a log, or on the built-in office world",
+    40,
+    [](CLI::App& app) -> std::function<int()> {
+      auto args = std::make_shared<OptimizeArgs>();
+      app.add_option("LOG", args->inputs.log, "CARMEN log (.clf/.log, plain or gzip); none: the built-in world");
+      app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)");
+      app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder");
+      app.add_option("--space", args->space_file, "search-space YAML (vary: NAME: {min, max, type}; fix: NAME: V)");
+      app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
+      app.add_option("--generations", args->generations, "generations (default 60; 8 on the built-in world)");
+      app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
+          ->capture_default_str();
+      app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
+      app.add_option("--jobs,-j", args->jobs, "parallel SLAM runs (default: all cores)");
+      app.add_flag("--quiet,-q", args->quiet, "no progress output");
+      args->inputs.AddTo(app);
+      return [args, &app] { return RunOptimize(*args, app); };
+    },
+}};
+
+}  // namespace
+}  // namespace slamtune::cli

@@ -1,0 +1,147 @@
+// `slamtune sweep [LOG] --vary NAME=LO:HI[:STEP] [--fix NAME=V]... --out DIR`: loop closures
+// and the three map objectives (and errors, with relations) along one parameter — the seed
+// paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <thread>
+
+#include "slamtune/cli/command_registry.h"
+#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/common/error.h"
+#include "slamtune/common/progress.h"
+#include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/report/sweep_report.h"
+
+namespace slamtune::cli {
+namespace {
+
+struct SweepArgs {
+  TuningInputOptions inputs;
+  std::string vary;
+  std::vector<std::string> fix;
+  std::string out;
+  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  bool quiet = false;
+};
+
+// Short names of the seed paper.
+std::string Expand(const std::string& name) {
+  if (name == "r") return "loop_search_maximum_distance";
+  if (name == "g") return "loop_match_minimum_chain_size";
+  if (name == "p") return "loop_match_minimum_response_coarse";
+  if (name == "q") return "loop_match_maximum_variance_coarse";
+  return name;
+}
+
+double ParseNumber(const std::string& text, const std::string& what) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument(text);
+    return v;
+  } catch (const std::exception&) {
+    throw InputError(fmt::format("{}: '{}' is not a number", what, text));
+  }
+}
+
+int RunSweep(const SweepArgs& args) {
+  // --vary NAME=LO:HI[:STEP]
+  const auto eq = args.vary.find('=');
+  if (eq == std::string::npos) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + args.vary + "'");
+  const std::string name = Expand(args.vary.substr(0, eq));
+  std::vector<std::string> parts;
+  for (std::string rest = args.vary.substr(eq + 1);;) {
+    const auto c = rest.find(':');
+    parts.push_back(rest.substr(0, c));
+    if (c == std::string::npos) break;
+    rest = rest.substr(c + 1);
+  }
+  if (parts.size() < 2 || parts.size() > 3) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + args.vary + "'");
+  const double lo = ParseNumber(parts[0], "--vary LO"), hi = ParseNumber(parts[1], "--vary HI");
+  const double step = parts.size() == 3 ? ParseNumber(parts[2], "--vary STEP") : 1.0;
+  if (!(lo <= hi)) throw InputError(fmt::format("--vary: bounds reversed ({} > {})", lo, hi));
+  if (!(step > 0)) throw InputError(fmt::format("--vary: STEP must be > 0, got {}", step));
+  if ((hi - lo) / step > 10000) throw InputError("--vary: more than 10000 values; use a larger STEP");
+  if (args.out.empty()) throw InputError("--out DIR is required");
+
+  TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
+  auto context = std::make_shared<optim::SlamEvaluationContext>();
+  context->log = inputs.log;
+  context->relations = inputs.relations;
+  context->base = inputs.base;
+  optim::Assignment fixed;
+  for (const auto& f : args.fix) {
+    const auto e = f.find('=');
+    if (e == std::string::npos) throw InputError("--fix must be NAME=VALUE, got '" + f + "'");
+    fixed[Expand(f.substr(0, e))] = ParseNumber(f.substr(e + 1), "--fix " + f.substr(0, e));
+  }
+  std::vector<optim::Assignment> batch;
+  for (int i = 0;; ++i) {
+    const double v = lo + i * step;
+    if (v > hi + 1e-9 * std::max(1.0, std::fabs(hi))) break;
+    optim::Assignment a = fixed;
+    a[name] = std::round(v * 1e9) / 1e9;  // 2 + 3 * 0.25 prints as 2.75, not 2.7500000000000004
+    context->ParamsFor(a);                // validates names and values before any work
+    batch.push_back(a);
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(args.out, ec);
+  if (ec) throw InputError(args.out, 0, "cannot create output folder: " + ec.message());
+
+  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
+  progress.Update(fmt::format("sweeping {} over {} values on {} ({} jobs)", name, batch.size(), inputs.log_label,
+                              args.jobs),
+                  true);
+  progress.Finish();
+  optim::BatchEvaluator evaluator([context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); },
+                                  nullptr, args.jobs);
+  evaluator.SetProgressCallback([&](const optim::EvaluationRecord& r, const optim::BatchEvaluatorStats& s) {
+    progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closures", s.evaluated, batch.size(), name,
+                                r.params.at(name), r.loop_closures));
+  });
+  const auto records = evaluator.Evaluate(batch);
+  progress.Finish();
+  std::vector<report::SweepPoint> points;
+  for (std::size_t i = 0; i < batch.size(); ++i) points.push_back({batch[i].at(name), records[i]});
+  report::SweepReportOptions options;
+  options.log_path = inputs.log_label;
+  const auto summary = report::WriteSweepReport(name, points, args.out, options);
+  if (!args.quiet) {
+    std::printf("%-10s %6s %10s %10s %9s%s\n", name.size() > 10 ? name.substr(0, 10).c_str() : name.c_str(), "loops",
+                "eta", "corner_px", "enclosed", inputs.relations.empty() ? "" : "   trans_m  rot_deg");
+    for (const auto& p : points) {
+      std::printf("%-10.4g %6d %10.5f %10.0f %9.0f", p.value, p.record.loop_closures, p.record.occupied_ratio,
+                  p.record.corner_pixels, p.record.enclosed_areas);
+      if (p.record.has_gt) std::printf(" %9.4f %8.3f", p.record.trans_mean_m, p.record.rot_mean_deg);
+      std::printf("%s\n", p.record.status == "ok" ? "" : ("  FAILED: " + p.record.reason).c_str());
+    }
+    std::printf("wrote %zu files to %s\n", summary.files.size(), args.out.c_str());
+  }
+  return summary.failed > 0 ? 1 : 0;
+}
+
+const SubcommandRegistrar kRegistrar{{
+    "sweep",
+    "Loop closures and map objectives along one parameter (the paper's Figures 14-15)",
+    45,
+    [](CLI::App& app) -> std::function<int()> {
+      auto args = std::make_shared<SweepArgs>();
+      app.add_option("LOG", args->inputs.log, "CARMEN log; none: the built-in world");
+      app.add_option("--vary", args->vary, "NAME=LO:HI[:STEP] (r, g, p, q or any numeric ROS name); STEP 1 if omitted")
+          ->required();
+      app.add_option("--fix", args->fix, "NAME=VALUE held fixed (repeatable)");
+      app.add_option("--out", args->out, "output folder")->required();
+      app.add_option("--jobs,-j", args->jobs, "parallel SLAM runs (default: all cores)");
+      app.add_flag("--quiet,-q", args->quiet, "no progress output");
+      args->inputs.AddTo(app);
+      return [args] { return RunSweep(*args); };
+    },
+}};
+
+}  // namespace
+}  // namespace slamtune::cli

@@ -1,0 +1,87 @@
+#include "slamtune/cli/tuning_inputs.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "slamtune/common/error.h"
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/sim/simulation.h"
+#include "slamtune/slam/params_yaml.h"
+
+namespace slamtune::cli {
+
+void TuningInputOptions::AddTo(CLI::App& app) {
+  app.add_option("--relations", relations, "Freiburg relations file: adds ground-truth errors to every evaluation");
+  app.add_option("--world", world, "built-in world to simulate when no LOG is given (see `simulate --list`)")
+      ->capture_default_str();
+  app.add_option("--world-seed", world_seed, "seed of the simulated world")->capture_default_str();
+  app.add_option("--preset", preset, "base parameters: slam_karto (default), open_karto or slam_toolbox");
+  app.add_option("--params", params_file, "slam_toolbox / slam_karto parameter YAML for the base parameters");
+  app.add_option("--set", sets, "override one base parameter, NAME=VALUE (repeatable)");
+  app.add_option("--no-return", no_return, "no-return value of the log in metres (default: detected)");
+}
+
+nlohmann::json TuningInputOptions::ToJson() const {
+  nlohmann::json j{{"log", log},       {"relations", relations}, {"world", world},          {"world_seed", world_seed},
+                   {"preset", preset}, {"params", params_file}, {"sets", sets},            {"no_return", no_return}};
+  // A file's identity: its size and modification time, so a changed file is noticed on --resume.
+  for (const char* key : {"log", "relations", "params"}) {
+    const std::string path = j[key];
+    std::error_code ec;
+    if (!path.empty() && std::filesystem::exists(path, ec)) {
+      j[std::string(key) + "_bytes"] = std::filesystem::file_size(path, ec);
+    }
+  }
+  return j;
+}
+
+TuningInputOptions TuningInputOptions::FromJson(const nlohmann::json& j) {
+  TuningInputOptions o;
+  o.log = j.at("log");
+  o.relations = j.at("relations");
+  o.world = j.at("world");
+  o.world_seed = j.at("world_seed");
+  o.preset = j.at("preset");
+  o.params_file = j.at("params");
+  o.sets = j.at("sets").get<std::vector<std::string>>();
+  o.no_return = j.at("no_return");
+  return o;
+}
+
+TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
+  TuningInputs in;
+  in.base = options.preset.empty() ? slam::MapperParams{} : slam::MapperParams::Preset(options.preset);
+  if (!options.params_file.empty()) slam::ApplyParamsYamlFile(in.base, options.params_file);
+  for (const auto& s : options.sets) slam::ApplyOverride(in.base, s);
+  in.base.Validate();
+
+  if (options.log.empty()) {
+    sim::SimulationOptions sim_options;
+    sim_options.world = options.world;
+    sim_options.seed = options.world_seed;
+    sim_options.Validate();
+    if (!quiet) std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n",
+                             options.world.c_str(), options.world_seed);
+    sim::Simulation simulation = sim::Simulate(sim_options);
+    in.log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
+    in.log_label = fmt::format("built-in world {} (seed {})", options.world, options.world_seed);
+    if (options.relations.empty()) {
+      in.relations = std::move(simulation.relations);
+      in.relations_label = "simulated (true trajectory)";
+    }
+  } else {
+    io::LogReadOptions read;
+    read.no_return_value = options.no_return;
+    in.log = std::make_shared<const io::LaserLog>(io::ReadCarmenLog(options.log, read));
+    in.log_label = options.log;
+  }
+  if (!options.relations.empty()) {
+    in.relations = io::ReadRelations(options.relations);
+    in.relations_label = options.relations;
+  }
+  return in;
+}
+
+}  // namespace slamtune::cli

@@ -1,0 +1,77 @@
+#include "slamtune/optim/slam_evaluation.h"
+
+#include <chrono>
+
+#include "slamtune/common/error.h"
+#include "slamtune/metrics/gt_error.h"
+#include "slamtune/slam/log_runner.h"
+#include "slamtune/slam/occupancy_grid.h"
+
+namespace slamtune::optim {
+namespace {
+
+struct SlamRun {
+  slam::RunSummary summary;
+  std::vector<io::TimedPose> trajectory;
+  io::MapImage map;
+};
+
+SlamRun RunAndMap(const SlamEvaluationContext& context, const Assignment& assignment) {
+  SLAMTUNE_CHECK(context.log != nullptr);
+  const slam::MapperParams params = context.ParamsFor(assignment);
+  slam::LogRunner runner(context.log, params);
+  runner.RunToEnd();
+  SlamRun run;
+  run.summary = runner.Summary();
+  run.trajectory = runner.Trajectory();
+  slam::OccupancyGridOptions grid;
+  grid.resolution = params.resolution;
+  grid.min_pass_through = params.min_pass_through;
+  grid.occupancy_threshold = params.occupancy_threshold;
+  run.map = slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid)
+                .ToMapImage();
+  return run;
+}
+
+}  // namespace
+
+slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment) const {
+  slam::MapperParams params = base;
+  for (const auto& [name, value] : assignment) slam::SetNumeric(params, name, value);
+  return params;
+}
+
+EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment) {
+  const auto start = std::chrono::steady_clock::now();
+  const SlamRun run = RunAndMap(context, assignment);
+  const metrics::MapQuality quality = metrics::ComputeMapQuality(run.map, context.metrics);
+
+  EvaluationRecord record;
+  record.params = assignment;
+  record.occupied_ratio = quality.occupied_ratio;
+  record.corner_pixels = static_cast<double>(quality.corner_pixels);
+  record.enclosed_areas = quality.enclosed_areas;
+  record.occupied_ratio_known = quality.occupied_ratio_known;
+  record.corners = quality.corners;
+  record.contours = quality.contours;
+  record.nodes = run.summary.nodes;
+  record.loop_closures = static_cast<int>(run.summary.loop_closures.size());
+  for (const auto& loop : run.summary.loop_closures) record.loop_scans.push_back(loop.log_index);
+  if (!context.relations.empty()) {
+    const metrics::GtError error = metrics::ComputeGtError(run.trajectory, context.relations);
+    record.has_gt = error.relations_used > 0;
+    record.trans_mean_m = error.trans_mean_m;
+    record.trans_std_m = error.trans_std_m;
+    record.rot_mean_deg = error.rot_mean_deg;
+    record.rot_std_deg = error.rot_std_deg;
+    record.relations_used = static_cast<int>(error.relations_used);
+  }
+  record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return record;
+}
+
+io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {
+  return RunAndMap(context, assignment).map;
+}
+
+}  // namespace slamtune::optim
