@@ -35,6 +35,10 @@ AxisTicks MakeNiceTicks(double lo, double hi, int target_count) {
     hi = 1.0;
   }
   if (lo > hi) std::swap(lo, hi);
+  if (!std::isfinite(hi - lo)) {  // e.g. -DBL_MAX .. DBL_MAX: keep the range representable
+    lo = std::max(lo, -1e307);
+    hi = std::min(hi, 1e307);
+  }
   if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi))) {
     // A single value: widen by 10 % of its magnitude (or +-0.5 around zero).
     const double half = lo == 0.0 ? 0.5 : 0.1 * std::abs(lo);

@@ -149,7 +149,8 @@ std::array<std::optional<AxisLimits>, 3> ObjectiveLimits(const optim::OptimizeRe
   for (std::size_t k = 0; k < 3; ++k) {
     if (lo[k] > hi[k]) continue;
     const AxisTicks t = MakeNiceTicks(lo[k], hi[k], 6);
-    const double pad = 0.03 * (hi[k] - lo[k]);  // keeps extreme points off the frame
+    const double range = hi[k] - lo[k];
+    const double pad = std::isfinite(range) ? 0.03 * range : 0.0;  // keeps extreme points off the frame
     out[k] = AxisLimits{std::min(t.lower, lo[k] - pad), std::max(t.upper, hi[k] + pad)};
   }
   return out;

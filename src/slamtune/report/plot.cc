@@ -66,7 +66,7 @@ AxisTicks AxisFor(const std::vector<Series>& series, bool along_x, const std::op
   const auto [lo, hi] = DataRange(series, along_x);
   AxisTicks ticks = MakeNiceTicks(lo, hi, target);
   // A 3 % margin keeps extreme points off the frame; the axis may then end between ticks.
-  const double pad = 0.03 * (hi - lo);
+  const double pad = std::isfinite(0.03 * (hi - lo)) ? 0.03 * (hi - lo) : 0.0;
   ticks.lower = std::min(ticks.lower, lo - pad);
   ticks.upper = std::max(ticks.upper, hi + pad);
   return ticks;

@@ -73,12 +73,15 @@ TEST(RenderPlot, DegenerateDataDoesNotCrash) {
       {MakeSeries("", {1.0, 1.0, 1.0}, {2.0, 2.0, 2.0})},       // all equal
       {MakeSeries("", {kNaN, 1.0}, {1.0, kNaN})},               // nothing finite
       {MakeSeries("", {0.0, 1e300}, {-1e300, 1e300}, SeriesStyle::kLineAndMarkers)},
+      {MakeSeries("", {-1.7e308, 1.7e308}, {0.0, 1.0}, SeriesStyle::kLineAndMarkers)},
   };
   for (const auto& c : cases) {
     const RenderedPlot r = RenderPlot(c, o);
     EXPECT_EQ(r.image.size(), cv::Size(200, 150));
     EXPECT_LT(r.x_axis.lower, r.x_axis.upper);
     EXPECT_LT(r.y_axis.lower, r.y_axis.upper);
+    EXPECT_TRUE(std::isfinite(r.x_axis.lower) && std::isfinite(r.x_axis.upper));
+    EXPECT_TRUE(std::isfinite(r.y_axis.lower) && std::isfinite(r.y_axis.upper));
   }
   const RenderedPlot one = RenderPlot({MakeSeries("", {4.0}, {4.0})}, o);
   EXPECT_FALSE(IsWhite(one.image, one.ToPixel(4.0, 4.0)));
