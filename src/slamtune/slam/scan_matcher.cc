@@ -109,7 +109,6 @@ struct ScanMatcher::Impl {
   std::vector<double> cell_maximum;     // coarse passes: best response over headings per position
   std::vector<double> response_of_sum;  // sum -> sum / (100 * beams), for the current beam count
   PrunedSearchScratch pruned_scratch;
-  PrunedSearchStats last_pruning;  // of the last pass (zero when not pruned)
   std::vector<double> heading_cos, heading_sin;  // of the normalised heading alpha_k
   std::vector<double> raw_at_best, angles;       // angular covariance inputs
 };
@@ -162,11 +161,10 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
       return response_of_sum[static_cast<std::size_t>(bound)] <
              response_of_sum[static_cast<std::size_t>(best_sum)] - 0.1;
     };
-    last_pruning = SumCandidatesPruned(grid.data(), grid.data_size(), grid.geometry().stride, table, cells, prunable,
-                                       &pruned_scratch, &sums, &max_sum_at);
+    SumCandidatesPruned(grid.data(), grid.data_size(), grid.geometry().stride, table, cells, prunable, &pruned_scratch,
+                        &sums, &max_sum_at);
   } else {
     SumAllCandidates(grid.data(), grid.data_size(), table, cells, fine ? 1 : options.threads, &sums);
-    last_pruning = {};
   }
 
   const std::size_t num_cells = static_cast<std::size_t>(n) * n;

@@ -7,6 +7,11 @@
 // parameters) and a *loop* matcher (LoopSearchSpace* parameters). The matcher owns its grids
 // and lookup tables and reuses them between calls; it is a value type (copying it copies the
 // caches), so engine state can be copied and continued.
+//
+// Speed without changing a bit: the search works on integer byte sums (vectorised, far points
+// clipped per row), unpenalised coarse passes skip candidates provably > 0.1 below the best
+// (pruned_search.h), and the results equal those of ReferenceScanMatcher, a plain
+// transcription of Karto's loops (scan_matcher_test.cc checks it on synthetic and intel data).
 #pragma once
 
 #include <Eigen/Core>
@@ -32,7 +37,7 @@ struct ScanMatcherOptions {
   double minimum_distance_penalty = 0.5;
   double minimum_angle_penalty = 0.9;
   bool use_response_expansion = false;
-  int threads = 1;  // angle search spread over this many threads; results independent of it
+  int threads = 1;  // rows of an exhaustive coarse search spread over this many threads; results independent of it
   // Skip, in unpenalised coarse passes over small grids (the loop matcher), the blocks of
   // candidates provably more than 0.1 below the best response (pruned_search.h); results are
   // identical either way, only the time changes.
