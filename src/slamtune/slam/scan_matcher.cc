@@ -334,7 +334,9 @@ MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan*
   m.grid.SetRoiOrigin({center.x - (0.5 * (g.roi_side - 1) * resolution), center.y - (0.5 * (g.roi_side - 1) * resolution)});
   m.grid.AddScans(base_scans, {center.x, center.y});
 
-  // §4.2 item 4: coarse pass over every second cell of the window.
+  // §4.2 item 4: coarse pass over every second cell of the window, starting at its edge. With
+  // D/rho = 30 (slam_karto's sequential matcher) the centre cell is therefore *not* sampled
+  // (only odd offsets -0.15, -0.13, ..., 0.15); with D/rho = 160 (loop) it is. Karto's lattice.
   const double coarse_offset = 0.5 * (g.search_side - 1) * resolution;
   const double coarse_step = 2 * resolution;
   double best = m.CorrelateScan(scan, center, coarse_offset, coarse_step, o.coarse_angle_offset,

@@ -44,7 +44,9 @@ struct ScanMatcherOptions {
   bool branch_and_bound = true;
 
   // Throws InputError naming the field when D/rho is not an even integer, sigma is outside
-  // [0.5 rho, 10 rho], or a value is non-positive (§4.1 [DECIDE]).
+  // [0.5 rho, 10 rho], or a value is non-positive (§4.1 [DECIDE]); also when a minimum
+  // penalty is outside [0, 1], threads < 1, or the correlation grid would exceed 2^31 cells
+  // (32-bit linear indices, §1.2).
   void Validate() const;
 };
 
