@@ -56,7 +56,10 @@ struct RunSummary {
 class LogRunner {
  public:
   // Validates `params`. The log is shared (read-only) by all copies of the runner.
-  LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params);
+  // `match_cache` (may be null) lets runs of this same log share scan-match results
+  // (match_cache.h); results are identical with or without it.
+  LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params,
+            std::shared_ptr<MatchCache> match_cache = nullptr);
 
   bool Done() const { return next_ >= log_->scans.size(); }
   std::size_t next_index() const { return next_; }

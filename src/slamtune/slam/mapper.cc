@@ -26,7 +26,8 @@ bool SameOptions(const ScanMatcherOptions& a, const ScanMatcherOptions& b) {
 
 }  // namespace
 
-Mapper::Mapper(const MapperParams& params) : params_(params) {
+Mapper::Mapper(const MapperParams& params, std::shared_ptr<MatchCache> match_cache)
+    : params_(params), match_cache_(std::move(match_cache)) {
   params_.Validate();
   solver_ = MakeSolver(params_.solver, params_.ceres_loss_function);
 }
@@ -72,6 +73,13 @@ std::vector<const LaserScan*> Mapper::ScanPointers(const std::vector<int>& ids) 
   return out;
 }
 
+MatchResult Mapper::MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
+                              bool penalize, bool refine) {
+  ScanMatcher& matcher = role == MatchRole::kLoop ? *loop_matcher_ : *sequential_matcher_;
+  if (match_cache_) return match_cache_->Match(role, matcher, scan, base, penalize, refine);
+  return matcher.Match(scan, base, penalize, refine);
+}
+
 // §3.2, steps 1-10 in order.
 ProcessResult Mapper::Process(LaserScan scan) {
   ProcessResult result;
@@ -106,7 +114,7 @@ ProcessResult Mapper::Process(LaserScan scan) {
   if (params_.use_scan_matching && last != nullptr) {
     const std::vector<const LaserScan*> buffer =
         ScanPointers(std::vector<int>(running_buffer_.begin(), running_buffer_.end()));
-    const MatchResult match = sequential_matcher_->Match(scan, buffer, true, true);
+    const MatchResult match = MatchWith(MatchRole::kSequential, scan, buffer, true, true);
     scan.SetSensorPose(match.mean);
     covariance = match.covariance;
     result.sequential_response = match.response;
@@ -181,7 +189,7 @@ void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eig
   for (const std::vector<int>& chain : chains) {
     if (static_cast<int>(chain.size()) < params_.loop_match_minimum_chain_size) continue;  // g gates here too
     ++counters_.near_chain_matches;
-    const MatchResult m = sequential_matcher_->Match(scans_[scan], ScanPointers(chain), false, true);
+    const MatchResult m = MatchWith(MatchRole::kSequential, scans_[scan], ScanPointers(chain), false, true);
     if (m.response > params_.link_match_minimum_response_fine - kKartoTolerance) {
       means->push_back(m.mean);
       covariances->push_back(m.covariance);
@@ -204,7 +212,7 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
     attempt.chain_first = chain.front();
     attempt.chain_last = chain.back();
     const std::vector<const LaserScan*> base = ScanPointers(chain);
-    const MatchResult coarse = loop_matcher_->Match(scans_[scan], base, false, false);
+    const MatchResult coarse = MatchWith(MatchRole::kLoop, scans_[scan], base, false, false);
     attempt.coarse_response = coarse.response;
     attempt.coarse_covariance = coarse.covariance;
     // §6.3: strict on all three.
@@ -213,7 +221,7 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
     if (attempt.coarse_passed) {
       LaserScan tmp = scans_[scan];
       tmp.SetSensorPose(coarse.mean);
-      const MatchResult fine = sequential_matcher_->Match(tmp, base, false, true);
+      const MatchResult fine = MatchWith(MatchRole::kSequential, tmp, base, false, true);
       attempt.fine_response = fine.response;
       attempt.accepted = fine.response >= params_.loop_match_minimum_response_fine;  // §6.4
       if (attempt.accepted) {

@@ -9,6 +9,10 @@
 // continuing both copies with the same scans gives bit-identical results; SetParams() on a
 // copy changes later decisions only (e.g. the loop-closure parameters r, g, p, q), so an
 // optimiser can fork the state where decisions start to differ.
+//
+// Shared match results: with a MatchCache (match_cache.h) every matcher call (sequential,
+// near chain, loop coarse, loop fine) goes through the cache, so runs of the same log that
+// share it reuse each other's identical matches. Results are bit-identical with or without it.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,6 +25,7 @@
 
 #include "slamtune/slam/front_end.h"
 #include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/match_cache.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/pose_graph_solver.h"
@@ -70,8 +75,9 @@ struct MapperCounters {
 
 class Mapper {
  public:
-  // Validates `params` (InputError) and picks the back-end.
-  explicit Mapper(const MapperParams& params);
+  // Validates `params` (InputError) and picks the back-end. `match_cache` (may be null: no
+  // sharing) is shared by copies of the mapper.
+  explicit Mapper(const MapperParams& params, std::shared_ptr<MatchCache> match_cache = nullptr);
 
   // Mapper::Process of §3.2. `scan` carries its odometric pose (laser pose, zero offset for
   // CARMEN logs) and time; its log_index is kept for reports. The first scan fixes the laser
@@ -83,6 +89,8 @@ class Mapper {
   // cannot change once a scan has been processed.
   void SetParams(const MapperParams& params);
   const MapperParams& params() const { return params_; }
+  void set_match_cache(std::shared_ptr<MatchCache> cache) { match_cache_ = std::move(cache); }
+  const std::shared_ptr<MatchCache>& match_cache() const { return match_cache_; }
 
   // Processed scans, index = state id, with their current poses.
   const std::vector<LaserScan>& scans() const { return scans_; }
@@ -102,6 +110,9 @@ class Mapper {
   void BuildMatchers();
   void SetScanSensorPose(int id, const Pose2& sensor_pose);
   std::vector<const LaserScan*> ScanPointers(const std::vector<int>& ids) const;
+  // matcher.Match(...) of the given role, through the match cache when there is one.
+  MatchResult MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
+                        bool penalize, bool refine);
   // LinkScans / LinkChainToScan of §5.1-§5.2, counting by kind; return whether an edge was added.
   bool Link(int from, int to, const Pose2& mean, const Eigen::Matrix3d& covariance, EdgeKind kind,
             ProcessResult* result);
@@ -118,6 +129,7 @@ class Mapper {
   std::shared_ptr<const LaserGeometry> geometry_;  // fixed by the first scan
   std::optional<ScanMatcher> sequential_matcher_;
   std::optional<ScanMatcher> loop_matcher_;
+  std::shared_ptr<MatchCache> match_cache_;  // null: no sharing; thread-safe, shared by copies
   std::vector<LaserScan> scans_;
   std::vector<Pose2> reference_poses_;
   PoseGraph graph_;

@@ -1,0 +1,103 @@
+// A cache of scan-match results shared by many SLAM runs of one log (karto-algorithm.md §4.2,
+// §5.3, §6.1): runs that differ only in loop-closure parameters (r, g, p, q) build identical
+// state until their decisions differ, so they repeat the same MatchScan calls verbatim. The
+// first run to make a call computes it; the others reuse the result.
+//
+// Exactness: an entry is keyed by EVERYTHING the result depends on, compared word for word
+// (the hash only picks the bucket, so a collision can never return a wrong result):
+//   - the matcher role and every ScanMatcherOptions field that affects results (all but
+//     `threads` and `branch_and_bound`, which are documented as result-independent),
+//   - the penalize / refine flags,
+//   - the matched scan: log index, address of its (immutable, shared) readings, the bits of
+//     its corrected and sensor poses and of its laser geometry,
+//   - the base scans in order: log index, readings address and the bits of the corrected pose
+//     of each (their geometry must equal the scan's, otherwise the call bypasses the cache).
+// An entry keeps the readings it names alive, so an address in a key cannot be reused by other
+// data while the entry exists. A cache must only be shared by runs of the same log: log indices
+// of different logs mean different scans (the readings address tells them apart anyway).
+//
+// Concurrency: thread-safe. Concurrent requests for the same key compute once: the first
+// caller computes, the others wait for its result (a shared future). Memory is bounded by a
+// byte budget; when exceeded, the oldest half of the entries is dropped. Whether an entry was
+// evicted changes only the time, never a result.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/scan_matcher.h"
+
+namespace slamtune::slam {
+
+// Which of the mapper's matchers made the call (§3.2 step 6, §5.3 step 3, §6.1).
+enum class MatchRole : std::uint8_t { kSequential = 0, kLoop = 1 };
+
+struct MatchCacheOptions {
+  std::size_t byte_budget = std::size_t{512} << 20;  // bytes of keys + results kept; > 0
+
+  // Throws InputError naming the field when byte_budget is 0.
+  void Validate() const;
+};
+
+struct MatchCacheCounters {
+  std::uint64_t hits = 0;       // served from a finished entry
+  std::uint64_t misses = 0;     // computed by the caller
+  std::uint64_t waits = 0;      // served by waiting for another thread computing the same key
+  std::uint64_t bypassed = 0;   // calls whose inputs cannot be keyed exactly (computed, not stored)
+  std::uint64_t evictions = 0;  // entries dropped to stay within the budget
+  std::size_t entries = 0;      // entries held now
+  std::size_t bytes = 0;        // approximate bytes held now (keys + results + bookkeeping)
+
+  // One line: "match cache: H hits, W waits, M misses (hit rate X%), E evictions, N entries, B MB".
+  std::string ToString() const;
+};
+
+class MatchCache {
+ public:
+  // Validates `options` (InputError).
+  explicit MatchCache(const MatchCacheOptions& options = {});
+  MatchCache(const MatchCache&) = delete;
+  MatchCache& operator=(const MatchCache&) = delete;
+
+  // The result of matcher.Match(scan, base_scans, penalize, refine) made by `matcher` in role
+  // `role`: from the cache when the same call was made before, otherwise computed with
+  // `matcher` on the calling thread and stored. The matcher itself is not shared.
+  MatchResult Match(MatchRole role, ScanMatcher& matcher, const LaserScan& scan,
+                    std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+
+  MatchCacheCounters counters() const;
+  const MatchCacheOptions& options() const { return options_; }
+
+  // The key words of a call (exposed for tests); empty when the call cannot be keyed exactly.
+  static std::vector<std::uint64_t> KeyOf(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
+                                          std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+
+ private:
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
+  };
+  struct Entry {
+    std::shared_future<MatchResult> result;
+    std::vector<std::shared_ptr<const std::vector<double>>> readings;  // keeps keyed addresses valid
+    std::uint64_t sequence = 0;  // insertion order, for eviction
+    std::size_t bytes = 0;
+  };
+  void EvictOldestHalfLocked();
+
+  MatchCacheOptions options_;
+  mutable std::mutex mutex_;
+  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyHash> entries_;
+  std::uint64_t next_sequence_ = 0;
+  MatchCacheCounters counters_;
+};
+
+}  // namespace slamtune::slam
