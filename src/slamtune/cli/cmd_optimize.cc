@@ -31,6 +31,8 @@ struct OptimizeArgs {
   unsigned seed = 1;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   bool quiet = false;
+  bool no_share = false;       // evaluate without the shared scan-match cache
+  std::size_t share_mb = 512;  // MB, memory budget of the shared scan-match cache
 };
 
 // The budget of the main job on the built-in world: a few minutes on 2 cores.
@@ -54,6 +56,16 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed}};
 }
 
+// The scan-match cache shared by all SLAM runs of this command (slam/match_cache.h); null with
+// --no-share. Results are identical either way.
+std::shared_ptr<slam::MatchCache> MakeMatchCache(bool no_share, std::size_t share_mb) {
+  if (no_share) return nullptr;
+  if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
+  slam::MatchCacheOptions options;
+  options.byte_budget = share_mb << 20;
+  return std::make_shared<slam::MatchCache>(options);
+}
+
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   const bool resume = !args.resume.empty();
   if (resume && !args.out.empty() && args.out != args.resume) {
@@ -71,7 +83,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     bool only_resume = true;
     for (const CLI::Option* opt : app.get_options()) {
       const std::string name = opt->get_name();
-      if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out") {
+      if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out" &&
+          name != "--no-share" && name != "--share-mb") {
         only_resume = false;
       }
     }
@@ -116,6 +129,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   context->log = inputs.log;
   context->relations = inputs.relations;
   context->base = inputs.base;
+  context->match_cache = MakeMatchCache(args.no_share, args.share_mb);
   for (const auto& [name, value] : settings.space.fixed) slam::SetNumeric(context->base, name, value);
   for (const auto& d : settings.space.dimensions) {
     settings.default_assignment[d.name] = slam::GetNumeric(slam::MapperParams{}, d.name);
@@ -171,8 +185,10 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                                         .c_str()
                                   : "");
     }
-    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml, report.html and %zu other files to %s\n",
+    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml and %zu report files (report.html, results.json, tables, maps, figures) to %s\n",
                 result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
+    std::printf("%s\n", context->match_cache ? context->match_cache->counters().ToString().c_str()
+                                             : "match cache: off (--no-share)");
   }
   return 0;
 }
@@ -194,6 +210,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
       app.add_option("--jobs,-j", args->jobs, "parallel SLAM runs (default: all cores)");
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
+      app.add_flag("--no-share", args->no_share,
+                   "do not share scan matches between SLAM runs (same results, slower; for timing comparisons)");
+      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB")
+          ->capture_default_str();
       args->inputs.AddTo(app);
       return [args, &app] { return RunOptimize(*args, app); };
     },

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# End-to-end test of `slamtune optimize` and `slamtune sweep` on the built-in office world:
+# outputs, an exact resume after `kill -9` in the middle of a generation, and input errors.
+# Usage: optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip.
+set -u
+bin=${1:?usage: optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
+[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_opt_cli.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+small=(--population 8 --generations 3 --divisions 3 --seed 5 --jobs 2 --quiet)
+
+# 1. An uninterrupted run writes every output.
+"$bin" optimize --out "$work/whole" "${small[@]}" > "$work/whole.txt" 2>&1 || fail "optimize failed: $(tail -3 "$work/whole.txt")"
+for f in best.yaml results.json report.html evaluations.csv table3_best_worst_params.csv table4_6_objectives.csv \
+         table7_loop_closures.csv table8_loop_scans.csv table9_10_errors.csv maps_side_by_side.png \
+         population_gen1.png population_gen3.png map_recommended.pgm map_recommended.yaml run.sqlite; do
+  [[ -s "$work/whole/$f" ]] || fail "missing output $f"
+done
+for key in recommended knee worst default evaluations cache_hits wall_s; do
+  grep -q "\"$key\"" "$work/whole/results.json" || fail "results.json lacks $key"
+done
+grep -q "loop_search_maximum_distance:" "$work/whole/best.yaml" || fail "best.yaml lacks r"
+grep -q "ros__parameters:" "$work/whole/best.yaml" || fail "best.yaml is not a ROS 2 parameter file"
+
+# 2. kill -9 in the middle of the run, then --resume: the same tables as the uninterrupted run.
+"$bin" optimize --out "$work/cut" "${small[@]}" > "$work/cut.txt" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do  # wait until some evaluations are committed (the WAL grows with each)
+  size=$(stat -c %s "$work/cut/run.sqlite-wal" 2>/dev/null || echo 0)
+  [[ "$size" -gt 60000 ]] && break
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.2
+done
+if kill -0 "$pid" 2>/dev/null; then
+  kill -9 "$pid"; wait "$pid" 2>/dev/null
+  echo "killed the run after its WAL reached $size bytes"
+else
+  fail "the run finished before it could be killed (test did not exercise resume)"
+fi
+"$bin" optimize --resume "$work/cut" --jobs 2 --quiet > "$work/resume.txt" 2>&1 || fail "resume failed: $(tail -3 "$work/resume.txt")"
+for f in table3_best_worst_params.csv table4_6_objectives.csv table7_loop_closures.csv table8_loop_scans.csv \
+         table9_10_errors.csv best.yaml; do
+  cmp -s "$work/whole/$f" "$work/cut/$f" || fail "$f differs between the uninterrupted and the resumed run"
+done
+
+# 3. Bad input: clear errors before any work.
+expect_error() {  # PATTERN CMD...
+  local pattern=$1; shift
+  local out; out=$("$@" 2>&1); local rc=$?
+  [[ $rc -ne 0 ]] || fail "expected failure: $*"
+  grep -q -- "$pattern" <<<"$out" || fail "expected '$pattern' from: $* (got: $out)"
+}
+mkdir -p "$work/notarun"
+expect_error "not a slamtune optimisation folder" "$bin" optimize --resume "$work/notarun"
+expect_error "already holds an optimisation" "$bin" optimize --out "$work/whole" "${small[@]}"
+expect_error "different settings" "$bin" optimize --resume "$work/whole" --seed 6 --population 8 --generations 3 --divisions 3
+expect_error "cannot open" "$bin" optimize "$work/missing.clf" --out "$work/x1"
+printf 'vary:\n  loop_search_maximum_distance: {min: 6, max: 2}\n' > "$work/reversed.yaml"
+expect_error "bounds reversed" "$bin" optimize --space "$work/reversed.yaml" --out "$work/x2"
+printf 'vary:\n  loop_search_maximum_distanse: {min: 2, max: 6}\n' > "$work/unknown.yaml"
+expect_error "loop_search_maximum_distanse" "$bin" optimize --space "$work/unknown.yaml" --out "$work/x3"
+printf 'vary: {}\n' > "$work/empty.yaml"
+expect_error "search space is empty" "$bin" optimize --space "$work/empty.yaml" --out "$work/x4"
+touch "$work/afile"
+expect_error "cannot create output folder" "$bin" optimize --out "$work/afile/sub" "${small[@]}"
+
+# 4. sweep along g at r = 2 (the paper's Figure 14), three values.
+"$bin" sweep --vary g=6:20:7 --fix r=2 --out "$work/sweep" --quiet > "$work/sweep.txt" 2>&1 || fail "sweep failed"
+[[ -s "$work/sweep/sweep.csv" && -s "$work/sweep/sweep.png" ]] || fail "sweep outputs missing"
+[[ $(grep -c "loop_match_minimum_chain_size" "$work/sweep/sweep.csv") -ge 1 ]] || fail "sweep.csv lacks the parameter"
+expect_error "bounds reversed" "$bin" sweep --vary r=6:2 --out "$work/sweep2"
+
+if [[ $failures -gt 0 ]]; then echo "optimize_cli_test: $failures failure(s)"; exit 1; fi
+echo "optimize_cli_test: all checks passed"
