@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Builds slamtune (Release) and runs every benchmark, writing the outputs to runs/bench/.
+# Speed figures are ratios measured side by side in one invocation (e.g. reference matcher vs
+# fast matcher, shared vs one-by-one evaluation). Uses ../shared/datasets when present.
+#   scripts/bench.sh          full set (tens of minutes on 2 cores)
+#   scripts/bench.sh --quick  a few minutes
+set -euo pipefail
+cd "$(dirname "$0")/.."
+quick=0; [[ "${1:-}" == "--quick" ]] && quick=1
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)" --target bench_engine bench_matcher bench_map_quality bench_nsga3_dtlz bench_shared_eval
+out=runs/bench; mkdir -p "$out"
+data=../shared/datasets
+run() { local name=$1; shift; echo "== $name: $*"; "$@" 2>&1 | tee "$out/$name.txt"; }
+run matcher ./build/bench/bench_matcher --benchmark_repetitions=$((quick ? 1 : 3)) --benchmark_report_aggregates_only=true
+run map_quality ./build/bench/bench_map_quality --benchmark_repetitions=$((quick ? 1 : 3)) --benchmark_report_aggregates_only=true
+if [[ $quick -eq 1 ]]; then
+  run engine ./build/bench/bench_engine --dataset mit-csail --world office
+  run nsga3_dtlz ./build/bench/bench_nsga3_dtlz --seeds 3 --generations-scale 0.25
+  run shared_eval_office ./build/bench/bench_shared_eval --quick
+else
+  run engine ./build/bench/bench_engine --dataset intel --world office --repeat 3
+  run nsga3_dtlz ./build/bench/bench_nsga3_dtlz --seeds 20
+  run shared_eval_office ./build/bench/bench_shared_eval
+  [[ -f $data/mit-csail.clf.gz ]] && run shared_eval_csail ./build/bench/bench_shared_eval "$data/mit-csail.clf.gz"
+fi
+echo "outputs in $out/"
