@@ -10,16 +10,10 @@
 namespace slamtune::optim {
 namespace {
 
-struct SlamRun {
-  slam::RunSummary summary;
-  std::vector<io::TimedPose> trajectory;
-  io::MapImage map;
-};
-
 SlamRun RunAndMap(const SlamEvaluationContext& context, const Assignment& assignment) {
   SLAMTUNE_CHECK(context.log != nullptr);
   const slam::MapperParams params = context.ParamsFor(assignment);
-  slam::LogRunner runner(context.log, params);
+  slam::LogRunner runner(context.log, params, context.match_cache);
   runner.RunToEnd();
   SlamRun run;
   run.summary = runner.Summary();
@@ -41,9 +35,9 @@ slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment
   return params;
 }
 
-EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment) {
+EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment, SlamRun* run_out) {
   const auto start = std::chrono::steady_clock::now();
-  const SlamRun run = RunAndMap(context, assignment);
+  SlamRun run = RunAndMap(context, assignment);
   const metrics::MapQuality quality = metrics::ComputeMapQuality(run.map, context.metrics);
 
   EvaluationRecord record;
@@ -67,6 +61,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
     record.relations_used = static_cast<int>(error.relations_used);
   }
   record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (run_out != nullptr) *run_out = std::move(run);
   return record;
 }
 

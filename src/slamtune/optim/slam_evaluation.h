@@ -13,7 +13,9 @@
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_record.h"
+#include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/match_cache.h"
 
 namespace slamtune::optim {
 
@@ -22,12 +24,24 @@ struct SlamEvaluationContext {
   std::vector<io::Relation> relations;  // empty: no ground-truth errors
   slam::MapperParams base;              // parameters not in the assignment
   metrics::MapQualityOptions metrics;
+  // Scan-match results shared by all evaluations of this context (slam/match_cache.h); null:
+  // no sharing. Results are identical either way; only the time changes.
+  std::shared_ptr<slam::MatchCache> match_cache;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;
 };
 
-EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment);
+// What one SLAM run of an evaluation produced.
+struct SlamRun {
+  slam::RunSummary summary;
+  std::vector<io::TimedPose> trajectory;  // one pose per log scan
+  io::MapImage map;                       // occupancy grid of the final poses
+};
+
+// `run` (may be null) receives the SLAM run the record was computed from.
+EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment,
+                              SlamRun* run = nullptr);
 
 // The map of the SLAM run of `assignment` (for the report's figures).
 io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment);

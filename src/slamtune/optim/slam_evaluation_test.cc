@@ -1,0 +1,153 @@
+#include "slamtune/optim/slam_evaluation.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <set>
+#include <string>
+#include <thread>
+
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/sim/simulation.h"
+
+namespace slamtune::optim {
+namespace {
+
+std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+
+// `n` (r, g) sets as the optimiser's initial population spans them: r uniform in [2, 6] m,
+// g an integer in [6, 20], from a fixed seed, plus the base fixed parameters.
+std::vector<Assignment> RandomSets(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> r(2.0, 6.0);
+  std::uniform_int_distribution<int> g(6, 20);
+  std::vector<Assignment> sets;
+  for (int i = 0; i < n; ++i) {
+    sets.push_back({{"loop_search_maximum_distance", r(rng)},
+                    {"loop_match_minimum_chain_size", static_cast<double>(g(rng))},
+                    {"loop_match_minimum_response_coarse", 0.7},
+                    {"loop_match_maximum_variance_coarse", 0.4}});
+  }
+  return sets;
+}
+
+struct Evaluated {
+  EvaluationRecord record;
+  SlamRun run;
+};
+
+// Evaluates every set: without a cache one by one, with a cache on `threads` threads at once.
+std::vector<Evaluated> EvaluateAll(const SlamEvaluationContext& context, const std::vector<Assignment>& sets,
+                                   int threads) {
+  std::vector<Evaluated> out(sets.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < sets.size(); i = next++) out[i].record = EvaluateSlam(context, sets[i], &out[i].run);
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  for (std::thread& t : pool) t.join();
+  return out;
+}
+
+void ExpectIdentical(const Evaluated& a, const Evaluated& b, const std::string& label) {
+  SCOPED_TRACE(label);
+  const std::vector<double> fa = a.record.Objectives();
+  const std::vector<double> fb = b.record.Objectives();
+  ASSERT_EQ(fa.size(), fb.size());
+  for (std::size_t k = 0; k < fa.size(); ++k) EXPECT_EQ(Bits(fa[k]), Bits(fb[k])) << "objective " << k;
+  EXPECT_EQ(Bits(a.record.occupied_ratio_known), Bits(b.record.occupied_ratio_known));
+  EXPECT_EQ(Bits(a.record.corners), Bits(b.record.corners));
+  EXPECT_EQ(Bits(a.record.contours), Bits(b.record.contours));
+  EXPECT_EQ(a.record.nodes, b.record.nodes);
+  EXPECT_EQ(a.record.loop_scans, b.record.loop_scans);
+  // Loop closures: scans, chains and responses.
+  const auto& la = a.run.summary.loop_closures;
+  const auto& lb = b.run.summary.loop_closures;
+  ASSERT_EQ(la.size(), lb.size());
+  for (std::size_t k = 0; k < la.size(); ++k) {
+    EXPECT_EQ(la[k].log_index, lb[k].log_index);
+    EXPECT_EQ(la[k].chain_first, lb[k].chain_first);
+    EXPECT_EQ(la[k].chain_last, lb[k].chain_last);
+    EXPECT_EQ(la[k].linked_to, lb[k].linked_to);
+    EXPECT_EQ(Bits(la[k].coarse_response), Bits(lb[k].coarse_response));
+    EXPECT_EQ(Bits(la[k].fine_response), Bits(lb[k].fine_response));
+    EXPECT_EQ(Bits(la[k].coarse_var_xx), Bits(lb[k].coarse_var_xx));
+  }
+  EXPECT_EQ(a.run.summary.loop_attempts, b.run.summary.loop_attempts);
+  EXPECT_EQ(a.run.summary.edges, b.run.summary.edges);
+  // Every pose, bit for bit.
+  ASSERT_EQ(a.run.trajectory.size(), b.run.trajectory.size());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < a.run.trajectory.size(); ++i) {
+    const Pose2& p = a.run.trajectory[i].pose;
+    const Pose2& q = b.run.trajectory[i].pose;
+    if (Bits(p.x) != Bits(q.x) || Bits(p.y) != Bits(q.y) || Bits(p.theta) != Bits(q.theta)) ++differing;
+  }
+  EXPECT_EQ(differing, 0u) << "poses differing";
+  // The map, pixel for pixel.
+  EXPECT_EQ(a.run.map.width, b.run.map.width);
+  EXPECT_EQ(a.run.map.height, b.run.map.height);
+  EXPECT_EQ(a.run.map.origin, b.run.map.origin);
+  EXPECT_TRUE(a.run.map.pixels == b.run.map.pixels) << "map pixels differ";
+}
+
+// The invariant of the shared cache: a batch evaluated concurrently with it equals the same
+// batch evaluated one by one without it, and the cache did serve matches.
+// `min_loop_lists`: distinct loop-closure lists the sets must produce, so that the check covers
+// runs whose decisions diverge (and stop sharing) part-way.
+void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int sets, unsigned seed,
+                                const std::string& label, std::size_t min_loop_lists) {
+  SlamEvaluationContext plain;
+  plain.log = std::move(log);
+  SlamEvaluationContext shared = plain;
+  shared.match_cache = std::make_shared<slam::MatchCache>();
+  const std::vector<Assignment> batch = RandomSets(sets, seed);
+  const std::vector<Evaluated> without = EvaluateAll(plain, batch, 1);
+  const std::vector<Evaluated> with = EvaluateAll(shared, batch, 3);
+  std::set<std::vector<int>> loop_lists;
+  std::size_t loops = 0;
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    ExpectIdentical(without[i], with[i], label + " set " + std::to_string(i));
+    loop_lists.insert(without[i].record.loop_scans);
+    loops += without[i].record.loop_scans.size();
+  }
+  const slam::MatchCacheCounters c = shared.match_cache->counters();
+  EXPECT_GT(c.hits + c.waits, 0u) << label << ": the cache served nothing";
+  EXPECT_EQ(c.bypassed, 0u);
+  EXPECT_GE(loop_lists.size(), min_loop_lists) << label << ": the sets did not diverge";
+  std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s\n", label.c_str(),
+              plain.log->scans.size(), loops, loop_lists.size(), batch.size(), c.ToString().c_str());
+}
+
+std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::size_t scans) {
+  sim::SimulationOptions o;
+  o.world = world;
+  auto log = std::make_shared<io::LaserLog>(sim::Simulate(o).log);
+  log->scans.resize(std::min(log->scans.size(), scans));
+  return log;
+}
+
+TEST(SlamEvaluationShared, OfficeWorldResultsIdenticalWithTheCache) {
+  CheckSharingChangesNothing(WorldSlice("office", 1200), 6, 11, "office", 3);
+}
+
+TEST(SlamEvaluationShared, CorridorWorldResultsIdenticalWithTheCache) {
+  CheckSharingChangesNothing(WorldSlice("corridor", 100000), 6, 12, "corridor", 1);
+}
+
+TEST(SlamEvaluationShared, MitCsailSliceResultsIdenticalWithTheCache) {
+  const std::filesystem::path path = std::filesystem::path(SLAMTUNE_DATASETS_DIR) / "mit-csail.clf.gz";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "dataset not found: " << path;
+  auto log = std::make_shared<io::LaserLog>(io::ReadCarmenLog(path.string()));
+  log->scans.resize(std::min<std::size_t>(log->scans.size(), 400));
+  CheckSharingChangesNothing(log, 6, 13, "mit-csail", 1);
+}
+
+}  // namespace
+}  // namespace slamtune::optim
