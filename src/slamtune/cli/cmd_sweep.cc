@@ -27,6 +27,8 @@ struct SweepArgs {
   std::string out;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   bool quiet = false;
+  bool no_share = false;       // evaluate without the shared scan-match cache
+  std::size_t share_mb = 512;  // MB, memory budget of the shared scan-match cache
 };
 
 // Short names of the seed paper.
@@ -47,6 +49,16 @@ double ParseNumber(const std::string& text, const std::string& what) {
   } catch (const std::exception&) {
     throw InputError(fmt::format("{}: '{}' is not a number", what, text));
   }
+}
+
+// The scan-match cache shared by all SLAM runs of this command (slam/match_cache.h); null with
+// --no-share. Results are identical either way.
+std::shared_ptr<slam::MatchCache> MakeMatchCache(bool no_share, std::size_t share_mb) {
+  if (no_share) return nullptr;
+  if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
+  slam::MatchCacheOptions options;
+  options.byte_budget = share_mb << 20;
+  return std::make_shared<slam::MatchCache>(options);
 }
 
 int RunSweep(const SweepArgs& args) {
@@ -74,6 +86,7 @@ int RunSweep(const SweepArgs& args) {
   context->log = inputs.log;
   context->relations = inputs.relations;
   context->base = inputs.base;
+  context->match_cache = MakeMatchCache(args.no_share, args.share_mb);
   optim::Assignment fixed;
   for (const auto& f : args.fix) {
     const auto e = f.find('=');
@@ -121,6 +134,8 @@ int RunSweep(const SweepArgs& args) {
       std::printf("%s\n", p.record.status == "ok" ? "" : ("  FAILED: " + p.record.reason).c_str());
     }
     std::printf("wrote %zu files to %s\n", summary.files.size(), args.out.c_str());
+    std::printf("%s\n", context->match_cache ? context->match_cache->counters().ToString().c_str()
+                                             : "match cache: off (--no-share)");
   }
   return summary.failed > 0 ? 1 : 0;
 }
@@ -138,6 +153,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--out", args->out, "output folder")->required();
       app.add_option("--jobs,-j", args->jobs, "parallel SLAM runs (default: all cores)");
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
+      app.add_flag("--no-share", args->no_share,
+                   "do not share scan matches between SLAM runs (same results, slower; for timing comparisons)");
+      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB")
+          ->capture_default_str();
       args->inputs.AddTo(app);
       return [args] { return RunSweep(*args); };
     },

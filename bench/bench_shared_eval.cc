@@ -1,0 +1,197 @@
+// Shared scan matches (slam/match_cache.h) on an optimiser-sized batch: N parameter sets drawn
+// as `slamtune optimize` draws its initial population (r uniform in [2, 6] m, integer g in
+// [6, 20], pagmo's generator from --seed) are evaluated (a) each on its own, without the
+// cache, and (b) as one batch sharing the cache, both on --jobs threads. Checks that every
+// result (objectives, loop closures, trajectory bits, map pixels) is identical, then prints
+// wall times, the speed-up, the cache counters and peak RSS (/proc/self/status VmHWM).
+//
+//   bench_shared_eval [LOG] [--quick] [--sets N] [--jobs J] [--seed S]
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <pagmo/problem.hpp>
+#include <pagmo/rng.hpp>
+#include <pagmo/utils/generic.hpp>
+
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "slamtune/common/error.h"
+#include "slamtune/io/carmen_reader.h"
+#include "slamtune/optim/search_space.h"
+#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/tuning_problem.h"
+#include "slamtune/sim/simulation.h"
+
+namespace {
+
+using slamtune::optim::Assignment;
+
+// FNV-1a over 64-bit words: a digest of everything a run produced, bit-exact.
+struct Digest {
+  std::uint64_t h = 1469598103934665603ULL;
+  void Add(std::uint64_t w) {
+    for (int k = 0; k < 8; ++k) {
+      h ^= (w >> (8 * k)) & 0xff;
+      h *= 1099511628211ULL;
+    }
+  }
+  void Add(double v) { Add(std::bit_cast<std::uint64_t>(v)); }
+};
+
+std::uint64_t DigestOf(const slamtune::optim::EvaluationRecord& r, const slamtune::optim::SlamRun& run) {
+  Digest d;
+  for (double f : r.Objectives()) d.Add(f);
+  d.Add(r.occupied_ratio_known);
+  d.Add(static_cast<std::uint64_t>(r.nodes));
+  for (const auto& l : run.summary.loop_closures) {
+    d.Add(static_cast<std::uint64_t>(l.log_index));
+    d.Add(static_cast<std::uint64_t>(l.chain_first));
+    d.Add(l.coarse_response);
+    d.Add(l.fine_response);
+  }
+  for (const auto& p : run.trajectory) {
+    d.Add(p.pose.x);
+    d.Add(p.pose.y);
+    d.Add(p.pose.theta);
+  }
+  d.Add(static_cast<std::uint64_t>(run.map.width));
+  d.Add(static_cast<std::uint64_t>(run.map.height));
+  for (std::uint8_t px : run.map.pixels) d.Add(static_cast<std::uint64_t>(px));
+  return d.h;
+}
+
+struct BatchResult {
+  std::vector<std::uint64_t> digests;
+  std::vector<int> loops;
+  double wall_s = 0.0;
+};
+
+// Evaluates `sets` on `jobs` threads (each thread takes the next set), as BatchEvaluator does.
+BatchResult Evaluate(const slamtune::optim::SlamEvaluationContext& context, const std::vector<Assignment>& sets,
+                     int jobs) {
+  BatchResult out;
+  out.digests.resize(sets.size());
+  out.loops.resize(sets.size());
+  std::atomic<std::size_t> next{0};
+  const auto start = std::chrono::steady_clock::now();
+  auto work = [&] {
+    for (std::size_t i = next++; i < sets.size(); i = next++) {
+      slamtune::optim::SlamRun run;
+      const auto record = slamtune::optim::EvaluateSlam(context, sets[i], &run);
+      out.digests[i] = DigestOf(record, run);
+      out.loops[i] = record.loop_closures;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < jobs; ++t) pool.emplace_back(work);
+  for (std::thread& t : pool) t.join();
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::string ProcStatus(const std::string& field) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.rfind(field + ":", 0) == 0) {
+      const auto p = line.find_first_not_of(" \t", field.size() + 1);
+      return p == std::string::npos ? "" : line.substr(p);
+    }
+  }
+  return "?";
+}
+
+int Run(int argc, char** argv) {
+  CLI::App app{"Wall time of a batch of SLAM evaluations with and without shared scan matches"};
+  std::string log_path;
+  bool quick = false;
+  int sets = 66;
+  int jobs = 2;
+  unsigned seed = 1;
+  app.add_option("LOG", log_path, "CARMEN log; none: the built-in office world");
+  app.add_flag("--quick", quick, "8 sets at most and the first 500 scans of the log");
+  app.add_option("--sets", sets, "parameter sets (the optimiser's population)")->capture_default_str();
+  app.add_option("--jobs,-j", jobs, "parallel SLAM runs in both modes")->capture_default_str();
+  app.add_option("--seed", seed, "seed of the drawn sets")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  if (sets < 1) throw slamtune::InputError(fmt::format("--sets = {} is out of range: must be >= 1", sets));
+  if (jobs < 1) throw slamtune::InputError(fmt::format("--jobs = {} is out of range: must be >= 1", jobs));
+  if (quick) sets = std::min(sets, 8);
+
+  // The inputs as `slamtune optimize` loads them without options (cli/tuning_inputs.cc): the
+  // default parameters; no log: the office world, seed 1, with its true-trajectory relations.
+  auto log = std::make_shared<slamtune::io::LaserLog>();
+  std::vector<slamtune::io::Relation> relations;
+  std::string label = log_path;
+  if (log_path.empty()) {
+    slamtune::sim::SimulationOptions sim_options;
+    sim_options.world = "office";
+    slamtune::sim::Simulation simulation = slamtune::sim::Simulate(sim_options);
+    *log = std::move(simulation.log);
+    relations = std::move(simulation.relations);
+    label = "built-in world office (seed 1)";
+  } else {
+    *log = slamtune::io::ReadCarmenLog(log_path);
+  }
+  if (quick && log->scans.size() > 500) {
+    log->scans.resize(500);
+    relations.clear();  // they refer to the whole log
+  }
+
+  // The optimiser's initial population (optimizer.cc InitialPopulation).
+  const slamtune::optim::SearchSpace space = slamtune::optim::SearchSpace::PaperDefault();
+  // The problem is only asked for its bounds here; its evaluator is never called.
+  auto unused = std::make_shared<slamtune::optim::BatchEvaluator>(
+      [](const Assignment&) -> slamtune::optim::EvaluationRecord { throw std::logic_error("not used"); }, nullptr, 1);
+  const pagmo::problem problem{slamtune::optim::TuningProblem(space, unused)};
+  pagmo::detail::random_engine_type rng(seed);
+  std::vector<Assignment> batch;
+  for (int i = 0; i < sets; ++i) batch.push_back(space.Assign(pagmo::random_decision_vector(problem, rng)));
+
+  slamtune::optim::SlamEvaluationContext plain;
+  plain.log = log;
+  plain.relations = relations;
+  for (const auto& [name, value] : space.fixed) slamtune::slam::SetNumeric(plain.base, name, value);
+  slamtune::optim::SlamEvaluationContext shared = plain;
+  shared.match_cache = std::make_shared<slamtune::slam::MatchCache>();
+
+  std::printf("%s: %zu scans, %d sets, %d jobs, seed %u\n", label.c_str(), log->scans.size(), sets,
+              jobs, seed);
+  std::fflush(stdout);
+  const BatchResult a = Evaluate(plain, batch, jobs);
+  const std::string hwm_a = ProcStatus("VmHWM");
+  std::printf("(a) without the cache: %.2f s (peak RSS so far %s)\n", a.wall_s, hwm_a.c_str());
+  std::fflush(stdout);
+  const BatchResult b = Evaluate(shared, batch, jobs);
+  std::printf("(b) shared cache:      %.2f s (peak RSS so far %s)\n", b.wall_s, ProcStatus("VmHWM").c_str());
+  int differing = 0;
+  int loops_min = 1 << 30, loops_max = 0;
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    if (a.digests[i] != b.digests[i]) ++differing;
+    loops_min = std::min(loops_min, a.loops[i]);
+    loops_max = std::max(loops_max, a.loops[i]);
+  }
+  std::printf("speed-up (a)/(b): %.2fx; loop closures per set %d..%d\n", a.wall_s / b.wall_s, loops_min, loops_max);
+  std::printf("%s\n", shared.match_cache->counters().ToString().c_str());
+  std::printf("results identical: %s (%d of %d sets differ)\n", differing == 0 ? "yes" : "NO", differing, sets);
+  return differing == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return Run(argc, argv);
+  } catch (const slamtune::InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+}
