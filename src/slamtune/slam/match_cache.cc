@@ -130,9 +130,15 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
     ++counters_.misses;
     Entry entry;
     entry.result = promise.get_future().share();
-    entry.readings.reserve(base_scans.size() + 1);
-    entry.readings.push_back(scan.ranges_ptr());
-    for (const LaserScan* b : base_scans) entry.readings.push_back(b->ranges_ptr());
+    // One holder per distinct owner: readings of one log all alias the log, so this is usually one.
+    auto hold = [&entry](const std::shared_ptr<const std::vector<double>>& r) {
+      for (const auto& held : entry.readings) {
+        if (!held.owner_before(r) && !r.owner_before(held)) return;
+      }
+      entry.readings.push_back(r);
+    };
+    hold(scan.ranges_ptr());
+    for (const LaserScan* b : base_scans) hold(b->ranges_ptr());
     entry.sequence = sequence = next_sequence_++;
     entry.bytes = key.capacity() * sizeof(std::uint64_t) + entry.readings.capacity() * sizeof(entry.readings[0]) + kEntryOverheadBytes;
     counters_.bytes += entry.bytes;

@@ -12,7 +12,7 @@
 //     its corrected and sensor poses and of its laser geometry,
 //   - the base scans in order: log index, readings address and the bits of the corrected pose
 //     of each (their geometry must equal the scan's, otherwise the call bypasses the cache).
-// An entry keeps the readings it names alive, so an address in a key cannot be reused by other
+// An entry keeps the readings it names alive (holding their owner), so an address in a key cannot be reused by other
 // data while the entry exists. A cache must only be shared by runs of the same log: log indices
 // of different logs mean different scans (the readings address tells them apart anyway).
 //
@@ -87,7 +87,8 @@ class MatchCache {
   };
   struct Entry {
     std::shared_future<MatchResult> result;
-    std::vector<std::shared_ptr<const std::vector<double>>> readings;  // keeps keyed addresses valid
+    // Keeps the keyed readings addresses valid: one holder per distinct owner (the log).
+    std::vector<std::shared_ptr<const std::vector<double>>> readings;
     std::uint64_t sequence = 0;  // insertion order, for eviction
     std::size_t bytes = 0;
   };
