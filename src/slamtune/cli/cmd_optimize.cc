@@ -1,17 +1,20 @@
 // `slamtune optimize [LOG] --out DIR`: NSGA-III over the loop-closure parameters, scored by
-// the map objectives of each SLAM run, with a report an engineer can act on.
+// the map objectives of each SLAM run, with a report an engineer can act on. Under mpirun,
+// rank 0 optimises and writes; the other ranks evaluate (optim/mpi_evaluation.h).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/optimizer.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/report/optimize_report.h"
@@ -66,7 +69,41 @@ std::shared_ptr<slam::MatchCache> MakeMatchCache(bool no_share, std::size_t shar
   return std::make_shared<slam::MatchCache>(options);
 }
 
+// What every rank evaluates with: the loaded inputs, the search space's fixed values applied to
+// the base parameters, and the shared scan-match cache.
+std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
+                                                                    const std::map<std::string, double>& fixed,
+                                                                    bool no_share, std::size_t share_mb) {
+  auto context = std::make_shared<optim::SlamEvaluationContext>();
+  context->log = inputs.log;
+  context->relations = inputs.relations;
+  context->base = inputs.base;
+  context->match_cache = MakeMatchCache(no_share, share_mb);
+  for (const auto& [name, value] : fixed) slam::SetNumeric(context->base, name, value);
+  return context;
+}
+
+// A worker rank under mpirun: evaluates what rank 0 sends, with the inputs rank 0 loaded.
+int ServeAsWorker(const optim::MpiWorld& world) {
+  optim::ServeEvaluations(world, [](const nlohmann::json& setup) -> optim::EvaluateFn {
+    const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), true);
+    auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(),
+                                         setup.at("no_share").get<bool>(), setup.at("share_mb").get<std::size_t>());
+    return [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
+  });
+  return 0;
+}
+
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
+  optim::MpiWorld world;
+  if (world.rank() > 0) return ServeAsWorker(world);
+  // Rank 0 of several: the workers wait for the setup; any error below stops them (destructor).
+  std::optional<optim::MpiDispatcher> workers;
+  if (world.distributed()) {
+    workers.emplace(world);
+    // One rank per core: rank 0 evaluates on one thread unless --jobs says otherwise.
+    if (app.get_option("--jobs")->count() == 0) args.jobs = 1;
+  }
   const bool resume = !args.resume.empty();
   if (resume && !args.out.empty() && args.out != args.resume) {
     throw InputError("give either --out DIR or --resume DIR, not both with different folders");
@@ -125,12 +162,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     slam::SetNumeric(probe, d.name, d.lower);  // InputError for unknown names or bad bounds
     slam::SetNumeric(probe, d.name, d.upper);
   }
-  auto context = std::make_shared<optim::SlamEvaluationContext>();
-  context->log = inputs.log;
-  context->relations = inputs.relations;
-  context->base = inputs.base;
-  context->match_cache = MakeMatchCache(args.no_share, args.share_mb);
-  for (const auto& [name, value] : settings.space.fixed) slam::SetNumeric(context->base, name, value);
+  auto context = MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
   for (const auto& d : settings.space.dimensions) {
     settings.default_assignment[d.name] = slam::GetNumeric(slam::MapperParams{}, d.name);
   }
@@ -142,25 +174,36 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);
   }
   EnsureWritableDir(dir);
+  if (workers) {
+    workers->Setup({{"inputs", args.inputs.ToJson()},
+                    {"fixed", settings.space.fixed},
+                    {"no_share", args.no_share},
+                    {"share_mb", args.share_mb}});
+  }
 
   optim::EvaluationStore store(db_path);
   if (!resume) store.SetMeta("invocation", InvocationJson(args));
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
   const std::size_t total = settings.population * (settings.generations + 1);
-  progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {} jobs, "
+  const std::string parallelism =
+      workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
+              : fmt::format("{} jobs", args.jobs);
+  progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
                               "seed {}; results in {}",
                               settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label,
-                              settings.population, settings.generations, total, args.jobs, settings.seed, dir),
+                              settings.population, settings.generations, total, parallelism, settings.seed, dir),
                   true);
   progress.Finish();
 
   optim::BatchEvaluator evaluator(
       [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); }, &store, args.jobs);
+  if (workers) evaluator.SetRemote(&*workers);
   optim::OptimizeHooks hooks;
   hooks.progress = [&progress](const std::string& line, bool force) { progress.Update(line, force); };
   hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
   optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
   progress.Finish();
+  if (workers) workers->Stop();  // the report's maps are rendered here
 
   const auto* best = result.Find("recommended");
   slam::MapperParams best_params = context->ParamsFor(best->record.params);
@@ -187,6 +230,9 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     }
     std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml and %zu report files (report.html, results.json, tables, maps, figures) to %s\n",
                 result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
+    if (workers) {
+      std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
+    }
     std::printf("%s\n", context->match_cache ? context->match_cache->counters().ToString().c_str()
                                              : "match cache: off (--no-share)");
   }
@@ -208,7 +254,8 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
           ->capture_default_str();
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
-      app.add_option("--jobs,-j", args->jobs, "parallel SLAM runs (default: all cores)");
+      app.add_option("--jobs,-j", args->jobs,
+                     "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs one)");
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
       app.add_flag("--no-share", args->no_share,
                    "do not share scan matches between SLAM runs (same results, slower; for timing comparisons)");

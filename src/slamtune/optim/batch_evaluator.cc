@@ -10,22 +10,11 @@
 
 namespace slamtune::optim {
 
-BatchEvaluator::BatchEvaluator(EvaluateFn evaluate, EvaluationStore* store, int jobs)
-    : evaluate_(std::move(evaluate)), store_(store), jobs_(jobs) {
-  SLAMTUNE_CHECK(evaluate_ != nullptr);
-  if (jobs_ < 1) throw InputError("--jobs must be >= 1, got " + std::to_string(jobs_));
-}
-
-BatchEvaluatorStats BatchEvaluator::stats() const {
-  std::lock_guard guard(mutex_);
-  return stats_;
-}
-
-EvaluationRecord BatchEvaluator::RunOne(const Assignment& assignment, const std::string& key) {
+EvaluationRecord RunGuarded(const EvaluateFn& evaluate, const Assignment& assignment, const std::string& key) {
   const auto start = std::chrono::steady_clock::now();
   EvaluationRecord record;
   try {
-    record = evaluate_(assignment);
+    record = evaluate(assignment);
     record.key = key;
     record.params = assignment;
     for (double v : record.Objectives()) {
@@ -41,6 +30,17 @@ EvaluationRecord BatchEvaluator::RunOne(const Assignment& assignment, const std:
     record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   return record;
+}
+
+BatchEvaluator::BatchEvaluator(EvaluateFn evaluate, EvaluationStore* store, int jobs)
+    : evaluate_(std::move(evaluate)), store_(store), jobs_(jobs) {
+  SLAMTUNE_CHECK(evaluate_ != nullptr);
+  if (jobs_ < 1) throw InputError("--jobs must be >= 1, got " + std::to_string(jobs_));
+}
+
+BatchEvaluatorStats BatchEvaluator::stats() const {
+  std::lock_guard guard(mutex_);
+  return stats_;
 }
 
 std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignment>& batch) {
@@ -72,33 +72,61 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
 
   std::vector<EvaluationRecord> fresh(todo.size());
   std::atomic<std::size_t> next{0};
+  // Bookkeeping of one finished evaluation, local or remote.
+  auto finish = [&](std::size_t t, EvaluationRecord record, bool remote) {
+    const std::size_t i = todo[t];
+    fresh[t] = std::move(record);
+    if (store_) store_->Put(fresh[t]);  // committed at once: an interruption loses nothing finished
+    BatchEvaluatorStats snapshot;
+    {
+      std::lock_guard guard(mutex_);
+      memory_[keys[i]] = fresh[t];
+      ++stats_.evaluated;
+      if (remote) ++stats_.remote;
+      if (fresh[t].status != "ok") ++stats_.failed;
+      stats_.busy_s += fresh[t].wall_s;
+      snapshot = stats_;
+    }
+    // Outside the lock: the callback may ask for stats().
+    if (progress_) {
+      std::lock_guard guard(progress_mutex_);
+      progress_(fresh[t], snapshot);
+    }
+  };
   auto worker = [&] {
     for (std::size_t t = next++; t < todo.size(); t = next++) {
       const std::size_t i = todo[t];
-      fresh[t] = RunOne(batch[i], keys[i]);
-      if (store_) store_->Put(fresh[t]);  // committed at once: an interruption loses nothing finished
-      BatchEvaluatorStats snapshot;
-      {
-        std::lock_guard guard(mutex_);
-        memory_[keys[i]] = fresh[t];
-        ++stats_.evaluated;
-        if (fresh[t].status != "ok") ++stats_.failed;
-        stats_.busy_s += fresh[t].wall_s;
-        snapshot = stats_;
-      }
-      // Outside the lock: the callback may ask for stats().
-      if (progress_) {
-        std::lock_guard guard(progress_mutex_);
-        progress_(fresh[t], snapshot);
-      }
+      finish(t, RunGuarded(evaluate_, batch[i], keys[i]), false);
     }
   };
+  const bool use_remote = remote_ != nullptr && remote_->slots() > 0 && !todo.empty();
+  // With remote slots the calling thread drives them, so local threads need not cover the batch.
   const int threads = std::min<int>(jobs_, static_cast<int>(todo.size()));
-  if (threads <= 1) {
+  if (threads <= 1 && !use_remote) {
     worker();
   } else {
     std::vector<std::thread> pool;
     for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+    if (use_remote) {
+      try {
+        remote_->Drain(
+            [&]() -> std::optional<RemoteEvaluators::Task> {
+              const std::size_t t = next++;
+              if (t >= todo.size()) return std::nullopt;
+              return RemoteEvaluators::Task{t, batch[todo[t]]};
+            },
+            [&](std::size_t t, EvaluationRecord record) {
+              SLAMTUNE_CHECK(t < todo.size());
+              record.key = keys[todo[t]];
+              record.params = batch[todo[t]];
+              finish(t, std::move(record), true);
+            });
+      } catch (...) {
+        next = todo.size();  // local threads stop taking work; finished ones are stored
+        for (auto& th : pool) th.join();
+        throw;
+      }
+    }
     for (auto& th : pool) th.join();
   }
   for (std::size_t t = 0; t < todo.size(); ++t) known[keys[todo[t]]] = fresh[t];
