@@ -85,6 +85,9 @@ expect_error "loop_match_minimum_chain_size = 0 is out of range" "$log" --out "$
   --set loop_match_minimum_chain_size=0
 expect_error "unknown preset 'cartographer'" "$log" --out "$work/e3" --preset cartographer
 expect_error "no_such.clf" "$work/no_such.clf" --out "$work/e4"
+# Every reading a no-return (NaN, inf, negative, at the maximum): a clear error, not an empty map.
+printf 'FLASER 2 1.0 nan 0 0 0 0 0 0 1.0 host 1.0\nFLASER 2 inf -1 0.1 0 0 0.1 0 0 1.2 host 1.2\n' > "$work/noreturns.clf"
+expect_error "nothing to map" "$work/noreturns.clf" --out "$work/e5"
 
 # 5. A short slice of a real dataset, with its relations, when available.
 if [[ -n "$datasets" && -f "$datasets/aces.clf.gz" ]]; then

@@ -118,6 +118,12 @@ int Run(const RunArgs& args) {
   const io::MapImage map =
       slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid_options)
           .ToMapImage();
+  if (map.width <= 0 || map.height <= 0) {
+    throw InputError(args.log, 0,
+                     fmt::format("nothing to map: no reading of the {} processed scans lies within the range "
+                                 "threshold ({} m); are all readings no-returns?",
+                                 runner.mapper().scans().size(), runner.mapper().range_threshold()));
+  }
   io::WriteMapServer(map, file("map.yaml"));
   io::WritePng(map, file("map.png"));
   const metrics::MapQuality quality = metrics::ComputeMapQuality(map);
