@@ -59,16 +59,6 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed}};
 }
 
-// The scan-match cache shared by all SLAM runs of this command (slam/match_cache.h); null with
-// --no-share. Results are identical either way.
-std::shared_ptr<slam::MatchCache> MakeMatchCache(bool no_share, std::size_t share_mb) {
-  if (no_share) return nullptr;
-  if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
-  slam::MatchCacheOptions options;
-  options.byte_budget = share_mb << 20;
-  return std::make_shared<slam::MatchCache>(options);
-}
-
 // What every rank evaluates with: the loaded inputs, the search space's fixed values applied to
 // the base parameters, and the shared scan-match cache.
 std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
@@ -78,7 +68,7 @@ std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const Tuning
   context->log = inputs.log;
   context->relations = inputs.relations;
   context->base = inputs.base;
-  context->match_cache = MakeMatchCache(no_share, share_mb);
+  ShareWork(*context, no_share, share_mb);
   for (const auto& [name, value] : fixed) slam::SetNumeric(context->base, name, value);
   return context;
 }
@@ -233,8 +223,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     if (workers) {
       std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
     }
-    std::printf("%s\n", context->match_cache ? context->match_cache->counters().ToString().c_str()
-                                             : "match cache: off (--no-share)");
+    std::printf("%s\n", SharedWorkReport(*context).c_str());
   }
   return 0;
 }
@@ -258,8 +247,8 @@ const SubcommandRegistrar kRegistrar{{
                      "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs one)");
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
       app.add_flag("--no-share", args->no_share,
-                   "do not share scan matches between SLAM runs (same results, slower; for timing comparisons)");
-      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB")
+                   "do not share scan matches and map scores between SLAM runs (same results, slower; for timing comparisons)");
+      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (map scores get a quarter more)")
           ->capture_default_str();
       args->inputs.AddTo(app);
       return [args, &app] { return RunOptimize(*args, app); };

@@ -51,16 +51,6 @@ double ParseNumber(const std::string& text, const std::string& what) {
   }
 }
 
-// The scan-match cache shared by all SLAM runs of this command (slam/match_cache.h); null with
-// --no-share. Results are identical either way.
-std::shared_ptr<slam::MatchCache> MakeMatchCache(bool no_share, std::size_t share_mb) {
-  if (no_share) return nullptr;
-  if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
-  slam::MatchCacheOptions options;
-  options.byte_budget = share_mb << 20;
-  return std::make_shared<slam::MatchCache>(options);
-}
-
 int RunSweep(const SweepArgs& args) {
   // --vary NAME=LO:HI[:STEP]
   const auto eq = args.vary.find('=');
@@ -86,7 +76,7 @@ int RunSweep(const SweepArgs& args) {
   context->log = inputs.log;
   context->relations = inputs.relations;
   context->base = inputs.base;
-  context->match_cache = MakeMatchCache(args.no_share, args.share_mb);
+  ShareWork(*context, args.no_share, args.share_mb);
   optim::Assignment fixed;
   for (const auto& f : args.fix) {
     const auto e = f.find('=');
@@ -134,8 +124,7 @@ int RunSweep(const SweepArgs& args) {
       std::printf("%s\n", p.record.status == "ok" ? "" : ("  FAILED: " + p.record.reason).c_str());
     }
     std::printf("wrote %zu files to %s\n", summary.files.size(), args.out.c_str());
-    std::printf("%s\n", context->match_cache ? context->match_cache->counters().ToString().c_str()
-                                             : "match cache: off (--no-share)");
+    std::printf("%s\n", SharedWorkReport(*context).c_str());
   }
   return summary.failed > 0 ? 1 : 0;
 }
@@ -155,7 +144,7 @@ const SubcommandRegistrar kRegistrar{{
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
       app.add_flag("--no-share", args->no_share,
                    "do not share scan matches between SLAM runs (same results, slower; for timing comparisons)");
-      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB")
+      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (map scores get a quarter more)")
           ->capture_default_str();
       args->inputs.AddTo(app);
       return [args] { return RunSweep(*args); };

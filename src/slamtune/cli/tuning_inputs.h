@@ -13,6 +13,7 @@
 
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/relations.h"
+#include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/slam/mapper_params.h"
 
 namespace slamtune::cli {
@@ -43,5 +44,12 @@ struct TuningInputs {
 
 // Loads and validates everything; throws InputError naming the file and problem.
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet);
+
+// The work shared by all SLAM runs of one command (--no-share turns it off; results are
+// identical either way): scan matches (slam/match_cache.h, budget share_mb MB) and map scores
+// of final states (optim/map_score_cache.h, budget share_mb / 4 MB). InputError for share_mb 0.
+void ShareWork(optim::SlamEvaluationContext& context, bool no_share, std::size_t share_mb);
+// One line per cache with its counters, or that sharing was off.
+std::string SharedWorkReport(const optim::SlamEvaluationContext& context);
 
 }  // namespace slamtune::cli

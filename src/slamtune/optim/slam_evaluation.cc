@@ -1,6 +1,7 @@
 #include "slamtune/optim/slam_evaluation.h"
 
 #include <chrono>
+#include <optional>
 
 #include "slamtune/common/error.h"
 #include "slamtune/metrics/gt_error.h"
@@ -10,21 +11,25 @@
 namespace slamtune::optim {
 namespace {
 
-SlamRun RunAndMap(const SlamEvaluationContext& context, const Assignment& assignment) {
-  SLAMTUNE_CHECK(context.log != nullptr);
-  const slam::MapperParams params = context.ParamsFor(assignment);
-  slam::LogRunner runner(context.log, params, context.match_cache);
-  runner.RunToEnd();
-  SlamRun run;
-  run.summary = runner.Summary();
-  run.trajectory = runner.Trajectory();
+slam::OccupancyGridOptions GridOptions(const slam::MapperParams& params) {
   slam::OccupancyGridOptions grid;
   grid.resolution = params.resolution;
   grid.min_pass_through = params.min_pass_through;
   grid.occupancy_threshold = params.occupancy_threshold;
-  run.map = slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid)
-                .ToMapImage();
-  return run;
+  return grid;
+}
+
+io::MapImage MapOf(const slam::LogRunner& runner, const slam::MapperParams& params) {
+  return slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()),
+                                        GridOptions(params))
+      .ToMapImage();
+}
+
+slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
+  SLAMTUNE_CHECK(context.log != nullptr);
+  slam::LogRunner runner(context.log, params, context.match_cache);
+  runner.RunToEnd();
+  return runner;
 }
 
 }  // namespace
@@ -37,8 +42,27 @@ slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment
 
 EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment, SlamRun* run_out) {
   const auto start = std::chrono::steady_clock::now();
-  SlamRun run = RunAndMap(context, assignment);
-  const metrics::MapQuality quality = metrics::ComputeMapQuality(run.map, context.metrics);
+  const slam::MapperParams params = context.ParamsFor(assignment);
+  const slam::LogRunner runner = RunToEnd(context, params);
+  SlamRun run;
+  run.summary = runner.Summary();
+  run.trajectory = runner.Trajectory();
+  // The map and its scores, or those of the same final state scored before (run_out wants the map).
+  std::optional<MapScores> scores;
+  std::vector<std::uint64_t> key;
+  const bool use_cache = context.map_scores != nullptr && run_out == nullptr;
+  if (use_cache) {
+    key = MapScoreCache::KeyOf(params, std::span<const slam::LaserScan>(runner.mapper().scans()));
+    scores = context.map_scores->Find(key);
+  }
+  if (!scores) {
+    run.map = MapOf(runner, params);
+    scores.emplace();
+    scores->quality = metrics::ComputeMapQuality(run.map, context.metrics);
+    if (!context.relations.empty()) scores->error = metrics::ComputeGtError(run.trajectory, context.relations);
+    if (use_cache) context.map_scores->Insert(std::move(key), *scores);
+  }
+  const metrics::MapQuality& quality = scores->quality;
 
   EvaluationRecord record;
   record.params = assignment;
@@ -52,7 +76,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   record.loop_closures = static_cast<int>(run.summary.loop_closures.size());
   for (const auto& loop : run.summary.loop_closures) record.loop_scans.push_back(loop.log_index);
   if (!context.relations.empty()) {
-    const metrics::GtError error = metrics::ComputeGtError(run.trajectory, context.relations);
+    const metrics::GtError& error = scores->error;
     record.has_gt = error.relations_used > 0;
     record.trans_mean_m = error.trans_mean_m;
     record.trans_std_m = error.trans_std_m;
@@ -66,7 +90,8 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
 }
 
 io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {
-  return RunAndMap(context, assignment).map;
+  const slam::MapperParams params = context.ParamsFor(assignment);
+  return MapOf(RunToEnd(context, params), params);
 }
 
 }  // namespace slamtune::optim

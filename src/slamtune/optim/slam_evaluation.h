@@ -13,6 +13,7 @@
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_record.h"
+#include "slamtune/optim/map_score_cache.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/match_cache.h"
@@ -27,6 +28,9 @@ struct SlamEvaluationContext {
   // Scan-match results shared by all evaluations of this context (slam/match_cache.h); null:
   // no sharing. Results are identical either way; only the time changes.
   std::shared_ptr<slam::MatchCache> match_cache;
+  // Map scores of final states already scored (map_score_cache.h); null: every run builds and
+  // scores its map. Results are identical either way.
+  std::shared_ptr<MapScoreCache> map_scores;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;

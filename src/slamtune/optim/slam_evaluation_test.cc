@@ -97,6 +97,21 @@ void ExpectIdentical(const Evaluated& a, const Evaluated& b, const std::string& 
   EXPECT_TRUE(a.run.map.pixels == b.run.map.pixels) << "map pixels differ";
 }
 
+void ExpectSameRecord(const EvaluationRecord& a, const EvaluationRecord& b, const std::string& label) {
+  SCOPED_TRACE(label);
+  const std::vector<double> fa = a.Objectives(), fb = b.Objectives();
+  for (std::size_t k = 0; k < fa.size(); ++k) EXPECT_EQ(Bits(fa[k]), Bits(fb[k])) << "objective " << k;
+  EXPECT_EQ(Bits(a.occupied_ratio_known), Bits(b.occupied_ratio_known));
+  EXPECT_EQ(Bits(a.corners), Bits(b.corners));
+  EXPECT_EQ(Bits(a.contours), Bits(b.contours));
+  EXPECT_EQ(a.nodes, b.nodes);
+  EXPECT_EQ(a.loop_scans, b.loop_scans);
+  EXPECT_EQ(a.has_gt, b.has_gt);
+  EXPECT_EQ(Bits(a.trans_mean_m), Bits(b.trans_mean_m));
+  EXPECT_EQ(Bits(a.rot_std_deg), Bits(b.rot_std_deg));
+  EXPECT_EQ(a.relations_used, b.relations_used);
+}
+
 // The invariant of the shared cache: a batch evaluated concurrently with it equals the same
 // batch evaluated one by one without it, and the cache did serve matches.
 // `min_loop_lists`: distinct loop-closure lists the sets must produce, so that the check covers
@@ -121,6 +136,27 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   EXPECT_GT(c.hits + c.waits, 0u) << label << ": the cache served nothing";
   EXPECT_EQ(c.bypassed, 0u);
   EXPECT_GE(loop_lists.size(), min_loop_lists) << label << ": the sets did not diverge";
+
+  // Map scores shared too (the optimiser's path: records only). Twice, so that the second pass
+  // is served from the map-score cache entirely.
+  shared.map_scores = std::make_shared<MapScoreCache>();
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<EvaluationRecord> records(batch.size());
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t i = next++; i < batch.size(); i = next++) records[i] = EvaluateSlam(shared, batch[i]);
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < 3; ++t) pool.emplace_back(work);
+    for (std::thread& t : pool) t.join();
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      ExpectSameRecord(without[i].record, records[i], label + " map scores pass " + std::to_string(pass) + " set " +
+                                                          std::to_string(i));
+    }
+  }
+  const MapScoreCacheCounters m = shared.map_scores->counters();
+  EXPECT_GE(m.hits, batch.size()) << label << ": the second pass was not served from the map-score cache";
+  EXPECT_LE(m.entries, batch.size());
   std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s\n", label.c_str(),
               plain.log->scans.size(), loops, loop_lists.size(), batch.size(), c.ToString().c_str());
 }

@@ -1,0 +1,74 @@
+// Map scores shared by the SLAM runs of one evaluation context: runs whose loop-closure
+// decisions coincide end in bit-identical final poses, so their maps, map metrics and
+// ground-truth errors are the same. After its SLAM run, an evaluation looks its final state up
+// here; on a hit it skips the occupancy grid (Karto's ray tracing of every reading, §8), the
+// three metrics and the relation errors, which together cost about half of a run whose scan
+// matches were all served by the MatchCache.
+//
+// Exactness, as in slam/match_cache.h: an entry is keyed by everything the scores depend on,
+// compared word for word (the hash only picks the bucket): every mapper parameter (name and
+// value bits; this covers the grid resolution, min_pass_through, occupancy_threshold and the
+// range settings), and for each processed scan its log index and the bits of its corrected
+// pose. The log, its relations and the metric options are fixed per context; use one cache per
+// SlamEvaluationContext.
+//
+// Thread-safe. Two runs finishing the same state at once may both compute it (same values).
+// Memory is bounded by a byte budget; when it would be exceeded, new entries are not stored.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "slamtune/metrics/gt_error.h"
+#include "slamtune/metrics/map_quality.h"
+#include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/mapper_params.h"
+
+namespace slamtune::optim {
+
+struct MapScores {
+  metrics::MapQuality quality;
+  metrics::GtError error;  // default (relations_used 0) without relations
+};
+
+struct MapScoreCacheCounters {
+  std::uint64_t hits = 0;
+  std::uint64_t misses = 0;
+  std::uint64_t not_stored = 0;  // misses not kept because of the budget
+  std::size_t entries = 0;
+  std::size_t bytes = 0;
+
+  // One line: "map score cache: H hits, M misses, N entries, B MB".
+  std::string ToString() const;
+};
+
+class MapScoreCache {
+ public:
+  // byte_budget > 0 (InputError otherwise).
+  explicit MapScoreCache(std::size_t byte_budget = std::size_t{128} << 20);
+  MapScoreCache(const MapScoreCache&) = delete;
+  MapScoreCache& operator=(const MapScoreCache&) = delete;
+
+  static std::vector<std::uint64_t> KeyOf(const slam::MapperParams& params, std::span<const slam::LaserScan> scans);
+
+  std::optional<MapScores> Find(const std::vector<std::uint64_t>& key);
+  void Insert(std::vector<std::uint64_t> key, const MapScores& scores);
+  MapScoreCacheCounters counters() const;
+
+ private:
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
+  };
+  std::size_t byte_budget_;
+  mutable std::mutex mutex_;
+  std::unordered_map<std::vector<std::uint64_t>, MapScores, KeyHash> entries_;
+  MapScoreCacheCounters counters_;
+};
+
+}  // namespace slamtune::optim
