@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 
 #include <bit>
-#include <type_traits>
-#include <variant>
 
 #include "slamtune/common/error.h"
 
@@ -13,9 +11,18 @@ namespace {
 
 std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
-void AppendString(const std::string& s, std::vector<std::uint64_t>* key) {
-  key->push_back(s.size());
-  for (char c : s) key->push_back(static_cast<unsigned char>(c));
+// A marker word (so geometry words cannot be mistaken for a scan's), then every field.
+void AppendGeometry(const slam::LaserGeometry& g, std::vector<std::uint64_t>* key) {
+  key->push_back(0x67656f6d65747279ULL);  // "geometry"
+  key->push_back(Bits(g.min_angle));
+  key->push_back(Bits(g.angular_resolution));
+  key->push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(g.num_readings)));
+  key->push_back(Bits(g.min_range));
+  key->push_back(Bits(g.max_range));
+  key->push_back(Bits(g.range_threshold));
+  key->push_back(Bits(g.offset.x));
+  key->push_back(Bits(g.offset.y));
+  key->push_back(Bits(g.offset.theta));
 }
 
 // Map node, vector header and the scores' strings, roughly.
@@ -42,28 +49,21 @@ std::size_t MapScoreCache::KeyHash::operator()(const std::vector<std::uint64_t>&
   return static_cast<std::size_t>(h);
 }
 
-std::vector<std::uint64_t> MapScoreCache::KeyOf(const slam::MapperParams& params,
+std::vector<std::uint64_t> MapScoreCache::KeyOf(const slam::OccupancyGridOptions& grid,
                                                 std::span<const slam::LaserScan> scans) {
   std::vector<std::uint64_t> key;
-  const auto named = slam::ToNamedValues(params);
-  key.reserve(named.size() * 4 + scans.size() * 4 + 1);
-  for (const auto& p : named) {
-    AppendString(p.name, &key);
-    std::visit(
-        [&](const auto& v) {
-          using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, std::string>) {
-            AppendString(v, &key);
-          } else if constexpr (std::is_same_v<T, double>) {
-            key.push_back(Bits(v));
-          } else {
-            key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
-          }
-        },
-        p.value);
-  }
+  key.reserve(16 + scans.size() * 4);
+  key.push_back(Bits(grid.resolution));
+  key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(grid.min_pass_through)));
+  key.push_back(Bits(grid.occupancy_threshold));
   key.push_back(scans.size());
+  const slam::LaserGeometry* shared = nullptr;
   for (const slam::LaserScan& s : scans) {
+    // The geometry's words once, again only where a scan has another geometry object.
+    if (&s.geometry() != shared) {
+      shared = &s.geometry();
+      AppendGeometry(*shared, &key);
+    }
     key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(s.log_index)));
     key.push_back(Bits(s.corrected_pose().x));
     key.push_back(Bits(s.corrected_pose().y));

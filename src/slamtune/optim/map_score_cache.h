@@ -6,11 +6,14 @@
 // matches were all served by the MatchCache.
 //
 // Exactness, as in slam/match_cache.h: an entry is keyed by everything the scores depend on,
-// compared word for word (the hash only picks the bucket): every mapper parameter (name and
-// value bits; this covers the grid resolution, min_pass_through, occupancy_threshold and the
-// range settings), and for each processed scan its log index and the bits of its corrected
-// pose. The log, its relations and the metric options are fixed per context; use one cache per
-// SlamEvaluationContext.
+// compared word for word (the hash only picks the bucket): the occupancy-grid options
+// (resolution, min_pass_through, occupancy_threshold), the bits of the laser geometry (angles,
+// min/max range, range threshold, offset), and for each processed scan its log index and the
+// bits of its corrected pose. The map is built from exactly these (§8), and the trajectory of
+// every log scan from these and the log's odometry (slam/log_runner.h). Loop-closure
+// parameters are deliberately not in the key: runs with other r, g, p, q whose decisions made
+// the same final state share its scores, which is the point. The log, its relations and the
+// metric options are fixed per context; use one cache per SlamEvaluationContext.
 //
 // Thread-safe. Two runs finishing the same state at once may both compute it (same values).
 // Memory is bounded by a byte budget; when it would be exceeded, new entries are not stored.
@@ -28,7 +31,7 @@
 #include "slamtune/metrics/gt_error.h"
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/slam/laser_scan.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/occupancy_grid.h"
 
 namespace slamtune::optim {
 
@@ -55,7 +58,8 @@ class MapScoreCache {
   MapScoreCache(const MapScoreCache&) = delete;
   MapScoreCache& operator=(const MapScoreCache&) = delete;
 
-  static std::vector<std::uint64_t> KeyOf(const slam::MapperParams& params, std::span<const slam::LaserScan> scans);
+  static std::vector<std::uint64_t> KeyOf(const slam::OccupancyGridOptions& grid,
+                                          std::span<const slam::LaserScan> scans);
 
   std::optional<MapScores> Find(const std::vector<std::uint64_t>& key);
   void Insert(std::vector<std::uint64_t> key, const MapScores& scores);

@@ -30,8 +30,8 @@ MapScores Scores(double eta) {
   return s;
 }
 
-TEST(MapScoreCache, KeyNamesEveryPoseBitAndParameter) {
-  const slam::MapperParams params;
+TEST(MapScoreCache, KeyNamesEveryPoseBitGridOptionAndGeometry) {
+  const slam::OccupancyGridOptions params;
   std::vector<slam::LaserScan> scans = Scans(4);
   const auto key = MapScoreCache::KeyOf(params, scans);
   EXPECT_EQ(key, MapScoreCache::KeyOf(params, scans));
@@ -47,17 +47,27 @@ TEST(MapScoreCache, KeyNamesEveryPoseBitAndParameter) {
 
   EXPECT_NE(key, MapScoreCache::KeyOf(params, std::vector<slam::LaserScan>(scans.begin(), scans.end() - 1)));
 
-  slam::MapperParams finer = params;
+  slam::OccupancyGridOptions finer = params;
   finer.resolution = 0.025;
   EXPECT_NE(key, MapScoreCache::KeyOf(finer, scans));
-  slam::MapperParams other_r = params;
-  other_r.loop_search_maximum_distance = 3.0;
-  EXPECT_NE(key, MapScoreCache::KeyOf(other_r, scans));
+  slam::OccupancyGridOptions passes = params;
+  passes.min_pass_through = params.min_pass_through + 1;
+  EXPECT_NE(key, MapScoreCache::KeyOf(passes, scans));
+
+  // Same poses, a laser with another range threshold: other points, another key.
+  auto other = std::make_shared<slam::LaserGeometry>(scans[0].geometry());
+  other->range_threshold = 2.5;
+  std::vector<slam::LaserScan> rethresholded;
+  for (const auto& s : scans) {
+    rethresholded.emplace_back(other, s.ranges_ptr(), s.odometric_pose(), s.time());
+    rethresholded.back().log_index = s.log_index;
+  }
+  EXPECT_NE(key, MapScoreCache::KeyOf(params, rethresholded));
 }
 
 TEST(MapScoreCache, FindsWhatWasInsertedAndCounts) {
   MapScoreCache cache;
-  const auto key = MapScoreCache::KeyOf(slam::MapperParams{}, Scans(3));
+  const auto key = MapScoreCache::KeyOf(slam::OccupancyGridOptions{}, Scans(3));
   EXPECT_FALSE(cache.Find(key).has_value());
   cache.Insert(key, Scores(0.25));
   cache.Insert(key, Scores(0.5));  // already there: kept as first stored
@@ -74,7 +84,7 @@ TEST(MapScoreCache, FindsWhatWasInsertedAndCounts) {
 
 TEST(MapScoreCache, BudgetStopsStoringButNeverServesWrongScores) {
   MapScoreCache cache(1);  // one byte: nothing fits
-  const auto key = MapScoreCache::KeyOf(slam::MapperParams{}, Scans(3));
+  const auto key = MapScoreCache::KeyOf(slam::OccupancyGridOptions{}, Scans(3));
   cache.Insert(key, Scores(0.25));
   EXPECT_FALSE(cache.Find(key).has_value());
   EXPECT_EQ(cache.counters().not_stored, 1u);

@@ -52,7 +52,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   std::vector<std::uint64_t> key;
   const bool use_cache = context.map_scores != nullptr && run_out == nullptr;
   if (use_cache) {
-    key = MapScoreCache::KeyOf(params, std::span<const slam::LaserScan>(runner.mapper().scans()));
+    key = MapScoreCache::KeyOf(GridOptions(params), std::span<const slam::LaserScan>(runner.mapper().scans()));
     scores = context.map_scores->Find(key);
   }
   if (!scores) {
