@@ -28,6 +28,7 @@ io::MapImage MapOf(const slam::LogRunner& runner, const slam::MapperParams& para
 slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
   SLAMTUNE_CHECK(context.log != nullptr);
   slam::LogRunner runner(context.log, params, context.match_cache);
+  runner.set_solve_cache(context.solve_cache);
   runner.RunToEnd();
   return runner;
 }

@@ -17,6 +17,7 @@
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/match_cache.h"
+#include "slamtune/slam/solve_cache.h"
 
 namespace slamtune::optim {
 
@@ -31,6 +32,8 @@ struct SlamEvaluationContext {
   // Map scores of final states already scored (map_score_cache.h); null: every run builds and
   // scores its map. Results are identical either way.
   std::shared_ptr<MapScoreCache> map_scores;
+  // Back-end solves shared by the runs (slam/solve_cache.h); null: none. Same results either way.
+  std::shared_ptr<slam::SolveCache> solve_cache;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;

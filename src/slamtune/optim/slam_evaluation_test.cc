@@ -122,6 +122,7 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   plain.log = std::move(log);
   SlamEvaluationContext shared = plain;
   shared.match_cache = std::make_shared<slam::MatchCache>();
+  shared.solve_cache = std::make_shared<slam::SolveCache>();
   const std::vector<Assignment> batch = RandomSets(sets, seed);
   const std::vector<Evaluated> without = EvaluateAll(plain, batch, 1);
   const std::vector<Evaluated> with = EvaluateAll(shared, batch, 3);
@@ -168,9 +169,11 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
     final_states.insert(state);
   }
   EXPECT_EQ(m.entries, final_states.size()) << label << ": one entry per distinct final state";
-  std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s; %s\n",
+  const slam::SolveCacheCounters sc = shared.solve_cache->counters();
+  if (loops > 0) EXPECT_GT(sc.hits, 0u) << label << ": no solve was shared";
+  std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s; %s; %s\n",
               label.c_str(), plain.log->scans.size(), loops, loop_lists.size(), batch.size(), c.ToString().c_str(),
-              m.ToString().c_str());
+              sc.ToString().c_str(), m.ToString().c_str());
 }
 
 std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::size_t scans) {

@@ -74,6 +74,8 @@ class LogRunner {
   // geometry stays the one built at construction.
   void SetParams(const MapperParams& params) { mapper_.SetParams(params); }
   const Mapper& mapper() const { return mapper_; }
+  // Back-end solves shared with other runs of this log (solve_cache.h); may be null.
+  void set_solve_cache(std::shared_ptr<SolveCache> cache) { mapper_.set_solve_cache(std::move(cache)); }
   const io::LaserLog& log() const { return *log_; }
 
   RunSummary Summary() const;

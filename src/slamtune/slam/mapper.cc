@@ -244,7 +244,9 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
 int Mapper::CorrectPoses() {
   std::vector<Pose2>& nodes = graph_.mutable_node_values();
   const auto start = std::chrono::steady_clock::now();
-  solver_runs_.push_back(solver_->Solve(nodes, graph_.edges()));
+  solver_runs_.push_back(solve_cache_ ? solve_cache_->Solve(*solver_, params_.solver, params_.ceres_loss_function,
+                                                            nodes, graph_.edges())
+                                      : solver_->Solve(nodes, graph_.edges()));
   solver_runs_.back().wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (solver_runs_.back().usable) {
     for (std::size_t k = 0; k < nodes.size(); ++k) SetScanSensorPose(static_cast<int>(k), nodes[k]);

@@ -12,7 +12,8 @@
 //
 // Shared match results: with a MatchCache (match_cache.h) every matcher call (sequential,
 // near chain, loop coarse, loop fine) goes through the cache, so runs of the same log that
-// share it reuse each other's identical matches. Results are bit-identical with or without it.
+// share it reuse each other's identical matches; with a SolveCache (solve_cache.h) likewise
+// every CorrectPoses solve. Results are bit-identical with or without them.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,6 +31,7 @@
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/pose_graph_solver.h"
 #include "slamtune/slam/scan_matcher.h"
+#include "slamtune/slam/solve_cache.h"
 
 namespace slamtune::slam {
 
@@ -91,6 +93,8 @@ class Mapper {
   const MapperParams& params() const { return params_; }
   void set_match_cache(std::shared_ptr<MatchCache> cache) { match_cache_ = std::move(cache); }
   const std::shared_ptr<MatchCache>& match_cache() const { return match_cache_; }
+  // Back-end solves shared with other runs of the same log (may be null: no sharing).
+  void set_solve_cache(std::shared_ptr<SolveCache> cache) { solve_cache_ = std::move(cache); }
 
   // Processed scans, index = state id, with their current poses.
   const std::vector<LaserScan>& scans() const { return scans_; }
@@ -130,6 +134,7 @@ class Mapper {
   std::optional<ScanMatcher> sequential_matcher_;
   std::optional<ScanMatcher> loop_matcher_;
   std::shared_ptr<MatchCache> match_cache_;  // null: no sharing; thread-safe, shared by copies
+  std::shared_ptr<SolveCache> solve_cache_;  // likewise
   std::vector<LaserScan> scans_;
   std::vector<Pose2> reference_poses_;
   PoseGraph graph_;

@@ -1,0 +1,125 @@
+#include "slamtune/slam/solve_cache.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::slam {
+namespace {
+
+std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+
+void AppendString(const std::string& s, std::vector<std::uint64_t>* key) {
+  key->push_back(s.size());
+  for (char c : s) key->push_back(static_cast<unsigned char>(c));
+}
+
+// Map node, the stored summary's strings, vector headers.
+constexpr std::size_t kEntryOverheadBytes = 256;
+
+}  // namespace
+
+std::string SolveCacheCounters::ToString() const {
+  return fmt::format("solve cache: {} hits, {} misses, {} evictions, {} entries, {:.1f} MB", hits, misses, evictions,
+                     entries, static_cast<double>(bytes) / (1 << 20));
+}
+
+SolveCache::SolveCache(std::size_t byte_budget) : byte_budget_(byte_budget) {
+  if (byte_budget_ == 0) throw InputError("solve cache byte_budget = 0 is out of range: must be > 0");
+}
+
+std::size_t SolveCache::KeyHash::operator()(const std::vector<std::uint64_t>& key) const {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
+  for (std::uint64_t w : key) {
+    h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h ^= h >> 31;
+    h *= 0xbf58476d1ce4e5b9ULL;
+  }
+  return static_cast<std::size_t>(h);
+}
+
+std::vector<std::uint64_t> SolveCache::KeyOf(const std::string& backend, const std::string& loss,
+                                             std::span<const Pose2> nodes, std::span<const Edge> edges) {
+  std::vector<std::uint64_t> key;
+  key.reserve(8 + backend.size() + loss.size() + nodes.size() * 3 + edges.size() * 14);
+  AppendString(backend, &key);
+  AppendString(loss, &key);
+  key.push_back(nodes.size());
+  for (const Pose2& p : nodes) {
+    key.push_back(Bits(p.x));
+    key.push_back(Bits(p.y));
+    key.push_back(Bits(p.theta));
+  }
+  key.push_back(edges.size());
+  for (const Edge& e : edges) {
+    key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(e.source)));
+    key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(e.target)));
+    const Pose2& z = e.constraint.measurement;
+    key.push_back(Bits(z.x));
+    key.push_back(Bits(z.y));
+    key.push_back(Bits(z.theta));
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) key.push_back(Bits(e.constraint.information(r, c)));
+    }
+  }
+  return key;
+}
+
+SolveSummary SolveCache::Solve(const PoseGraphSolver& solver, const std::string& backend, const std::string& loss,
+                               std::vector<Pose2>& nodes, std::span<const Edge> edges) {
+  std::vector<std::uint64_t> key = KeyOf(backend, loss, nodes, edges);
+  {
+    std::lock_guard guard(mutex_);
+    const auto it = entries_.find(key);
+    if (it != entries_.end()) {
+      ++counters_.hits;
+      SLAMTUNE_CHECK(it->second.nodes.size() == nodes.size());
+      nodes = it->second.nodes;
+      return it->second.summary;
+    }
+    ++counters_.misses;
+  }
+  const SolveSummary summary = solver.Solve(nodes, edges);
+  Entry entry;
+  entry.summary = summary;
+  entry.nodes = nodes;
+  entry.bytes = key.size() * sizeof(std::uint64_t) + nodes.size() * sizeof(Pose2) + kEntryOverheadBytes;
+  std::lock_guard guard(mutex_);
+  if (entry.bytes > byte_budget_ || entries_.count(key) != 0) return summary;
+  if (counters_.bytes + entry.bytes > byte_budget_) EvictOldestHalfLocked();
+  entry.sequence = next_sequence_++;
+  counters_.bytes += entry.bytes;
+  entries_.emplace(std::move(key), std::move(entry));
+  counters_.entries = entries_.size();
+  return summary;
+}
+
+void SolveCache::EvictOldestHalfLocked() {
+  std::vector<std::uint64_t> sequences;
+  sequences.reserve(entries_.size());
+  for (const auto& [key, entry] : entries_) sequences.push_back(entry.sequence);
+  if (sequences.empty()) return;
+  auto middle = sequences.begin() + static_cast<std::ptrdiff_t>(sequences.size() / 2);
+  std::nth_element(sequences.begin(), middle, sequences.end());
+  const std::uint64_t cut = *middle;  // drop entries older than the median (at least one)
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    if (it->second.sequence < cut || entries_.size() == 1) {
+      counters_.bytes -= it->second.bytes;
+      ++counters_.evictions;
+      it = entries_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  counters_.entries = entries_.size();
+}
+
+SolveCacheCounters SolveCache::counters() const {
+  std::lock_guard guard(mutex_);
+  return counters_;
+}
+
+}  // namespace slamtune::slam

@@ -1,0 +1,78 @@
+// A cache of back-end solves shared by many SLAM runs of one log (karto-algorithm.md §7.1):
+// runs that differ only in loop-closure parameters and made the same decisions so far hold the
+// same pose graph, so when one of them closes a loop its CorrectPoses solve repeats another
+// run's verbatim. The first run computes it; the others copy its optimised node values. On a
+// run whose scan matches all come from the MatchCache, the solves are about half of the time.
+//
+// Exactness, as in match_cache.h: an entry is keyed by everything the solve depends on,
+// compared word for word (the hash only picks the bucket): the back-end's name and loss (the
+// solvers are built from those alone, pose_graph_solver.h), the bits of every node value, and
+// every edge's source, target, measurement and information bits in order. A hit returns the
+// stored optimised node values and SolveSummary (its wall_s is the caller's to set).
+//
+// Thread-safe. Two runs making the same solve at once may both compute it (same result).
+// Memory is bounded by a byte budget; when it would be exceeded the oldest half of the
+// entries is dropped. Whether an entry was kept changes only the time, never a result.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "slamtune/common/pose2.h"
+#include "slamtune/slam/pose_graph.h"
+#include "slamtune/slam/pose_graph_solver.h"
+
+namespace slamtune::slam {
+
+struct SolveCacheCounters {
+  std::uint64_t hits = 0;
+  std::uint64_t misses = 0;
+  std::uint64_t evictions = 0;
+  std::size_t entries = 0;
+  std::size_t bytes = 0;
+
+  // One line: "solve cache: H hits, M misses, E evictions, N entries, B MB".
+  std::string ToString() const;
+};
+
+class SolveCache {
+ public:
+  // byte_budget > 0 (InputError otherwise).
+  explicit SolveCache(std::size_t byte_budget = std::size_t{256} << 20);
+  SolveCache(const SolveCache&) = delete;
+  SolveCache& operator=(const SolveCache&) = delete;
+
+  // solver.Solve(nodes, edges), or the stored result of the same solve. `backend` and `loss`
+  // name the solver as MakeSolver() was given them.
+  SolveSummary Solve(const PoseGraphSolver& solver, const std::string& backend, const std::string& loss,
+                     std::vector<Pose2>& nodes, std::span<const Edge> edges);
+
+  static std::vector<std::uint64_t> KeyOf(const std::string& backend, const std::string& loss,
+                                          std::span<const Pose2> nodes, std::span<const Edge> edges);
+  SolveCacheCounters counters() const;
+
+ private:
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
+  };
+  struct Entry {
+    SolveSummary summary;
+    std::vector<Pose2> nodes;  // after the solve
+    std::uint64_t sequence = 0;
+    std::size_t bytes = 0;
+  };
+  void EvictOldestHalfLocked();
+
+  std::size_t byte_budget_;
+  mutable std::mutex mutex_;
+  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyHash> entries_;
+  std::uint64_t next_sequence_ = 0;
+  SolveCacheCounters counters_;
+};
+
+}  // namespace slamtune::slam

@@ -1,0 +1,100 @@
+#include "slamtune/slam/solve_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <vector>
+
+namespace slamtune::slam {
+namespace {
+
+// A square loop of four poses with drifted initial values: the solve moves them.
+struct Graph {
+  std::vector<Pose2> nodes{{0, 0, 0}, {1.1, 0.05, 1.6}, {1.0, 1.2, 3.1}, {-0.1, 0.9, -1.5}};
+  std::vector<Edge> edges;
+  Graph() {
+    const Pose2 truth[4] = {{0, 0, 0}, {1, 0, M_PI / 2}, {1, 1, M_PI}, {0, 1, -M_PI / 2}};
+    for (int k = 0; k < 4; ++k) {
+      const int a = k, b = (k + 1) % 4;
+      Edge e;
+      e.source = std::min(a, b);
+      e.target = std::max(a, b);
+      e.constraint = MakeConstraint(truth[e.source], truth[e.target], Eigen::Matrix3d::Identity() * 0.01);
+      edges.push_back(e);
+    }
+  }
+};
+
+bool SameBits(const std::vector<Pose2>& a, const std::vector<Pose2>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (std::bit_cast<std::uint64_t>(a[k].x) != std::bit_cast<std::uint64_t>(b[k].x) ||
+        std::bit_cast<std::uint64_t>(a[k].y) != std::bit_cast<std::uint64_t>(b[k].y) ||
+        std::bit_cast<std::uint64_t>(a[k].theta) != std::bit_cast<std::uint64_t>(b[k].theta)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
+  const auto solver = MakeSolver("spa");
+  Graph g;
+  std::vector<Pose2> direct = g.nodes;
+  const SolveSummary expected = solver->Solve(direct, g.edges);
+  ASSERT_TRUE(expected.updated);
+
+  SolveCache cache;
+  std::vector<Pose2> first = g.nodes, second = g.nodes;
+  cache.Solve(*solver, "spa", "None", first, g.edges);
+  const SolveSummary again = cache.Solve(*solver, "spa", "None", second, g.edges);
+  EXPECT_TRUE(SameBits(first, direct));
+  EXPECT_TRUE(SameBits(second, direct));
+  EXPECT_EQ(again.iterations, expected.iterations);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(again.final_cost), std::bit_cast<std::uint64_t>(expected.final_cost));
+  EXPECT_EQ(cache.counters().hits, 1u);
+  EXPECT_EQ(cache.counters().misses, 1u);
+}
+
+TEST(SolveCache, KeyNamesBackendNodesAndEveryEdgeField) {
+  Graph g;
+  const auto key = SolveCache::KeyOf("spa", "None", g.nodes, g.edges);
+  EXPECT_NE(key, SolveCache::KeyOf("ceres", "None", g.nodes, g.edges));
+  EXPECT_NE(key, SolveCache::KeyOf("ceres", "HuberLoss", g.nodes, g.edges));
+  Graph moved = g;
+  moved.nodes[2].theta = std::nextafter(moved.nodes[2].theta, 10.0);
+  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", moved.nodes, moved.edges));
+  Graph reweighted = g;
+  reweighted.edges[1].constraint.information(0, 2) += 1e-12;
+  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", reweighted.nodes, reweighted.edges));
+  Graph remeasured = g;
+  remeasured.edges[3].constraint.measurement.y += 1e-12;
+  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", remeasured.nodes, remeasured.edges));
+  Graph fewer = g;
+  fewer.edges.pop_back();
+  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", fewer.nodes, fewer.edges));
+}
+
+TEST(SolveCache, BudgetEvictsButResultsStayExact) {
+  const auto solver = MakeSolver("spa");
+  Graph g;
+  const std::size_t one_entry = SolveCache::KeyOf("spa", "None", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
+  SolveCache cache(one_entry + one_entry / 2);  // room for one
+  std::vector<Pose2> direct = g.nodes;
+  solver->Solve(direct, g.edges);
+  Graph other = g;
+  other.nodes[1].x += 0.01;
+  for (int round = 0; round < 3; ++round) {
+    std::vector<Pose2> a = g.nodes, b = other.nodes;
+    cache.Solve(*solver, "spa", "None", a, g.edges);
+    cache.Solve(*solver, "spa", "None", b, other.edges);
+    EXPECT_TRUE(SameBits(a, direct));
+  }
+  EXPECT_GT(cache.counters().evictions, 0u);
+  EXPECT_LE(cache.counters().entries, 1u);
+  EXPECT_THROW(SolveCache(0), std::exception);
+}
+
+}  // namespace
+}  // namespace slamtune::slam
