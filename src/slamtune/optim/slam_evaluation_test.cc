@@ -170,7 +170,9 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   }
   EXPECT_EQ(m.entries, final_states.size()) << label << ": one entry per distinct final state";
   const slam::SolveCacheCounters sc = shared.solve_cache->counters();
-  if (loops > 0) EXPECT_GT(sc.hits, 0u) << label << ": no solve was shared";
+  if (loops > 0) {
+    EXPECT_GT(sc.hits, 0u) << label << ": no solve was shared";
+  }
   std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s; %s; %s\n",
               label.c_str(), plain.log->scans.size(), loops, loop_lists.size(), batch.size(), c.ToString().c_str(),
               sc.ToString().c_str(), m.ToString().c_str());

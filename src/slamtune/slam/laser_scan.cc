@@ -1,6 +1,8 @@
 #include "slamtune/slam/laser_scan.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "slamtune/common/error.h"
 
@@ -16,7 +18,14 @@ LaserScan::LaserScan(std::shared_ptr<const LaserGeometry> geometry, std::shared_
 
 void LaserScan::SetCorrectedPose(const Pose2& pose) {
   corrected_pose_ = pose;
-  UpdatePoints();
+  readout_valid_ = false;
+  barycenter_valid_ = false;
+}
+
+void LaserScan::SetSensorPoseWithBarycenter(const Pose2& sensor_pose, const Pose2& barycenter) {
+  SetSensorPose(sensor_pose);
+  barycenter_ = barycenter;
+  barycenter_valid_ = true;
 }
 
 Pose2 LaserScan::SensorPose() const { return Compose(corrected_pose_, geometry_->offset); }
@@ -35,7 +44,10 @@ Pose2 RobotPoseFromSensor(const Pose2& sensor_pose, const Pose2& offset) {
 
 // §2.2: beam i at world angle (theta_s + minAngle) + i * res; the filtered list keeps
 // min_range <= r <= range_threshold (NaN fails both comparisons).
-void LaserScan::UpdatePoints() {
+void LaserScan::UpdatePoints() const {
+  // A barycentre given with the pose must be the one computed here, bit for bit.
+  const bool given = barycenter_valid_;
+  const Pose2 given_barycenter = barycenter_;
   const LaserGeometry& g = *geometry_;
   const std::vector<double>& r = *ranges_;
   const Pose2 sensor = SensorPose();
@@ -64,6 +76,10 @@ void LaserScan::UpdatePoints() {
     barycenter_ = {sum_x / n, sum_y / n, 0.0};
   }
   bounding_box_ = box;
+  SLAMTUNE_CHECK(!given || (std::bit_cast<std::uint64_t>(given_barycenter.x) == std::bit_cast<std::uint64_t>(barycenter_.x) &&
+                            std::bit_cast<std::uint64_t>(given_barycenter.y) == std::bit_cast<std::uint64_t>(barycenter_.y)));
+  readout_valid_ = true;
+  barycenter_valid_ = true;
 }
 
 }  // namespace slamtune::slam

@@ -1,7 +1,14 @@
 // A laser scan as the Karto engine sees it (karto-algorithm.md §2): fixed beam geometry,
-// recorded readings, an odometric and a corrected robot pose, and the point readout that is
-// recomputed whenever the pose changes (unfiltered points, filtered points, barycentre,
-// bounding box).
+// recorded readings, an odometric and a corrected robot pose, and the point readout of that
+// pose (unfiltered points, filtered points, barycentre, bounding box).
+//
+// The readout is computed on first use after a pose change, not at the change: a pose is often
+// replaced before its points are read (the odometric pose at construction, every node after a
+// solve whose barycentres are known), and the readout's sin/cos per beam is most of the time of
+// a run whose matches come from the MatchCache. The computation is the same whenever it runs,
+// so results are bit-identical. Lazy means a const accessor may write the readout: a scan read
+// by several threads at once must have EnsureReadout() called first (the matchers do so on the
+// calling thread before they spread work over threads).
 //
 // Value type: copying a LaserScan copies its poses and point lists; the readings and the
 // geometry are shared immutable data, so copies of engine state stay cheap and independent.
@@ -52,8 +59,15 @@ class LaserScan {
 
   const Pose2& odometric_pose() const { return odometric_pose_; }
   const Pose2& corrected_pose() const { return corrected_pose_; }
-  // Sets the corrected robot pose and recomputes the point readout (§2.2).
+  // Sets the corrected robot pose; the point readout (§2.2) follows on first use.
   void SetCorrectedPose(const Pose2& pose);
+  // SetSensorPose with the barycentre of that pose already known (bit for bit what the readout
+  // would compute, e.g. stored when another run made the same solve); the points follow on use.
+  void SetSensorPoseWithBarycenter(const Pose2& sensor_pose, const Pose2& barycenter);
+  // Computes the readout now if the pose changed since it was last computed.
+  void EnsureReadout() const {
+    if (!readout_valid_) UpdatePoints();
+  }
   // Sensor pose = corrected (+) offset; setting it sets corrected = inverse (§1.4).
   Pose2 SensorPose() const;
   void SetSensorPose(const Pose2& sensor_pose);
@@ -61,28 +75,44 @@ class LaserScan {
   Pose2 OdometricSensorPose() const;
 
   // One world point per beam, whatever the reading (NaN/inf propagate). Index = beam.
-  const std::vector<Eigen::Vector2d>& unfiltered_points() const { return unfiltered_; }
+  const std::vector<Eigen::Vector2d>& unfiltered_points() const {
+    EnsureReadout();
+    return unfiltered_;
+  }
   // World points of beams with min_range <= r <= range_threshold.
-  const std::vector<Eigen::Vector2d>& filtered_points() const { return filtered_; }
+  const std::vector<Eigen::Vector2d>& filtered_points() const {
+    EnsureReadout();
+    return filtered_;
+  }
   // Mean of the filtered points with heading 0; the sensor pose if there are none.
-  const Pose2& barycenter() const { return barycenter_; }
+  const Pose2& barycenter() const {
+    if (!barycenter_valid_) EnsureReadout();
+    return barycenter_;
+  }
   // Box of the sensor position and all filtered points.
-  const BoundingBox2& bounding_box() const { return bounding_box_; }
+  const BoundingBox2& bounding_box() const {
+    EnsureReadout();
+    return bounding_box_;
+  }
   // Reference pose for distance tests: barycentre or sensor pose (§2.2).
-  Pose2 ReferencePose(bool use_barycenter) const { return use_barycenter ? barycenter_ : SensorPose(); }
+  Pose2 ReferencePose(bool use_barycenter) const { return use_barycenter ? barycenter() : SensorPose(); }
 
  private:
-  void UpdatePoints();
+  void UpdatePoints() const;
 
   std::shared_ptr<const LaserGeometry> geometry_;
   std::shared_ptr<const std::vector<double>> ranges_;
   double time_ = 0.0;
   Pose2 odometric_pose_;
   Pose2 corrected_pose_;
-  std::vector<Eigen::Vector2d> unfiltered_;
-  std::vector<Eigen::Vector2d> filtered_;
-  Pose2 barycenter_;
-  BoundingBox2 bounding_box_;
+  // The readout of corrected_pose_, valid when readout_valid_; the barycentre alone may be
+  // valid before the rest (SetSensorPoseWithBarycenter).
+  mutable bool readout_valid_ = false;
+  mutable bool barycenter_valid_ = false;
+  mutable std::vector<Eigen::Vector2d> unfiltered_;
+  mutable std::vector<Eigen::Vector2d> filtered_;
+  mutable Pose2 barycenter_;
+  mutable BoundingBox2 bounding_box_;
 };
 
 // Robot pose from a sensor pose and the mounting offset (Karto's inverse, §1.4).

@@ -244,12 +244,40 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
 int Mapper::CorrectPoses() {
   std::vector<Pose2>& nodes = graph_.mutable_node_values();
   const auto start = std::chrono::steady_clock::now();
-  solver_runs_.push_back(solve_cache_ ? solve_cache_->Solve(*solver_, params_.solver, params_.ceres_loss_function,
-                                                            nodes, graph_.edges())
-                                      : solver_->Solve(nodes, graph_.edges()));
-  solver_runs_.back().wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (solver_runs_.back().usable) {
-    for (std::size_t k = 0; k < nodes.size(); ++k) SetScanSensorPose(static_cast<int>(k), nodes[k]);
+  std::vector<std::uint64_t> key;
+  std::optional<SolveCache::Solved> stored;
+  if (solve_cache_) {
+    key = SolveCache::KeyOf(params_.solver, params_.ceres_loss_function, nodes, graph_.edges());
+    stored = solve_cache_->Find(key);
+  }
+  if (stored) {
+    // Another run made this very solve: its node values, and the barycentres it computed.
+    SLAMTUNE_CHECK(stored->nodes.size() == nodes.size());
+    nodes = stored->nodes;
+    solver_runs_.push_back(stored->summary);
+  } else {
+    solver_runs_.push_back(solver_->Solve(nodes, graph_.edges()));
+  }
+  SolveSummary& summary = solver_runs_.back();
+  summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (summary.usable) {
+    const bool known = stored && stored->barycenters.size() == nodes.size();
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (known) {
+        scans_[k].SetSensorPoseWithBarycenter(nodes[k], stored->barycenters[k]);
+        reference_poses_[k] = scans_[k].ReferencePose(params_.use_scan_barycenter);
+      } else {
+        SetScanSensorPose(static_cast<int>(k), nodes[k]);
+      }
+    }
+  }
+  if (solve_cache_ && !stored) {
+    SolveCache::Solved solved{summary, nodes, {}};
+    if (summary.usable && params_.use_scan_barycenter) {
+      solved.barycenters.reserve(nodes.size());
+      for (const LaserScan& s : scans_) solved.barycenters.push_back(s.barycenter());
+    }
+    solve_cache_->Store(std::move(key), std::move(solved));
   }
   return static_cast<int>(solver_runs_.size()) - 1;
 }

@@ -97,6 +97,8 @@ double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& c
 
 MatchResult ReferenceScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans,
                                         bool penalize, bool refine) {
+  scan.EnsureReadout();
+  for (const LaserScan* base : base_scans) base->EnsureReadout();
   MatchResult result;
   const Pose2 center = scan.SensorPose();
   if (scan.ranges().empty()) {

@@ -313,6 +313,9 @@ const ScanMatcherOptions& ScanMatcher::options() const { return impl_->options; 
 MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, bool penalize,
                                bool refine) {
   SLAMTUNE_CHECK_MSG(impl_ != nullptr, "ScanMatcher used after move");
+  // Point readouts are lazy (laser_scan.h): compute them here, before any work is threaded.
+  scan.EnsureReadout();
+  for (const LaserScan* base : base_scans) base->EnsureReadout();
   Impl& m = *impl_;
   const ScanMatcherOptions& o = m.options;
   MatchResult result;

@@ -68,33 +68,29 @@ std::vector<std::uint64_t> SolveCache::KeyOf(const std::string& backend, const s
   return key;
 }
 
-SolveSummary SolveCache::Solve(const PoseGraphSolver& solver, const std::string& backend, const std::string& loss,
-                               std::vector<Pose2>& nodes, std::span<const Edge> edges) {
-  std::vector<std::uint64_t> key = KeyOf(backend, loss, nodes, edges);
-  {
-    std::lock_guard guard(mutex_);
-    const auto it = entries_.find(key);
-    if (it != entries_.end()) {
-      ++counters_.hits;
-      SLAMTUNE_CHECK(it->second.nodes.size() == nodes.size());
-      nodes = it->second.nodes;
-      return it->second.summary;
-    }
-    ++counters_.misses;
-  }
-  const SolveSummary summary = solver.Solve(nodes, edges);
-  Entry entry;
-  entry.summary = summary;
-  entry.nodes = nodes;
-  entry.bytes = key.size() * sizeof(std::uint64_t) + nodes.size() * sizeof(Pose2) + kEntryOverheadBytes;
+std::optional<SolveCache::Solved> SolveCache::Find(const std::vector<std::uint64_t>& key) {
   std::lock_guard guard(mutex_);
-  if (entry.bytes > byte_budget_ || entries_.count(key) != 0) return summary;
+  const auto it = entries_.find(key);
+  if (it == entries_.end()) {
+    ++counters_.misses;
+    return std::nullopt;
+  }
+  ++counters_.hits;
+  return it->second.solved;
+}
+
+void SolveCache::Store(std::vector<std::uint64_t> key, Solved solved) {
+  Entry entry;
+  entry.bytes = key.size() * sizeof(std::uint64_t) +
+                (solved.nodes.size() + solved.barycenters.size()) * sizeof(Pose2) + kEntryOverheadBytes;
+  entry.solved = std::move(solved);
+  std::lock_guard guard(mutex_);
+  if (entry.bytes > byte_budget_ || entries_.count(key) != 0) return;
   if (counters_.bytes + entry.bytes > byte_budget_) EvictOldestHalfLocked();
   entry.sequence = next_sequence_++;
   counters_.bytes += entry.bytes;
   entries_.emplace(std::move(key), std::move(entry));
   counters_.entries = entries_.size();
-  return summary;
 }
 
 void SolveCache::EvictOldestHalfLocked() {

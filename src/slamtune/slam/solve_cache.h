@@ -7,8 +7,10 @@
 // Exactness, as in match_cache.h: an entry is keyed by everything the solve depends on,
 // compared word for word (the hash only picks the bucket): the back-end's name and loss (the
 // solvers are built from those alone, pose_graph_solver.h), the bits of every node value, and
-// every edge's source, target, measurement and information bits in order. A hit returns the
-// stored optimised node values and SolveSummary (its wall_s is the caller's to set).
+// every edge's source, target, measurement and information bits in order. An entry holds the
+// optimised node values and SolveSummary (its wall_s is the caller's to set) and, when the
+// caller gives them, the barycentres of the scans at those poses, so that a run taking the
+// stored solve need not recompute every scan's point readout to find them (laser_scan.h).
 //
 // Thread-safe. Two runs making the same solve at once may both compute it (same result).
 // Memory is bounded by a byte budget; when it would be exceeded the oldest half of the
@@ -18,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -47,13 +50,18 @@ class SolveCache {
   SolveCache(const SolveCache&) = delete;
   SolveCache& operator=(const SolveCache&) = delete;
 
-  // solver.Solve(nodes, edges), or the stored result of the same solve. `backend` and `loss`
-  // name the solver as MakeSolver() was given them.
-  SolveSummary Solve(const PoseGraphSolver& solver, const std::string& backend, const std::string& loss,
-                     std::vector<Pose2>& nodes, std::span<const Edge> edges);
+  struct Solved {
+    SolveSummary summary;
+    std::vector<Pose2> nodes;        // after the solve
+    std::vector<Pose2> barycenters;  // of the scans at `nodes`, or empty
+  };
 
+  // `backend` and `loss` name the solver as MakeSolver() was given them; nodes before the solve.
   static std::vector<std::uint64_t> KeyOf(const std::string& backend, const std::string& loss,
                                           std::span<const Pose2> nodes, std::span<const Edge> edges);
+  // The stored solve of `key`, if any (counted as a hit or a miss).
+  std::optional<Solved> Find(const std::vector<std::uint64_t>& key);
+  void Store(std::vector<std::uint64_t> key, Solved solved);
   SolveCacheCounters counters() const;
 
  private:
@@ -61,8 +69,7 @@ class SolveCache {
     std::size_t operator()(const std::vector<std::uint64_t>& key) const;
   };
   struct Entry {
-    SolveSummary summary;
-    std::vector<Pose2> nodes;  // after the solve
+    Solved solved;
     std::uint64_t sequence = 0;
     std::size_t bytes = 0;
   };

@@ -46,13 +46,19 @@ TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
   ASSERT_TRUE(expected.updated);
 
   SolveCache cache;
-  std::vector<Pose2> first = g.nodes, second = g.nodes;
-  cache.Solve(*solver, "spa", "None", first, g.edges);
-  const SolveSummary again = cache.Solve(*solver, "spa", "None", second, g.edges);
-  EXPECT_TRUE(SameBits(first, direct));
-  EXPECT_TRUE(SameBits(second, direct));
-  EXPECT_EQ(again.iterations, expected.iterations);
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(again.final_cost), std::bit_cast<std::uint64_t>(expected.final_cost));
+  const auto key = SolveCache::KeyOf("spa", "None", g.nodes, g.edges);
+  EXPECT_FALSE(cache.Find(key).has_value());
+  std::vector<Pose2> first = g.nodes;
+  const SolveSummary summary = solver->Solve(first, g.edges);
+  cache.Store(key, {summary, first, {{0.5, 0.25, 0.0}}});
+  const auto again = cache.Find(key);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_TRUE(SameBits(again->nodes, direct));
+  EXPECT_EQ(again->summary.iterations, expected.iterations);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(again->summary.final_cost),
+            std::bit_cast<std::uint64_t>(expected.final_cost));
+  ASSERT_EQ(again->barycenters.size(), 1u);
+  EXPECT_EQ(again->barycenters[0].x, 0.5);
   EXPECT_EQ(cache.counters().hits, 1u);
   EXPECT_EQ(cache.counters().misses, 1u);
 }
@@ -85,11 +91,19 @@ TEST(SolveCache, BudgetEvictsButResultsStayExact) {
   solver->Solve(direct, g.edges);
   Graph other = g;
   other.nodes[1].x += 0.01;
+  const auto key_g = SolveCache::KeyOf("spa", "None", g.nodes, g.edges);
+  const auto key_other = SolveCache::KeyOf("spa", "None", other.nodes, other.edges);
   for (int round = 0; round < 3; ++round) {
-    std::vector<Pose2> a = g.nodes, b = other.nodes;
-    cache.Solve(*solver, "spa", "None", a, g.edges);
-    cache.Solve(*solver, "spa", "None", b, other.edges);
-    EXPECT_TRUE(SameBits(a, direct));
+    for (const auto* key : {&key_g, &key_other}) {
+      const auto hit = cache.Find(*key);
+      if (hit) {
+        EXPECT_TRUE(key == &key_g ? SameBits(hit->nodes, direct) : !SameBits(hit->nodes, direct));
+        continue;
+      }
+      std::vector<Pose2> nodes = key == &key_g ? g.nodes : other.nodes;
+      const SolveSummary summary = solver->Solve(nodes, g.edges);
+      cache.Store(*key, {summary, nodes, {}});
+    }
   }
   EXPECT_GT(cache.counters().evictions, 0u);
   EXPECT_LE(cache.counters().entries, 1u);
