@@ -28,6 +28,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "slamtune/common/key_words.h"
 #include "slamtune/metrics/gt_error.h"
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/slam/laser_scan.h"
@@ -66,12 +67,9 @@ class MapScoreCache {
   MapScoreCacheCounters counters() const;
 
  private:
-  struct KeyHash {
-    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
-  };
   std::size_t byte_budget_;
   mutable std::mutex mutex_;
-  std::unordered_map<std::vector<std::uint64_t>, MapScores, KeyHash> entries_;
+  std::unordered_map<std::vector<std::uint64_t>, MapScores, KeyWordsHash> entries_;
   MapScoreCacheCounters counters_;
 };
 

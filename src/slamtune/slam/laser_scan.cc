@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/key_words.h"
 
 namespace slamtune::slam {
 
@@ -35,6 +36,16 @@ void LaserScan::SetSensorPose(const Pose2& sensor_pose) {
 }
 
 Pose2 LaserScan::OdometricSensorPose() const { return Compose(odometric_pose_, geometry_->offset); }
+
+void AppendGeometryKey(const LaserGeometry& g, std::vector<std::uint64_t>* key) {
+  key->push_back(KeyBits(g.min_angle));
+  key->push_back(KeyBits(g.angular_resolution));
+  key->push_back(KeyInt(g.num_readings));
+  key->push_back(KeyBits(g.min_range));
+  key->push_back(KeyBits(g.max_range));
+  key->push_back(KeyBits(g.range_threshold));
+  AppendKeyPose(g.offset, key);
+}
 
 Pose2 RobotPoseFromSensor(const Pose2& sensor_pose, const Pose2& offset) {
   const double theta = NormalizeAngle(sensor_pose.theta - offset.theta);
@@ -76,8 +87,8 @@ void LaserScan::UpdatePoints() const {
     barycenter_ = {sum_x / n, sum_y / n, 0.0};
   }
   bounding_box_ = box;
-  SLAMTUNE_CHECK(!given || (std::bit_cast<std::uint64_t>(given_barycenter.x) == std::bit_cast<std::uint64_t>(barycenter_.x) &&
-                            std::bit_cast<std::uint64_t>(given_barycenter.y) == std::bit_cast<std::uint64_t>(barycenter_.y)));
+  SLAMTUNE_CHECK(!given || (KeyBits(given_barycenter.x) == KeyBits(barycenter_.x) &&
+                            KeyBits(given_barycenter.y) == KeyBits(barycenter_.y)));
   readout_valid_ = true;
   barycenter_valid_ = true;
 }

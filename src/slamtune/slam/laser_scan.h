@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -114,6 +115,9 @@ class LaserScan {
   mutable Pose2 barycenter_;
   mutable BoundingBox2 bounding_box_;
 };
+
+// Appends the bits of every field of `g` to an exact cache key (common/key_words.h).
+void AppendGeometryKey(const LaserGeometry& g, std::vector<std::uint64_t>* key);
 
 // Robot pose from a sensor pose and the mounting offset (Karto's inverse, §1.4).
 Pose2 RobotPoseFromSensor(const Pose2& sensor_pose, const Pose2& offset);

@@ -12,30 +12,14 @@
 namespace slamtune::slam {
 namespace {
 
-std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
-
-void AppendPose(const Pose2& p, std::vector<std::uint64_t>* key) {
-  key->push_back(Bits(p.x));
-  key->push_back(Bits(p.y));
-  key->push_back(Bits(p.theta));
-}
-
-// Result-affecting fields of LaserGeometry (all of them).
-void AppendGeometry(const LaserGeometry& g, std::vector<std::uint64_t>* key) {
-  key->push_back(Bits(g.min_angle));
-  key->push_back(Bits(g.angular_resolution));
-  key->push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(g.num_readings)));
-  key->push_back(Bits(g.min_range));
-  key->push_back(Bits(g.max_range));
-  key->push_back(Bits(g.range_threshold));
-  AppendPose(g.offset, key);
-}
+std::uint64_t Bits(double v) { return KeyBits(v); }
+void AppendPose(const Pose2& p, std::vector<std::uint64_t>* key) { AppendKeyPose(p, key); }
 
 bool SameGeometry(const LaserGeometry& a, const LaserGeometry& b) {
   std::vector<std::uint64_t> ka;
   std::vector<std::uint64_t> kb;
-  AppendGeometry(a, &ka);
-  AppendGeometry(b, &kb);
+  AppendGeometryKey(a, &ka);
+  AppendGeometryKey(b, &kb);
   return ka == kb;
 }
 
@@ -61,18 +45,6 @@ std::string MatchCacheCounters::ToString() const {
 
 MatchCache::MatchCache(const MatchCacheOptions& options) : options_(options) { options_.Validate(); }
 
-std::size_t MatchCache::KeyHash::operator()(const std::vector<std::uint64_t>& key) const {
-  // 64-bit mix per word (splitmix64 finaliser constants); only picks the bucket.
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
-  for (std::uint64_t w : key) {
-    h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    h ^= h >> 31;
-    h *= 0xbf58476d1ce4e5b9ULL;
-    h ^= h >> 29;
-  }
-  return static_cast<std::size_t>(h);
-}
-
 std::vector<std::uint64_t> MatchCache::KeyOf(MatchRole role, const ScanMatcherOptions& o, const LaserScan& scan,
                                              std::span<const LaserScan* const> base_scans, bool penalize,
                                              bool refine) {
@@ -91,7 +63,7 @@ std::vector<std::uint64_t> MatchCache::KeyOf(MatchRole role, const ScanMatcherOp
     key.push_back(Bits(v));
   }
   key.push_back((o.use_response_expansion ? 1u : 0u) | (penalize ? 2u : 0u) | (refine ? 4u : 0u));
-  AppendGeometry(scan.geometry(), &key);
+  AppendGeometryKey(scan.geometry(), &key);
   key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(scan.log_index)));
   key.push_back(Address(scan));
   AppendPose(scan.corrected_pose(), &key);

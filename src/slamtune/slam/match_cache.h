@@ -33,6 +33,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "slamtune/common/key_words.h"
 #include "slamtune/slam/laser_scan.h"
 #include "slamtune/slam/scan_matcher.h"
 
@@ -82,9 +83,6 @@ class MatchCache {
                                           std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
 
  private:
-  struct KeyHash {
-    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
-  };
   struct Entry {
     std::shared_future<MatchResult> result;
     // Keeps the keyed readings addresses valid: one holder per distinct owner (the log).
@@ -96,7 +94,7 @@ class MatchCache {
 
   MatchCacheOptions options_;
   mutable std::mutex mutex_;
-  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyHash> entries_;
+  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
   std::uint64_t next_sequence_ = 0;
   MatchCacheCounters counters_;
 };

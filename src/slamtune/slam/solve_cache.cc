@@ -3,19 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <bit>
 
 #include "slamtune/common/error.h"
 
 namespace slamtune::slam {
 namespace {
-
-std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
-
-void AppendString(const std::string& s, std::vector<std::uint64_t>* key) {
-  key->push_back(s.size());
-  for (char c : s) key->push_back(static_cast<unsigned char>(c));
-}
 
 // Map node, the stored summary's strings, vector headers.
 constexpr std::size_t kEntryOverheadBytes = 256;
@@ -31,38 +23,21 @@ SolveCache::SolveCache(std::size_t byte_budget) : byte_budget_(byte_budget) {
   if (byte_budget_ == 0) throw InputError("solve cache byte_budget = 0 is out of range: must be > 0");
 }
 
-std::size_t SolveCache::KeyHash::operator()(const std::vector<std::uint64_t>& key) const {
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
-  for (std::uint64_t w : key) {
-    h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    h ^= h >> 31;
-    h *= 0xbf58476d1ce4e5b9ULL;
-  }
-  return static_cast<std::size_t>(h);
-}
-
 std::vector<std::uint64_t> SolveCache::KeyOf(const std::string& backend, const std::string& loss,
                                              std::span<const Pose2> nodes, std::span<const Edge> edges) {
   std::vector<std::uint64_t> key;
   key.reserve(8 + backend.size() + loss.size() + nodes.size() * 3 + edges.size() * 14);
-  AppendString(backend, &key);
-  AppendString(loss, &key);
+  AppendKeyString(backend, &key);
+  AppendKeyString(loss, &key);
   key.push_back(nodes.size());
-  for (const Pose2& p : nodes) {
-    key.push_back(Bits(p.x));
-    key.push_back(Bits(p.y));
-    key.push_back(Bits(p.theta));
-  }
+  for (const Pose2& p : nodes) AppendKeyPose(p, &key);
   key.push_back(edges.size());
   for (const Edge& e : edges) {
-    key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(e.source)));
-    key.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(e.target)));
-    const Pose2& z = e.constraint.measurement;
-    key.push_back(Bits(z.x));
-    key.push_back(Bits(z.y));
-    key.push_back(Bits(z.theta));
+    key.push_back(KeyInt(e.source));
+    key.push_back(KeyInt(e.target));
+    AppendKeyPose(e.constraint.measurement, &key);
     for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) key.push_back(Bits(e.constraint.information(r, c)));
+      for (int c = 0; c < 3; ++c) key.push_back(KeyBits(e.constraint.information(r, c)));
     }
   }
   return key;

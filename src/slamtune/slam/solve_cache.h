@@ -26,6 +26,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "slamtune/common/key_words.h"
 #include "slamtune/common/pose2.h"
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/pose_graph_solver.h"
@@ -65,9 +66,6 @@ class SolveCache {
   SolveCacheCounters counters() const;
 
  private:
-  struct KeyHash {
-    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
-  };
   struct Entry {
     Solved solved;
     std::uint64_t sequence = 0;
@@ -77,7 +75,7 @@ class SolveCache {
 
   std::size_t byte_budget_;
   mutable std::mutex mutex_;
-  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyHash> entries_;
+  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
   std::uint64_t next_sequence_ = 0;
   SolveCacheCounters counters_;
 };

@@ -1,0 +1,46 @@
+// Exact cache keys as vectors of 64-bit words, shared by the caches that let SLAM runs reuse each
+// other's work (slam/match_cache.h, slam/solve_cache.h, optim/map_score_cache.h). A key holds the
+// bits of everything a result depends on and is compared word for word; KeyWordsHash only picks
+// a bucket, so a collision costs time, never a wrong result.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "slamtune/common/pose2.h"
+
+namespace slamtune {
+
+inline std::uint64_t KeyBits(double v) { return std::bit_cast<std::uint64_t>(v); }
+inline std::uint64_t KeyInt(std::int64_t v) { return static_cast<std::uint64_t>(v); }
+
+inline void AppendKeyPose(const Pose2& p, std::vector<std::uint64_t>* key) {
+  key->push_back(KeyBits(p.x));
+  key->push_back(KeyBits(p.y));
+  key->push_back(KeyBits(p.theta));
+}
+
+// Length first, so that consecutive strings cannot run into each other.
+inline void AppendKeyString(const std::string& s, std::vector<std::uint64_t>* key) {
+  key->push_back(s.size());
+  for (char c : s) key->push_back(static_cast<unsigned char>(c));
+}
+
+struct KeyWordsHash {
+  std::size_t operator()(const std::vector<std::uint64_t>& key) const {
+    // 64-bit mix per word (splitmix64 finaliser constants).
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
+    for (std::uint64_t w : key) {
+      h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+      h ^= h >> 31;
+      h *= 0xbf58476d1ce4e5b9ULL;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+}  // namespace slamtune
