@@ -248,6 +248,8 @@ int Mapper::CorrectPoses() {
   std::optional<SolveCache::Solved> stored;
   if (solve_cache_) {
     key = SolveCache::KeyOf(params_.solver, params_.ceres_loss_function, nodes, graph_.edges());
+    // The stored barycentres also depend on the laser (range threshold, ...): key it too.
+    AppendGeometryKey(*geometry_, &key);
     stored = solve_cache_->Find(key);
   }
   if (stored) {

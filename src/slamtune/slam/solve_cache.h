@@ -10,7 +10,9 @@
 // every edge's source, target, measurement and information bits in order. An entry holds the
 // optimised node values and SolveSummary (its wall_s is the caller's to set) and, when the
 // caller gives them, the barycentres of the scans at those poses, so that a run taking the
-// stored solve need not recompute every scan's point readout to find them (laser_scan.h).
+// stored solve need not recompute every scan's point readout to find them (laser_scan.h); the
+// mapper then appends the laser geometry's words to the key. Like the MatchCache, a SolveCache
+// must only be shared by runs of the same log.
 //
 // Thread-safe. Two runs making the same solve at once may both compute it (same result).
 // Memory is bounded by a byte budget; when it would be exceeded the oldest half of the
