@@ -60,7 +60,7 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
 }
 
 // What every rank evaluates with: the loaded inputs, the search space's fixed values applied to
-// the base parameters, and the shared scan-match cache.
+// the base parameters, and the work shared between runs (ShareWork: matches, solves, map scores).
 std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
                                                                     const std::map<std::string, double>& fixed,
                                                                     bool no_share, std::size_t share_mb) {
