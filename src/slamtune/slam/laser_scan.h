@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -98,6 +99,16 @@ class LaserScan {
   // Reference pose for distance tests: barycentre or sensor pose (§2.2).
   Pose2 ReferencePose(bool use_barycenter) const { return use_barycenter ? barycenter() : SensorPose(); }
 
+  // A hint for MatchCache (match_cache.h): the id under which the cache last interned this
+  // scan's (log index, readings, corrected pose). The cache checks the id against the interned
+  // contents before using it, so any value, stale or copied, is safe; it only saves a hash
+  // lookup. Relaxed atomic access, so scans shared by threads stay race-free.
+  static constexpr std::uint32_t kNoMatchKeyHint = 0xffffffffu;
+  std::uint32_t match_key_hint() const { return std::atomic_ref<std::uint32_t>(match_key_hint_).load(std::memory_order_relaxed); }
+  void set_match_key_hint(std::uint32_t id) const {
+    std::atomic_ref<std::uint32_t>(match_key_hint_).store(id, std::memory_order_relaxed);
+  }
+
  private:
   void UpdatePoints() const;
 
@@ -114,6 +125,7 @@ class LaserScan {
   mutable std::vector<Eigen::Vector2d> filtered_;
   mutable Pose2 barycenter_;
   mutable BoundingBox2 bounding_box_;
+  alignas(std::atomic_ref<std::uint32_t>::required_alignment) mutable std::uint32_t match_key_hint_ = kNoMatchKeyHint;
 };
 
 // Appends the bits of every field of `g` to an exact cache key (common/key_words.h).

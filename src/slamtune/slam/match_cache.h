@@ -7,25 +7,33 @@
 // (the hash only picks the bucket, so a collision can never return a wrong result):
 //   - the matcher role and every ScanMatcherOptions field that affects results (all but
 //     `threads` and `branch_and_bound`, which are documented as result-independent),
-//   - the penalize / refine flags,
+//   - the penalize / refine flags and the laser geometry,
 //   - the matched scan: log index, address of its (immutable, shared) readings, the bits of
-//     its corrected and sensor poses and of its laser geometry,
+//     its corrected and sensor poses,
 //   - the base scans in order: log index, readings address and the bits of the corrected pose
 //     of each (their geometry must equal the scan's, otherwise the call bypasses the cache).
-// An entry keeps the readings it names alive (holding their owner), so an address in a key cannot be reused by other
-// data while the entry exists. A cache must only be shared by runs of the same log: log indices
-// of different logs mean different scans (the readings address tells them apart anyway).
+// Compact keys: the first group (the same for every call of a run) is interned once as a
+// header id, and each base scan's five words are interned as a 32-bit id, so a key is about
+// ten words plus half a word per base scan instead of five words per base scan (a running
+// buffer of 70 scans: ~45 words, not ~360). An id names its words exactly while any entry
+// refers to it (reference counts; an id is reused only after its last entry is dropped), and a
+// scan remembers its id as a hint that is checked against the interned words before use.
+// The cache holds every readings buffer it has keyed, so an address in a key cannot be reused
+// by other data while the cache lives. A cache must only be shared by runs of the same log:
+// log indices of different logs mean different scans (the readings address tells them apart anyway).
 //
 // Concurrency: thread-safe. Concurrent requests for the same key compute once: the first
-// caller computes, the others wait for its result (a shared future). Memory is bounded by a
-// byte budget; when exceeded, the oldest half of the entries is dropped. Whether an entry was
-// evicted changes only the time, never a result.
+// caller computes, the others wait for its result. Memory is bounded by a byte budget; when
+// exceeded, the oldest half of the finished entries is dropped (with the interned ids only
+// they used). Whether an entry was evicted changes only the time, never a result.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <future>
+#include <array>
+#include <condition_variable>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -56,9 +64,10 @@ struct MatchCacheCounters {
   std::uint64_t bypassed = 0;   // calls whose inputs cannot be keyed exactly (computed, not stored)
   std::uint64_t evictions = 0;  // entries dropped to stay within the budget
   std::size_t entries = 0;      // entries held now
+  std::size_t interned = 0;     // interned base-scan ids held now
   std::size_t bytes = 0;        // approximate bytes held now (keys + results + bookkeeping)
 
-  // One line: "match cache: H hits, W waits, M misses (hit rate X%), E evictions, N entries, B MB".
+  // One line: "match cache: H hits, W waits, M misses (served X% of C matches), ..., B MB".
   std::string ToString() const;
 };
 
@@ -78,23 +87,46 @@ class MatchCache {
   MatchCacheCounters counters() const;
   const MatchCacheOptions& options() const { return options_; }
 
-  // The key words of a call (exposed for tests); empty when the call cannot be keyed exactly.
-  static std::vector<std::uint64_t> KeyOf(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                                          std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+  // The key words of a call as this cache would file it (exposed for tests; ids are this
+  // cache's, so keys of two caches do not compare); empty when the call cannot be keyed
+  // exactly. Base scans it interns for the first time stay interned until the cache is destroyed.
+  std::vector<std::uint64_t> KeyOf(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
+                                   std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
 
  private:
+  // (log index, readings address, corrected pose x, y, theta bits) of a base scan.
+  using ScanWords = std::array<std::uint64_t, 5>;
+  struct ScanWordsHash {
+    std::size_t operator()(const ScanWords& w) const;
+  };
   struct Entry {
-    std::shared_future<MatchResult> result;
-    // Keeps the keyed readings addresses valid: one holder per distinct owner (the log).
-    std::vector<std::shared_ptr<const std::vector<double>>> readings;
+    MatchResult result;
+    bool ready = false;          // false while the first caller computes it
     std::uint64_t sequence = 0;  // insertion order, for eviction
     std::size_t bytes = 0;
   };
+  static constexpr std::uint32_t kFreeId = 0xffffffffu;  // refs_ value of an unused id
+
+  std::vector<std::uint64_t> KeyLocked(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
+                                       std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+  std::uint32_t InternLocked(const LaserScan& scan);
+  void HoldReadingsLocked(const LaserScan& scan);
+  // Adds `delta` (+1 / -1) to the reference count of every base id in `key`; ids left
+  // without references are freed.
+  void ReferenceIdsLocked(const std::vector<std::uint64_t>& key, int delta);
+  void EraseLocked(std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash>::iterator it);
   void EvictOldestHalfLocked();
 
   MatchCacheOptions options_;
   mutable std::mutex mutex_;
+  std::condition_variable computed_;  // signalled when an entry becomes ready or is dropped
   std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
+  std::unordered_map<std::vector<std::uint64_t>, std::uint32_t, KeyWordsHash> headers_;
+  std::unordered_map<ScanWords, std::uint32_t, ScanWordsHash> scan_ids_;
+  std::vector<ScanWords> id_words_;   // by id
+  std::vector<std::uint32_t> refs_;   // by id: entries referring to it, or kFreeId
+  std::vector<std::uint32_t> free_ids_;
+  std::map<std::uint64_t, std::shared_ptr<const std::vector<double>>> readings_;  // by address
   std::uint64_t next_sequence_ = 0;
   MatchCacheCounters counters_;
 };

@@ -70,9 +70,10 @@ TEST(MatchCacheOptions, RejectsAZeroBudget) {
 
 TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   Fixture f;
+  MatchCache cache;
   const auto key = [&](MatchRole role, const ScanMatcherOptions& o, const LaserScan& s,
                        const std::vector<const LaserScan*>& b, bool penalize, bool refine) {
-    return MatchCache::KeyOf(role, o, s, b, penalize, refine);
+    return cache.KeyOf(role, o, s, b, penalize, refine);
   };
   const auto base = key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, true, true);
   ASSERT_FALSE(base.empty());
@@ -100,7 +101,22 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   speed.threads = 3;
   speed.branch_and_bound = !speed.branch_and_bound;
   EXPECT_EQ(base, key(MatchRole::kSequential, speed, f.scan, f.base_ptrs, true, true));
+  // The laser geometry counts.
+  LaserGeometry wider = f.scan.geometry();
+  wider.max_range = 81.0;
+  const auto wider_ptr = std::make_shared<const LaserGeometry>(wider);
+  LaserScan other_laser(wider_ptr, f.scan.ranges_ptr(), f.scan.odometric_pose(), f.scan.time());
+  other_laser.log_index = f.scan.log_index;
+  other_laser.SetCorrectedPose(f.scan.corrected_pose());
+  std::vector<LaserScan> other_bases;
+  for (const LaserScan& b : f.bases) {
+    other_bases.emplace_back(wider_ptr, b.ranges_ptr(), b.odometric_pose(), b.time());
+    other_bases.back().log_index = b.log_index;
+  }
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, other_laser, {&other_bases[0], &other_bases[1], &other_bases[2]},
+                      true, true));
   // One ulp of the scan's pose, of a base pose, the base order and the log index all count.
+  // (The copied bases carry the interning hint of the originals: a stale hint must not count.)
   LaserScan moved = f.scan;
   moved.SetSensorPose({std::nextafter(f.scan.SensorPose().x, 1.0), f.scan.SensorPose().y, f.scan.SensorPose().theta});
   EXPECT_NE(base, key(MatchRole::kSequential, f.options, moved, f.base_ptrs, true, true));
@@ -115,6 +131,50 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   // Same readings data, a copied scan: same key.
   const LaserScan copy = f.scan;
   EXPECT_EQ(base, key(MatchRole::kSequential, f.options, copy, f.base_ptrs, true, true));
+}
+
+// Base scans are named by interned ids: half a word each, not five.
+TEST(MatchCache, KeysAreCompact) {
+  std::vector<LaserScan> bases;
+  for (int i = 0; i < 70; ++i) bases.push_back(RoomScan({0.01 * i, 0, 0}, i));
+  std::vector<const LaserScan*> ptrs;
+  for (const LaserScan& b : bases) ptrs.push_back(&b);
+  const LaserScan scan = RoomScan({0.7, 0, 0}, 70);
+  MatchCache cache;
+  const auto key = cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, ptrs, true, true);
+  EXPECT_EQ(key.size(), 10u + 35u);
+  EXPECT_EQ(cache.counters().interned, 70u);
+  // The same call again, and through copies of the scans: the same key, no new ids.
+  std::vector<LaserScan> copies = bases;
+  std::vector<const LaserScan*> copy_ptrs;
+  for (const LaserScan& b : copies) copy_ptrs.push_back(&b);
+  EXPECT_EQ(key, cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, copy_ptrs, true, true));
+  EXPECT_EQ(cache.counters().interned, 70u);
+}
+
+// Ids freed by eviction are reused for other scans; keys stay exact: a scan interned under a
+// reused id never matches an entry made for the scan that held the id before.
+TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
+  Fixture f;
+  MatchCacheOptions o;
+  o.byte_budget = 1;  // every finished entry is evicted, freeing its ids
+  MatchCache cache(o);
+  ScanMatcher reference(f.options);
+  ScanMatcher matcher(f.options);
+  std::vector<LaserScan> bases = f.bases;  // keeps the hints of earlier rounds: stale, or reused ids
+  for (int round = 0; round < 3; ++round) {
+    for (LaserScan& b : bases) {
+      const Pose2 p = b.corrected_pose();
+      b.SetCorrectedPose({p.x + 0.01 * round, p.y, p.theta});
+    }
+    const std::vector<const LaserScan*> ptrs = {&bases[0], &bases[1], &bases[2]};
+    const MatchResult expected = reference.Match(f.scan, ptrs, true, true);
+    EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, ptrs, true, true), expected));
+  }
+  const MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 3u);
+  EXPECT_EQ(c.interned, 0u);
+  EXPECT_EQ(c.bytes, 0u);
 }
 
 TEST(MatchCache, HitReturnsTheMatchersResult) {
@@ -175,6 +235,7 @@ TEST(MatchCache, EvictionNeverChangesResults) {
   EXPECT_EQ(c.misses, 4u);
   EXPECT_EQ(c.evictions, 4u);
   EXPECT_EQ(c.entries, 0u);
+  EXPECT_EQ(c.interned, 0u);
   EXPECT_EQ(c.bytes, 0u);
 }
 
