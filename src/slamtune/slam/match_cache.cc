@@ -185,6 +185,7 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
     if (it == entries_.end()) break;
     if (it->second.ready) {
       ++(waited ? counters_.waits : counters_.hits);
+      it->second.sequence = next_sequence_++;  // recently used: evicted last
       return it->second.result;
     }
     waited = true;

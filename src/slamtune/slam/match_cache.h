@@ -24,8 +24,9 @@
 //
 // Concurrency: thread-safe. Concurrent requests for the same key compute once: the first
 // caller computes, the others wait for its result. Memory is bounded by a byte budget; when
-// exceeded, the oldest half of the finished entries is dropped (with the interned ids only
-// they used). Whether an entry was evicted changes only the time, never a result.
+// exceeded, the least recently used half of the finished entries is dropped (with the
+// interned ids only they used); a hit counts as a use, so the matches of the log's prefix that
+// every run repeats stay while one-off matches after runs diverge go. Whether an entry was evicted changes only the time, never a result.
 #pragma once
 
 #include <cstddef>
@@ -102,7 +103,7 @@ class MatchCache {
   struct Entry {
     MatchResult result;
     bool ready = false;          // false while the first caller computes it
-    std::uint64_t sequence = 0;  // insertion order, for eviction
+    std::uint64_t sequence = 0;  // last use, for eviction
     std::size_t bytes = 0;
   };
   static constexpr std::uint32_t kFreeId = 0xffffffffu;  // refs_ value of an unused id

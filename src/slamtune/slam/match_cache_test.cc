@@ -239,6 +239,34 @@ TEST(MatchCache, EvictionNeverChangesResults) {
   EXPECT_EQ(c.bytes, 0u);
 }
 
+// Eviction drops the least recently used entries: a hit keeps an old entry.
+TEST(MatchCache, EvictionKeepsRecentlyUsedEntries) {
+  Fixture f;
+  ScanMatcher matcher(f.options);
+  std::size_t two_entries = 0;
+  {
+    MatchCache probe;
+    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);
+    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);
+    two_entries = probe.counters().bytes;
+  }
+  MatchCacheOptions o;
+  o.byte_budget = two_entries + 8;  // a third entry evicts
+  MatchCache cache(o);
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);   // B
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A used again
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, true);   // C: evicts B
+  MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 3u);
+  EXPECT_EQ(c.hits, 1u);
+  EXPECT_GE(c.evictions, 1u);
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A: still there
+  EXPECT_EQ(cache.counters().hits, 2u);
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);  // B: gone
+  EXPECT_EQ(cache.counters().misses, 4u);
+}
+
 // Two runs of the same log sharing a cache: the second is served entirely from it and both
 // equal a run without the cache, bit for bit.
 TEST(MatchCache, LogRunsWithAndWithoutTheCacheAreIdentical) {

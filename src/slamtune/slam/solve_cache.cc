@@ -45,12 +45,13 @@ std::vector<std::uint64_t> SolveCache::KeyOf(const std::string& backend, const s
 
 std::optional<SolveCache::Solved> SolveCache::Find(const std::vector<std::uint64_t>& key) {
   std::lock_guard guard(mutex_);
-  const auto it = entries_.find(key);
+  auto it = entries_.find(key);
   if (it == entries_.end()) {
     ++counters_.misses;
     return std::nullopt;
   }
   ++counters_.hits;
+  it->second.sequence = next_sequence_++;  // recently used: evicted last
   return it->second.solved;
 }
 
@@ -75,9 +76,10 @@ void SolveCache::EvictOldestHalfLocked() {
   if (sequences.empty()) return;
   auto middle = sequences.begin() + static_cast<std::ptrdiff_t>(sequences.size() / 2);
   std::nth_element(sequences.begin(), middle, sequences.end());
-  const std::uint64_t cut = *middle;  // drop entries older than the median (at least one)
+  // Drop the entries used before the median (at least one: with a single entry, that one).
+  const std::uint64_t cut = sequences.size() == 1 ? sequences[0] + 1 : *middle;
   for (auto it = entries_.begin(); it != entries_.end();) {
-    if (it->second.sequence < cut || entries_.size() == 1) {
+    if (it->second.sequence < cut) {
       counters_.bytes -= it->second.bytes;
       ++counters_.evictions;
       it = entries_.erase(it);

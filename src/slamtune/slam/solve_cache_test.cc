@@ -82,6 +82,27 @@ TEST(SolveCache, KeyNamesBackendNodesAndEveryEdgeField) {
   EXPECT_NE(key, SolveCache::KeyOf("spa", "None", fewer.nodes, fewer.edges));
 }
 
+// A hit counts as a use: eviction drops the least recently used entries first.
+TEST(SolveCache, EvictionKeepsRecentlyUsedSolves) {
+  Graph g;
+  const std::size_t one_entry = SolveCache::KeyOf("spa", "None", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
+  SolveCache cache(2 * one_entry + one_entry / 2);  // room for two
+  std::vector<std::vector<std::uint64_t>> keys;
+  for (int k = 0; k < 3; ++k) {
+    Graph v = g;
+    v.nodes[1].x += 0.01 * k;
+    keys.push_back(SolveCache::KeyOf("spa", "None", v.nodes, v.edges));
+  }
+  cache.Store(keys[0], {{}, g.nodes, {}});
+  cache.Store(keys[1], {{}, g.nodes, {}});
+  EXPECT_TRUE(cache.Find(keys[0]).has_value());  // A used after B was stored
+  cache.Store(keys[2], {{}, g.nodes, {}});       // evicts B, not A
+  EXPECT_EQ(cache.counters().evictions, 1u);
+  EXPECT_TRUE(cache.Find(keys[0]).has_value());
+  EXPECT_FALSE(cache.Find(keys[1]).has_value());
+  EXPECT_TRUE(cache.Find(keys[2]).has_value());
+}
+
 TEST(SolveCache, BudgetEvictsButResultsStayExact) {
   const auto solver = MakeSolver("spa");
   Graph g;
