@@ -4,9 +4,12 @@
 // a bucket, so a collision costs time, never a wrong result.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,7 +33,7 @@ inline void AppendKeyString(const std::string& s, std::vector<std::uint64_t>* ke
 }
 
 struct KeyWordsHash {
-  std::size_t operator()(const std::vector<std::uint64_t>& key) const {
+  std::size_t operator()(std::span<const std::uint64_t> key) const {
     // 64-bit mix per word (splitmix64 finaliser constants).
     std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ key.size();
     for (std::uint64_t w : key) {
@@ -41,6 +44,21 @@ struct KeyWordsHash {
     }
     return static_cast<std::size_t>(h);
   }
+  std::size_t operator()(const std::vector<std::uint64_t>& key) const { return (*this)(std::span(key)); }
+  template <std::size_t N>
+  std::size_t operator()(const std::array<std::uint64_t, N>& key) const {
+    return (*this)(std::span<const std::uint64_t>(key));
+  }
 };
+
+// Least-recently-used eviction of half a cache: given the last-use sequence numbers of the
+// entries that may go, the cut below which they are dropped (the median; with one entry, past
+// it, so that eviction always frees something). Takes the numbers by value (reorders them).
+inline std::uint64_t LeastRecentlyUsedHalfCut(std::vector<std::uint64_t> last_uses) {
+  if (last_uses.size() <= 1) return last_uses.empty() ? 0 : last_uses[0] + 1;
+  const auto middle = last_uses.begin() + static_cast<std::ptrdiff_t>(last_uses.size() / 2);
+  std::nth_element(last_uses.begin(), middle, last_uses.end());
+  return *middle;
+}
 
 }  // namespace slamtune

@@ -33,5 +33,18 @@ TEST(KeyWords, PoseAppendsThreeWordsAndHashFollowsEquality) {
   EXPECT_NE(KeyWordsHash{}(a), KeyWordsHash{}(b));  // not guaranteed in general; true for this mix
 }
 
+TEST(KeyWords, HashOfAnArrayEqualsHashOfTheSameWordsInAVector) {
+  const std::array<std::uint64_t, 3> a = {1, 2, 3};
+  const std::vector<std::uint64_t> v = {1, 2, 3};
+  EXPECT_EQ(KeyWordsHash{}(a), KeyWordsHash{}(v));
+}
+
+TEST(KeyWords, LeastRecentlyUsedHalfCutDropsTheOlderHalfAndAtLeastOne) {
+  EXPECT_EQ(LeastRecentlyUsedHalfCut({}), 0u);
+  EXPECT_EQ(LeastRecentlyUsedHalfCut({7}), 8u);      // the single entry goes
+  EXPECT_EQ(LeastRecentlyUsedHalfCut({9, 3}), 9u);   // 3 goes, 9 stays
+  EXPECT_EQ(LeastRecentlyUsedHalfCut({5, 1, 4, 2}), 4u);  // 1 and 2 go
+}
+
 }  // namespace
 }  // namespace slamtune

@@ -52,16 +52,6 @@ std::string MatchCacheCounters::ToString() const {
 
 MatchCache::MatchCache(const MatchCacheOptions& options) : options_(options) { options_.Validate(); }
 
-std::size_t MatchCache::ScanWordsHash::operator()(const ScanWords& w) const {
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-  for (std::uint64_t x : w) {
-    h ^= x + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    h ^= h >> 31;
-    h *= 0xbf58476d1ce4e5b9ULL;
-  }
-  return static_cast<std::size_t>(h ^ (h >> 29));
-}
-
 std::vector<std::uint64_t> MatchCache::KeyOf(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
                                              std::span<const LaserScan* const> base_scans, bool penalize,
                                              bool refine) {
@@ -134,7 +124,6 @@ std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatch
   AppendPose(scan.corrected_pose(), &key);
   AppendPose(scan.SensorPose(), &key);
   key.push_back(base_scans.size());
-  HoldReadingsLocked(scan);
   for (std::size_t i = 0; i < base_scans.size(); i += 2) {
     std::uint64_t word = InternLocked(*base_scans[i]);
     if (i + 1 < base_scans.size()) word |= static_cast<std::uint64_t>(InternLocked(*base_scans[i + 1])) << 32;
@@ -193,6 +182,7 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
   }
   ++counters_.misses;
   ReferenceIdsLocked(key, +1);
+  HoldReadingsLocked(scan);  // base scans' readings are held when they are interned
   Entry entry;
   entry.sequence = next_sequence_++;
   entry.bytes = key.capacity() * sizeof(std::uint64_t) + kEntryOverheadBytes;
@@ -202,7 +192,7 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
   auto inserted = entries_.emplace(std::move(key), entry).first;
   const std::vector<std::uint64_t>* own_key = &inserted->first;
   Entry* own = &inserted->second;
-  if (counters_.bytes > options_.byte_budget) EvictOldestHalfLocked();
+  if (counters_.bytes > options_.byte_budget) EvictLeastRecentlyUsedHalfLocked();
   lock.unlock();
   try {
     MatchResult result = matcher.Match(scan, base_scans, penalize, refine);
@@ -210,7 +200,7 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
     own->result = result;
     own->ready = true;
     computed_.notify_all();
-    if (counters_.bytes > options_.byte_budget) EvictOldestHalfLocked();
+    if (counters_.bytes > options_.byte_budget) EvictLeastRecentlyUsedHalfLocked();
     return result;
   } catch (...) {
     // Forget the failed entry so that waiters and later calls compute again.
@@ -222,20 +212,17 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
   }
 }
 
-void MatchCache::EvictOldestHalfLocked() {
-  std::vector<std::uint64_t> sequences;
-  sequences.reserve(entries_.size());
+void MatchCache::EvictLeastRecentlyUsedHalfLocked() {
+  std::vector<std::uint64_t> last_uses;
+  last_uses.reserve(entries_.size());
   for (const auto& [key, entry] : entries_) {
-    if (entry.ready) sequences.push_back(entry.sequence);
+    if (entry.ready) last_uses.push_back(entry.sequence);
   }
-  if (sequences.empty()) return;
-  const auto middle = sequences.begin() + static_cast<std::ptrdiff_t>(sequences.size() / 2);
-  std::nth_element(sequences.begin(), middle, sequences.end());
-  // With one finished entry, drop it; otherwise drop those older than the median.
-  const std::uint64_t keep_from = sequences.size() == 1 ? sequences[0] + 1 : *middle;
+  if (last_uses.empty()) return;
+  const std::uint64_t cut = LeastRecentlyUsedHalfCut(std::move(last_uses));
   for (auto it = entries_.begin(); it != entries_.end();) {
     auto next = std::next(it);
-    if (it->second.ready && it->second.sequence < keep_from) {
+    if (it->second.ready && it->second.sequence < cut) {
       ++counters_.evictions;
       EraseLocked(it);
     }

@@ -26,14 +26,14 @@
 // caller computes, the others wait for its result. Memory is bounded by a byte budget; when
 // exceeded, the least recently used half of the finished entries is dropped (with the
 // interned ids only they used); a hit counts as a use, so the matches of the log's prefix that
-// every run repeats stay while one-off matches after runs diverge go. Whether an entry was evicted changes only the time, never a result.
+// every run repeats stay while one-off matches after runs diverge go. Whether an entry was
+// evicted changes only the time, never a result.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
-#include <functional>
 #include <array>
 #include <condition_variable>
+#include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -97,9 +97,6 @@ class MatchCache {
  private:
   // (log index, readings address, corrected pose x, y, theta bits) of a base scan.
   using ScanWords = std::array<std::uint64_t, 5>;
-  struct ScanWordsHash {
-    std::size_t operator()(const ScanWords& w) const;
-  };
   struct Entry {
     MatchResult result;
     bool ready = false;          // false while the first caller computes it
@@ -116,14 +113,14 @@ class MatchCache {
   // without references are freed.
   void ReferenceIdsLocked(const std::vector<std::uint64_t>& key, int delta);
   void EraseLocked(std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash>::iterator it);
-  void EvictOldestHalfLocked();
+  void EvictLeastRecentlyUsedHalfLocked();
 
   MatchCacheOptions options_;
   mutable std::mutex mutex_;
   std::condition_variable computed_;  // signalled when an entry becomes ready or is dropped
   std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
   std::unordered_map<std::vector<std::uint64_t>, std::uint32_t, KeyWordsHash> headers_;
-  std::unordered_map<ScanWords, std::uint32_t, ScanWordsHash> scan_ids_;
+  std::unordered_map<ScanWords, std::uint32_t, KeyWordsHash> scan_ids_;
   std::vector<ScanWords> id_words_;   // by id
   std::vector<std::uint32_t> refs_;   // by id: entries referring to it, or kFreeId
   std::vector<std::uint32_t> free_ids_;

@@ -62,22 +62,19 @@ void SolveCache::Store(std::vector<std::uint64_t> key, Solved solved) {
   entry.solved = std::move(solved);
   std::lock_guard guard(mutex_);
   if (entry.bytes > byte_budget_ || entries_.count(key) != 0) return;
-  if (counters_.bytes + entry.bytes > byte_budget_) EvictOldestHalfLocked();
+  if (counters_.bytes + entry.bytes > byte_budget_) EvictLeastRecentlyUsedHalfLocked();
   entry.sequence = next_sequence_++;
   counters_.bytes += entry.bytes;
   entries_.emplace(std::move(key), std::move(entry));
   counters_.entries = entries_.size();
 }
 
-void SolveCache::EvictOldestHalfLocked() {
-  std::vector<std::uint64_t> sequences;
-  sequences.reserve(entries_.size());
-  for (const auto& [key, entry] : entries_) sequences.push_back(entry.sequence);
-  if (sequences.empty()) return;
-  auto middle = sequences.begin() + static_cast<std::ptrdiff_t>(sequences.size() / 2);
-  std::nth_element(sequences.begin(), middle, sequences.end());
-  // Drop the entries used before the median (at least one: with a single entry, that one).
-  const std::uint64_t cut = sequences.size() == 1 ? sequences[0] + 1 : *middle;
+void SolveCache::EvictLeastRecentlyUsedHalfLocked() {
+  std::vector<std::uint64_t> last_uses;
+  last_uses.reserve(entries_.size());
+  for (const auto& [key, entry] : entries_) last_uses.push_back(entry.sequence);
+  if (last_uses.empty()) return;
+  const std::uint64_t cut = LeastRecentlyUsedHalfCut(std::move(last_uses));
   for (auto it = entries_.begin(); it != entries_.end();) {
     if (it->second.sequence < cut) {
       counters_.bytes -= it->second.bytes;

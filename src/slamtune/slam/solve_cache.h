@@ -17,7 +17,8 @@
 // Thread-safe. Two runs making the same solve at once may both compute it (same result).
 // Memory is bounded by a byte budget; when it would be exceeded the least recently used half
 // of the entries is dropped (a hit counts as a use: the solves of the log's shared prefix,
-// made first and used by every run, must not go first). Whether an entry was kept changes only the time, never a result.
+// made first and used by every run, must not go first). Whether an entry was kept changes
+// only the time, never a result.
 #pragma once
 
 #include <cstddef>
@@ -74,7 +75,7 @@ class SolveCache {
     std::uint64_t sequence = 0;  // last use, for eviction
     std::size_t bytes = 0;
   };
-  void EvictOldestHalfLocked();
+  void EvictLeastRecentlyUsedHalfLocked();
 
   std::size_t byte_budget_;
   mutable std::mutex mutex_;
