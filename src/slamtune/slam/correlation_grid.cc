@@ -101,19 +101,23 @@ void CorrelationGrid::Clear() {
   const std::size_t box = width * static_cast<std::size_t>(touched_y1_ - touched_y0_ + 1);
   const int half = geometry_.kernel_half;
   const std::size_t side = static_cast<std::size_t>(2 * half + 1);
-  if (smeared_centres_.size() * side * static_cast<std::size_t>(padded_side_) < box) {
+  // Locals: the stores below could alias the members as far as the compiler knows.
+  const std::ptrdiff_t stride = geometry_.stride;
+  const int padded_side = padded_side_;
+  std::uint8_t* const data = data_.data();
+  if (smeared_centres_.size() * side * static_cast<std::size_t>(padded_side) < box) {
     // Zero each written kernel square, in the padded 16-byte chunks Smear used: every
     // non-zero byte lies in one of these squares, and the extra bytes of a padded row are
     // either zero or inside another square of the list.
     for (const std::int32_t centre : smeared_centres_) {
-      std::uint8_t* row = data_.data() + (centre - half - half * geometry_.stride);
-      for (std::size_t j = 0; j < side; ++j, row += geometry_.stride) {
-        for (int i0 = 0; i0 < padded_side_; i0 += 16) std::memset(row + i0, 0, 16);
+      std::uint8_t* row = data + (centre - half - half * stride);
+      for (std::size_t j = 0; j < side; ++j, row += stride) {
+        for (int i0 = 0; i0 < padded_side; i0 += 16) std::memset(row + i0, 0, 16);
       }
     }
   } else {
     for (int y = touched_y0_; y <= touched_y1_; ++y) {
-      std::memset(data_.data() + static_cast<std::size_t>(touched_x0_ + y * geometry_.stride), 0, width);
+      std::memset(data + (touched_x0_ + y * stride), 0, width);
     }
   }
   smeared_centres_.clear();
@@ -121,15 +125,18 @@ void CorrelationGrid::Clear() {
   touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();
 }
 
-void CorrelationGrid::Smear(int stored_x, int stored_y) {
+void CorrelationGrid::Smear(std::int32_t centre) {
   // Max-merge of the kernel centred on the cell (§4.3); the border b = h + 1 keeps every
   // kernel cell inside the stored grid for any ROI cell.
   const int half = geometry_.kernel_half;
-  for (int j = -half; j <= half; ++j) {
-    std::uint8_t* row = data_.data() + (stored_x - half) + (stored_y + j) * geometry_.stride;
-    const std::uint8_t* k = padded_kernel_.data() + padded_side_ * (j + half);
+  const int side = 2 * half + 1;
+  const std::ptrdiff_t stride = geometry_.stride;
+  const int padded_side = padded_side_;
+  std::uint8_t* row = data_.data() + (centre - half - half * stride);
+  const std::uint8_t* k = padded_kernel_.data();
+  for (int j = 0; j < side; ++j, row += stride, k += padded_side) {
     // Whole 16-byte chunks; bytes past the kernel's edge meet zeros and keep their value.
-    for (int i0 = 0; i0 < padded_side_; i0 += 16) {
+    for (int i0 = 0; i0 < padded_side; i0 += 16) {
 #if defined(__SSE2__)
       // Explicit unsigned byte max: GCC keeps the loop below scalar (row and kernel may alias).
       __m128i* dst = reinterpret_cast<__m128i*>(row + i0);
@@ -140,26 +147,52 @@ void CorrelationGrid::Smear(int stored_x, int stored_y) {
 #endif
     }
   }
-  Touch(stored_x - half, stored_y - half, stored_x + half, stored_y + half);
 }
 
-bool CorrelationGrid::AddPoint(const Eigen::Vector2d& world) {
-  // Karto casts non-finite coordinates to int (an out-of-range value on x86); we test
-  // explicitly (§4.3, last item of the back-face filter).
-  if (!std::isfinite(world.x()) || !std::isfinite(world.y())) return false;
-  const double gx = KartoRound((world.x() - roi_origin_.x()) * scale_);
-  const double gy = KartoRound((world.y() - roi_origin_.y()) * scale_);
-  // Compare in double before the cast: a far point must not overflow the 32-bit cast.
-  if (!(gx >= 0.0 && gx < geometry_.roi_side && gy >= 0.0 && gy < geometry_.roi_side)) return false;
-  const int x = static_cast<int>(gx) + geometry_.border;
-  const int y = static_cast<int>(gy) + geometry_.border;
-  std::uint8_t& cell = data_[static_cast<std::size_t>(x + y * geometry_.stride)];
+bool CorrelationGrid::CellOf(const Eigen::Vector2d& world, int* stored_x, int* stored_y) const {
+  // Karto rounds half away from zero and then tests 0 <= cell < G (§1.2, §4.3); Karto casts
+  // non-finite coordinates to int, we reject them. The same decision and cell without floor
+  // or ceil (which are library calls on baseline x86-64): for v >= 0, Round(v) =
+  // trunc(v + 0.5), and that is < G exactly when v + 0.5 < G; for v < 0, Round(v) =
+  // ceil(v - 0.5) is in range only when it is 0, that is when v - 0.5 > -1. NaN and inf fail
+  // every test.
+  const int side = geometry_.roi_side;
+  auto axis = [side](double v, int* cell) {
+    if (v >= 0.0) {
+      const double u = v + 0.5;
+      if (!(u < side)) return false;
+      *cell = static_cast<int>(u);
+      return true;
+    }
+    if (!(v - 0.5 > -1.0)) return false;
+    *cell = 0;
+    return true;
+  };
+  int gx, gy;
+  if (!axis((world.x() - roi_origin_.x()) * scale_, &gx) || !axis((world.y() - roi_origin_.y()) * scale_, &gy)) {
+    return false;
+  }
+  *stored_x = gx + geometry_.border;
+  *stored_y = gy + geometry_.border;
+  return true;
+}
+
+bool CorrelationGrid::InsertCell(int stored_x, int stored_y) {
+  const std::int32_t index = stored_x + stored_y * geometry_.stride;
+  std::uint8_t& cell = data_[static_cast<std::size_t>(index)];
   // "Already 100 -> skip, no smear" (§4.3 [QUIRK]): a kernel value may have rounded to 100.
   if (cell == kCorrelationOccupied) return false;
   cell = kCorrelationOccupied;
-  Smear(x, y);
-  smeared_centres_.push_back(x + y * geometry_.stride);
+  Smear(index);
+  smeared_centres_.push_back(index);
+  const int half = geometry_.kernel_half;
+  Touch(stored_x - half, stored_y - half, stored_x + half, stored_y + half);
   return true;
+}
+
+bool CorrelationGrid::AddPoint(const Eigen::Vector2d& world) {
+  int x, y;
+  return CellOf(world, &x, &y) && InsertCell(x, y);
 }
 
 void CorrelationGrid::AddScans(std::span<const LaserScan* const> base_scans, const Eigen::Vector2d& viewpoint) {

@@ -91,7 +91,12 @@ class CorrelationGrid {
   static constexpr int kPadding = 64;
 
  private:
-  void Smear(int stored_x, int stored_y);
+  // The stored cell of a world point, or false if outside the ROI or not finite (§4.3).
+  bool CellOf(const Eigen::Vector2d& world, int* stored_x, int* stored_y) const;
+  // Sets a stored cell to 100 and smears it, unless it already holds 100 (§4.3).
+  bool InsertCell(int stored_x, int stored_y);
+  // Max-merges the kernel centred on a stored linear index.
+  void Smear(std::int32_t centre);
   void Touch(int x0, int y0, int x1, int y1) {
     touched_x0_ = std::min(touched_x0_, x0);
     touched_y0_ = std::min(touched_y0_, y0);

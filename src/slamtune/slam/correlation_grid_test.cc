@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "slamtune/common/karto_math.h"
 #include "slamtune/slam/testing/synthetic_room.h"
 
 namespace slamtune::slam {
@@ -131,6 +132,48 @@ TEST(CorrelationGrid, SkipsNonFiniteAndOutsideRoiPoints) {
   EXPECT_FALSE(grid.AddPoint({1e12, 0.0}));  // would overflow a 32-bit cast
   EXPECT_TRUE(grid.AddPoint({-16.0 + 640 * 0.05, 0.0}));  // last ROI cell; smear spills into the border
   EXPECT_EQ(grid.ValueAt(641, 320), 25);
+}
+
+// AddPoint decides and places by truncation; the reference is §1.2's rounding followed by
+// the ROI test, on values at and around every rounding and ROI boundary. A resolution of
+// 0.25 m keeps (w - origin) * scale exact at the half-cell boundaries.
+TEST(CorrelationGrid, InsertionCellIsKartoRoundOfTheWorldPoint) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto make_grid = [] {
+    CorrelationGrid grid(8.0, 0.25, 0.25, 12.0);
+    grid.SetRoiOrigin({-16.0, -16.0});
+    return grid;
+  };
+  const int side = make_grid().geometry().roi_side;
+  std::vector<double> cells = {nan, inf, -inf, 1e12, -1e12, 0.0, -0.0};
+  for (const double c : {-1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 7.5, side - 1.0, side - 0.5, static_cast<double>(side)}) {
+    cells.push_back(c);
+    cells.push_back(std::nextafter(c, -inf));
+    cells.push_back(std::nextafter(c, inf));
+    cells.push_back(c + 1e-9);
+    cells.push_back(c - 1e-9);
+  }
+  int accepted = 0, rejected = 0;
+  for (const double cx : cells) {
+    for (const double cy : {3.0, cx}) {
+      CorrelationGrid grid = make_grid();
+      const Eigen::Vector2d world(-16.0 + cx / grid.scale(), -16.0 + cy / grid.scale());
+      const double rx = KartoRound((world.x() + 16.0) * grid.scale());
+      const double ry = KartoRound((world.y() + 16.0) * grid.scale());
+      const bool inside = rx >= 0.0 && rx < side && ry >= 0.0 && ry < side;
+      SCOPED_TRACE(::testing::Message() << "cell " << cx << ", " << cy);
+      ASSERT_EQ(grid.AddPoint(world), inside);
+      if (!inside) {
+        ++rejected;
+        continue;
+      }
+      ++accepted;
+      EXPECT_EQ(grid.ValueAt(static_cast<int>(rx), static_cast<int>(ry)), kCorrelationOccupied);
+    }
+  }
+  EXPECT_GT(accepted, 20);
+  EXPECT_GT(rejected, 20);
 }
 
 // The grid is reused and only the written region cleared: building B after A must give the

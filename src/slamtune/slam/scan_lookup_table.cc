@@ -1,6 +1,7 @@
 #include "slamtune/slam/scan_lookup_table.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
@@ -21,10 +22,28 @@ void ScanLookupTable::Compute(const LaserScan& scan, double angle_center, double
   const Pose2 sensor = scan.SensorPose();
   const double inv_c = std::cos(0.0 - sensor.theta), inv_s = std::sin(0.0 - sensor.theta);
   local_points_.resize(points.size());
+  invalid_.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double dx = points[i].x() - sensor.x, dy = points[i].y() - sensor.y;
     local_points_[i] = {inv_c * dx - inv_s * dy, inv_s * dx + inv_c * dy};
+    invalid_[i] = std::isnan(ranges[i]) || std::isinf(ranges[i]);
   }
+
+  // The tables are a function of exactly these inputs; when every bit repeats the previous
+  // call (the near chains of one scan are matched from the same pose), they are kept.
+  const double inputs[] = {angle_center, angle_offset, angle_step, grid_origin.x(), grid_origin.y(), scale,
+                           static_cast<double>(stride)};
+  static_assert(sizeof(inputs) == sizeof(inputs_));
+  const bool same = computed_ && std::memcmp(inputs, inputs_, sizeof(inputs)) == 0 &&
+                    previous_local_points_.size() == local_points_.size() &&
+                    std::memcmp(previous_local_points_.data(), local_points_.data(),
+                                local_points_.size() * sizeof(Eigen::Vector2d)) == 0 &&
+                    previous_invalid_ == invalid_;
+  if (same) return;
+  std::memcpy(inputs_, inputs, sizeof(inputs));
+  previous_local_points_ = local_points_;
+  previous_invalid_ = invalid_;
+  computed_ = true;
 
   angles_.resize(static_cast<std::size_t>(num_angles));
   offsets_.resize(static_cast<std::size_t>(num_angles) * points.size());
@@ -35,7 +54,7 @@ void ScanLookupTable::Compute(const LaserScan& scan, double angle_center, double
     const double c = std::cos(angle), s = std::sin(angle);
     std::int32_t* out = offsets_.data() + static_cast<std::size_t>(k) * points.size();
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (std::isnan(ranges[i]) || std::isinf(ranges[i])) {
+      if (invalid_[i]) {
         out[i] = kInvalidLookup;
         continue;
       }

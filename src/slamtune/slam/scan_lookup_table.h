@@ -64,6 +64,12 @@ class ScanLookupTable {
   std::vector<double> angles_;
   std::vector<std::int32_t> offsets_;  // K x num_beams, heading-major
   std::vector<Eigen::Vector2d> local_points_;  // scratch: points in the sensor frame
+  std::vector<std::uint8_t> invalid_;          // scratch: reading is NaN or +-inf
+  // Inputs of the tables in offsets_ (Compute skips the work when they repeat bit for bit).
+  bool computed_ = false;
+  double inputs_[7] = {};
+  std::vector<Eigen::Vector2d> previous_local_points_;
+  std::vector<std::uint8_t> previous_invalid_;
   std::vector<std::int32_t> safe_, checked_;
   std::vector<std::size_t> safe_begin_, checked_begin_;  // K + 1 boundaries each
 };

@@ -67,5 +67,68 @@ TEST(ScanLookupTable, PartitionSeparatesEntriesThatMayLeaveTheGrid) {
   EXPECT_EQ(checked[0], all[3]);
 }
 
+// A table reused across calls keeps its previous tables only when every input repeats: after
+// any change (scan readings, its pose, a reading turning non-finite, headings, grid origin,
+// scale, stride) it must equal a table computed fresh from the new inputs.
+TEST(ScanLookupTable, ReusedTableEqualsFreshTableAfterAnyInputChange) {
+  const double nan = std::nan("");
+  auto base = std::make_shared<const std::vector<double>>(std::vector<double>{1.0, 2.0, 3.0, 4.0});
+  auto other = std::make_shared<const std::vector<double>>(std::vector<double>{1.0, 2.0, 3.5, 4.0});
+  auto with_nan = std::make_shared<const std::vector<double>>(std::vector<double>{1.0, nan, 3.0, 4.0});
+  struct Inputs {
+    const char* name;
+    std::shared_ptr<const std::vector<double>> ranges;
+    Pose2 pose;
+    double center, offset, step;
+    Eigen::Vector2d origin;
+    double scale;
+    std::int32_t stride;
+  };
+  const Inputs reference{"reference", base, {1.0, 2.0, 0.3}, 0.3, 0.1, 0.05, {5.3, -2.1}, 20.0, 648};
+  std::vector<Inputs> changes(8, reference);
+  changes[0].name = "same inputs";
+  changes[1].name = "other readings";
+  changes[1].ranges = other;
+  changes[2].name = "a reading becomes NaN";
+  changes[2].ranges = with_nan;
+  changes[3].name = "scan pose";
+  changes[3].pose.y += 1e-9;
+  changes[4].name = "heading centre";
+  changes[4].center = std::nextafter(0.3, 1.0);
+  changes[5].name = "grid origin";
+  changes[5].origin.x() += 0.025;
+  changes[6].name = "scale and headings";
+  changes[6].scale = 40.0;
+  changes[6].offset = 0.2;
+  changes[7].name = "stride";
+  changes[7].stride = 656;
+  auto compute = [](ScanLookupTable* table, const Inputs& in) {
+    const LaserScan scan(FourBeams(), in.ranges, in.pose, 0.0);
+    table->Compute(scan, in.center, in.offset, in.step, in.origin, in.scale, in.stride);
+  };
+  auto contents = [](const ScanLookupTable& t) {
+    std::vector<double> v;
+    for (int k = 0; k < t.num_angles(); ++k) {
+      v.push_back(t.angle(k));
+      for (const std::int32_t o : t.offsets(k)) v.push_back(o);
+    }
+    return v;
+  };
+  int differing = 0;
+  for (const Inputs& change : changes) {
+    SCOPED_TRACE(change.name);
+    ScanLookupTable reused, fresh, first;
+    compute(&first, reference);
+    compute(&reused, reference);
+    compute(&reused, change);
+    compute(&fresh, change);
+    EXPECT_EQ(contents(reused), contents(fresh));
+    differing += contents(fresh) != contents(first);
+  }
+  // Readings, NaN, headings, scale and stride alter the tables; the pose and the origin enter
+  // only through rounding (the points are taken back into the sensor frame) and do not here.
+  EXPECT_EQ(differing, 5);
+}
+
 }  // namespace
 }  // namespace slamtune::slam

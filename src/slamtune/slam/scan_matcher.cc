@@ -100,7 +100,9 @@ struct ScanMatcher::Impl {
   CorrelationGrid grid;
   SearchProbabilityGrid probabilities;
   // Buffers reused across calls.
-  ScanLookupTable table;
+  // Lookup tables of the coarse [0] and fine [1] passes, kept apart so that each can be
+  // reused when its inputs repeat (ScanLookupTable::Compute).
+  ScanLookupTable tables[2];
   CandidateCells cells;
   std::vector<double> offsets;  // lattice offsets from the centre, both axes
   std::vector<std::int32_t> sums;
@@ -117,6 +119,7 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
                                         double step_xy, double angle_offset, double angle_step, bool penalize,
                                         bool fine, Pose2* mean, Eigen::Matrix3d* cov) {
   // §4.4: lookup tables for the headings of this pass.
+  ScanLookupTable& table = tables[fine ? 1 : 0];
   table.Compute(scan, center.theta, angle_offset, angle_step, grid.roi_origin(), grid.scale(),
                 grid.geometry().stride);
   const int num_angles = table.num_angles();
