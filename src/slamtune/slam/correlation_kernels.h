@@ -77,10 +77,18 @@ struct RowScratch {
   std::vector<PartialOffset> partial;   // checked entries in range for part of it
 };
 
+// The block summer of SumStepTwoColumns: SumBlock (SSE2 or portable).
+struct BaselineBlocks {
+  template <typename Acc, int kBlock>
+  static void Sum(const std::uint8_t* base, std::span<const std::int32_t> offsets, Acc* out) {
+    SumBlock<Acc, kBlock>(base, offsets, out);
+  }
+};
+
 // Candidates x in [x_begin, x_end) of a row whose candidates are two cells apart (every
 // coarse row, §4.5): candidate x has stored index row0 + 2x. Writes out[x*K + k] for every
 // heading k. The grid must be readable 2*kBlock bytes past data_size (zero padding).
-template <typename Acc, int kBlock>
+template <typename Acc, int kBlock, typename Blocks = BaselineBlocks>
 void SumStepTwoColumns(const std::uint8_t* grid, std::int64_t data_size, const ScanLookupTable& table,
                        std::int32_t row0, int x_begin, int x_end, RowScratch<Acc>* scratch, std::int32_t* out) {
   const int num_angles = table.num_angles();
@@ -106,8 +114,8 @@ void SumStepTwoColumns(const std::uint8_t* grid, std::int64_t data_size, const S
     std::fill(acc, acc + padded, Acc{0});
     for (int x0 = x_begin; x0 < x_end; x0 += kBlock) {
       const std::uint8_t* base = grid + row0 + 2 * x0;
-      SumBlock<Acc, kBlock>(base, table.safe_offsets(k), acc + (x0 - x_begin));
-      SumBlock<Acc, kBlock>(base, scratch->whole_row, acc + (x0 - x_begin));
+      Blocks::template Sum<Acc, kBlock>(base, table.safe_offsets(k), acc + (x0 - x_begin));
+      Blocks::template Sum<Acc, kBlock>(base, scratch->whole_row, acc + (x0 - x_begin));
     }
     for (const PartialOffset& p : scratch->partial) {
       const std::uint8_t* base = grid + (static_cast<std::int64_t>(row0) + p.offset);
@@ -117,6 +125,32 @@ void SumStepTwoColumns(const std::uint8_t* grid, std::int64_t data_size, const S
       out[static_cast<std::size_t>(x) * num_angles + k] = static_cast<std::int32_t>(acc[x - x_begin]);
     }
   }
+}
+
+// The same sums with 32-byte AVX2 vectors (16 candidates per vector), for 16-bit
+// accumulators and kBlock 16 or 32. Integer sums, so the results equal SumStepTwoColumns'
+// bit for bit (tested). Call only when Avx2Available(); defined in correlation_kernels.cc.
+template <int kBlock>
+void SumStepTwoColumnsAvx2(const std::uint8_t* grid, std::int64_t data_size, const ScanLookupTable& table,
+                           std::int32_t row0, int x_begin, int x_end, RowScratch<std::uint16_t>* scratch,
+                           std::int32_t* out);
+
+// Whether this CPU runs the AVX2 kernels (checked once), and the switch the search uses:
+// AVX2 when available unless SLAMTUNE_NO_AVX2 is set in the environment.
+bool Avx2Available();
+bool UseAvx2();
+
+// Dispatches one step-two row to the AVX2 or the baseline kernel.
+template <typename Acc, int kBlock>
+void SumStepTwoColumnsFastest(const std::uint8_t* grid, std::int64_t data_size, const ScanLookupTable& table,
+                              std::int32_t row0, int x_begin, int x_end, RowScratch<Acc>* scratch, std::int32_t* out) {
+  if constexpr (std::is_same_v<Acc, std::uint16_t> && (kBlock == 16 || kBlock == 32)) {
+    if (UseAvx2()) {
+      SumStepTwoColumnsAvx2<kBlock>(grid, data_size, table, row0, x_begin, x_end, scratch, out);
+      return;
+    }
+  }
+  SumStepTwoColumns<Acc, kBlock>(grid, data_size, table, row0, x_begin, x_end, scratch, out);
 }
 
 }  // namespace slamtune::slam::internal

@@ -10,7 +10,7 @@ namespace slamtune::slam {
 namespace {
 
 using internal::RowScratch;
-using internal::SumStepTwoColumns;
+using internal::SumStepTwoColumnsFastest;
 
 // Below this many byte reads per call the thread start-up costs more than it saves.
 constexpr std::int64_t kMinReadsPerThread = 200000;
@@ -51,9 +51,9 @@ void SumRows(const std::uint8_t* grid, std::int64_t data_size, const ScanLookupT
     if (!IsStepTwoRow(row, cells.nx)) {
       SumIrregularRow(grid, data_size, table, row, cells.nx, out);
     } else if (cells.nx <= 16) {
-      SumStepTwoColumns<Acc, 16>(grid, data_size, table, row[0], 0, cells.nx, &scratch, out);
+      SumStepTwoColumnsFastest<Acc, 16>(grid, data_size, table, row[0], 0, cells.nx, &scratch, out);
     } else {
-      SumStepTwoColumns<Acc, 32>(grid, data_size, table, row[0], 0, cells.nx, &scratch, out);
+      SumStepTwoColumnsFastest<Acc, 32>(grid, data_size, table, row[0], 0, cells.nx, &scratch, out);
     }
   }
 }

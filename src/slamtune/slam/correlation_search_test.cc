@@ -1,4 +1,5 @@
 #include "slamtune/slam/correlation_search.h"
+#include "slamtune/slam/correlation_kernels.h"
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,37 @@ TEST(CorrelationSearch, WideScansUse32BitLanes) {
   const Fixture f(700, 3);
   ExpectMatchesReference(f, StepTwoLattice(648), 1);
   ExpectMatchesReference(f, IrregularLattice(648), 1);
+}
+
+// The AVX2 row kernel (used when the CPU has it) against the SSE2/portable one, for both
+// block widths, whole and partial column ranges, and rows whose far entries are checked.
+TEST(CorrelationSearch, Avx2RowKernelEqualsBaseline) {
+  if (!internal::Avx2Available()) GTEST_SKIP() << "CPU without AVX2";
+  const Fixture f(180, 5);
+  ScanLookupTable table = f.table;
+  const CandidateCells cells = StepTwoLattice(648);
+  const auto [lo, hi] = std::minmax_element(cells.index.begin(), cells.index.end());
+  table.Partition(*lo, *hi, f.size);
+  const int k_count = table.num_angles();
+  internal::RowScratch<std::uint16_t> scratch;
+  int compared = 0;
+  for (const int y : {0, 40, 80}) {
+    const std::int32_t row0 = cells.index[static_cast<std::size_t>(y) * cells.nx];
+    for (const auto& [x_begin, x_end] : {std::pair{0, 81}, std::pair{16, 32}, std::pair{3, 50}, std::pair{70, 81}}) {
+      std::vector<std::int32_t> base16(81 * k_count, -1), avx16 = base16, base32 = base16, avx32 = base16;
+      internal::SumStepTwoColumns<std::uint16_t, 16>(f.grid.data(), f.size, table, row0, x_begin, x_end, &scratch,
+                                                     base16.data());
+      internal::SumStepTwoColumnsAvx2<16>(f.grid.data(), f.size, table, row0, x_begin, x_end, &scratch, avx16.data());
+      internal::SumStepTwoColumns<std::uint16_t, 32>(f.grid.data(), f.size, table, row0, x_begin, x_end, &scratch,
+                                                     base32.data());
+      internal::SumStepTwoColumnsAvx2<32>(f.grid.data(), f.size, table, row0, x_begin, x_end, &scratch, avx32.data());
+      EXPECT_EQ(avx16, base16) << "row " << y << " columns " << x_begin << ".." << x_end;
+      EXPECT_EQ(avx32, base32) << "row " << y << " columns " << x_begin << ".." << x_end;
+      EXPECT_EQ(base16, base32);
+      compared += std::count_if(base16.begin(), base16.end(), [](std::int32_t v) { return v > 0; });
+    }
+  }
+  EXPECT_GT(compared, 1000);
 }
 
 TEST(CorrelationSearch, ResultDoesNotDependOnThreads) {

@@ -101,8 +101,8 @@ PrunedSearchStats Run(const std::uint8_t* grid, std::int64_t data_size, std::int
     for (int y = by * kBlockRows; y < std::min(ny, (by + 1) * kBlockRows); ++y) {
       const std::size_t row = static_cast<std::size_t>(y) * nx;
       std::int32_t* out = sums->data() + row * num_angles;
-      internal::SumStepTwoColumns<Acc, kBlockColumns>(grid, data_size, table, cells.index[row], x_begin, x_end, &rows,
-                                                      out);
+      internal::SumStepTwoColumnsFastest<Acc, kBlockColumns>(grid, data_size, table, cells.index[row], x_begin, x_end,
+                                                             &rows, out);
       for (int x = x_begin; x < x_end; ++x) {
         const std::int32_t* s = out + static_cast<std::size_t>(x) * num_angles;
         const std::int32_t m = *std::max_element(s, s + num_angles);
