@@ -152,10 +152,10 @@ void CorrelationGrid::Smear(std::int32_t centre) {
 bool CorrelationGrid::CellOf(const Eigen::Vector2d& world, int* stored_x, int* stored_y) const {
   // Karto rounds half away from zero and then tests 0 <= cell < G (§1.2, §4.3); Karto casts
   // non-finite coordinates to int, we reject them. The same decision and cell without floor
-  // or ceil (which are library calls on baseline x86-64): for v >= 0, Round(v) =
-  // trunc(v + 0.5), and that is < G exactly when v + 0.5 < G; for v < 0, Round(v) =
-  // ceil(v - 0.5) is in range only when it is 0, that is when v - 0.5 > -1. NaN and inf fail
-  // every test.
+  // or ceil (baseline x86-64 has no instruction for them; GCC emits several): for v >= 0,
+  // Round(v) = trunc(v + 0.5), and that is < G exactly when v + 0.5 < G; for v < 0,
+  // Round(v) = ceil(v - 0.5) is in range only when it is 0, that is when v - 0.5 > -1. NaN
+  // and inf fail every test.
   const int side = geometry_.roi_side;
   auto axis = [side](double v, int* cell) {
     if (v >= 0.0) {
