@@ -203,5 +203,45 @@ TEST(CorrelationGrid, RebuildAfterClearEqualsFreshGrid) {
   EXPECT_GT(occupied, 100);
 }
 
+// Clear zeroes only what was written (kernel squares or their box): points on every ROI edge
+// and corner (whose kernels reach the border and the last stored row and column) and random
+// points inside, over rounds that take either path, must leave every byte zero, padding
+// included.
+TEST(CorrelationGrid, ClearZeroesEverythingWrittenUpToTheGridEdges) {
+  // slam_toolbox's sequential smear (h = 20, a padded row spills past the last column) on a
+  // small ROI: G = 31 + 2 * 100 = 231 cells.
+  CorrelationGrid grid(0.3, 0.01, 0.1, 1.0);
+  const int roi = grid.geometry().roi_side;
+  grid.SetRoiOrigin({0.0, 0.0});
+  const std::size_t bytes = static_cast<std::size_t>(grid.data_size()) + CorrelationGrid::kPadding;
+  auto all_zero = [&] {
+    for (std::size_t i = 0; i < bytes; ++i) {
+      if (grid.data()[i] != 0) return false;
+    }
+    return true;
+  };
+  std::uint32_t state = 12345;
+  auto uniform = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / static_cast<double>(1u << 24);
+  };
+  for (int round = 0; round < 4; ++round) {
+    std::vector<Eigen::Vector2d> points;
+    const double last = 0.01 * (roi - 1);
+    for (const double x : {0.0, 0.5 * last, last}) {
+      for (const double y : {0.0, 0.5 * last, last}) points.emplace_back(x, y);
+    }
+    for (int i = 0; i < 40 * round; ++i) points.emplace_back(uniform() * last, uniform() * last);
+    int inserted = 0;
+    for (const Eigen::Vector2d& p : points) inserted += grid.AddPoint(p);
+    EXPECT_GE(inserted, 9);
+    EXPECT_EQ(grid.ValueAt(0, 0), kCorrelationOccupied);
+    EXPECT_EQ(grid.ValueAt(roi - 1, roi - 1), kCorrelationOccupied);
+    EXPECT_GT(grid.ValueAt(-grid.geometry().border + 1, roi + grid.geometry().border - 2), 0);
+    grid.Clear();
+    EXPECT_TRUE(all_zero()) << "round " << round;
+  }
+}
+
 }  // namespace
 }  // namespace slamtune::slam
