@@ -161,6 +161,7 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
   shared.match_cache = std::make_shared<slam::MatchCache>();
   shared.solve_cache = std::make_shared<slam::SolveCache>();
   shared.map_scores = std::make_shared<optim::MapScoreCache>();
+  shared.barycenter_cache = std::make_shared<slam::BarycenterCache>();
   const auto db = std::filesystem::temp_directory_path() / fmt::format("bench_whole_{}.sqlite", ::getpid());
   std::filesystem::remove(db);
   optim::OptimizeResult result;
@@ -196,8 +197,9 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
               static_cast<double>(result.evaluation_count) * one_s / wall);
   std::printf("against population x generations = %.0f runs x %.2f s = %.1f s: %.1fx\n", paper, one_s, paper * one_s,
               paper * one_s / wall);
-  std::printf("%s\n%s\n%s\n", shared.match_cache->counters().ToString().c_str(),
-              shared.solve_cache->counters().ToString().c_str(), shared.map_scores->counters().ToString().c_str());
+  std::printf("%s\n%s\n%s\n%s\n", shared.match_cache->counters().ToString().c_str(),
+              shared.solve_cache->counters().ToString().c_str(), shared.map_scores->counters().ToString().c_str(),
+              shared.barycenter_cache->counters().ToString().c_str());
   std::printf("peak RSS %s\n", ProcStatus("VmHWM").c_str());
   const auto* best = result.Find("recommended");
   if (best != nullptr) {
@@ -281,6 +283,7 @@ int Run(int argc, char** argv) {
   slamtune::optim::SlamEvaluationContext shared = plain;
   shared.match_cache = std::make_shared<slamtune::slam::MatchCache>();
   shared.solve_cache = std::make_shared<slamtune::slam::SolveCache>();
+  shared.barycenter_cache = std::make_shared<slamtune::slam::BarycenterCache>();
 
   std::printf("%s: %zu scans, %d sets, %d jobs, seed %u\n", label.c_str(), log->scans.size(), sets,
               jobs, seed);
@@ -299,8 +302,9 @@ int Run(int argc, char** argv) {
     loops_max = std::max(loops_max, a.loops[i]);
   }
   std::printf("speed-up (a)/(b): %.2fx; loop closures per set %d..%d\n", a.wall_s / b.wall_s, loops_min, loops_max);
-  std::printf("%s\n%s\n", shared.match_cache->counters().ToString().c_str(),
-              shared.solve_cache->counters().ToString().c_str());
+  std::printf("%s\n%s\n%s\n", shared.match_cache->counters().ToString().c_str(),
+              shared.solve_cache->counters().ToString().c_str(),
+              shared.barycenter_cache->counters().ToString().c_str());
   std::printf("results identical: %s (%d of %d sets differ)\n", differing == 0 ? "yes" : "NO", differing, sets);
   return differing == 0 ? 0 : 1;
 }

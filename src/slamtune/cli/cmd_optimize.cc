@@ -248,7 +248,7 @@ const SubcommandRegistrar kRegistrar{{
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
       app.add_flag("--no-share", args->no_share,
                    "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for timing comparisons)");
-      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter)")
+      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter, barycentres an eighth)")
           ->capture_default_str();
       args->inputs.AddTo(app);
       return [args, &app] { return RunOptimize(*args, app); };

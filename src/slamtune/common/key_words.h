@@ -61,4 +61,27 @@ inline std::uint64_t LeastRecentlyUsedHalfCut(std::vector<std::uint64_t> last_us
   return *middle;
 }
 
+// Drops the least recently used half of `entries` (a map whose values carry their last use as
+// `sequence`), subtracting bytes_of(value) of each dropped entry from *bytes. Returns how many
+// were dropped.
+template <typename Map, typename BytesOf>
+std::size_t EvictLeastRecentlyUsedHalf(Map& entries, BytesOf bytes_of, std::size_t* bytes) {
+  std::vector<std::uint64_t> last_uses;
+  last_uses.reserve(entries.size());
+  for (const auto& kv : entries) last_uses.push_back(kv.second.sequence);
+  if (last_uses.empty()) return 0;
+  const std::uint64_t cut = LeastRecentlyUsedHalfCut(std::move(last_uses));
+  std::size_t dropped = 0;
+  for (auto it = entries.begin(); it != entries.end();) {
+    if (it->second.sequence < cut) {
+      *bytes -= bytes_of(it->second);
+      ++dropped;
+      it = entries.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  return dropped;
+}
+
 }  // namespace slamtune

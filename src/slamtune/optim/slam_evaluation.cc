@@ -29,6 +29,7 @@ slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::Mappe
   SLAMTUNE_CHECK(context.log != nullptr);
   slam::LogRunner runner(context.log, params, context.match_cache);
   runner.set_solve_cache(context.solve_cache);
+  runner.set_barycenter_cache(context.barycenter_cache);
   runner.RunToEnd();
   return runner;
 }

@@ -16,6 +16,7 @@
 #include "slamtune/optim/map_score_cache.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/barycenter_cache.h"
 #include "slamtune/slam/match_cache.h"
 #include "slamtune/slam/solve_cache.h"
 
@@ -34,6 +35,8 @@ struct SlamEvaluationContext {
   std::shared_ptr<MapScoreCache> map_scores;
   // Back-end solves shared by the runs (slam/solve_cache.h); null: none. Same results either way.
   std::shared_ptr<slam::SolveCache> solve_cache;
+  // Scan barycentres shared by the runs (slam/barycenter_cache.h); null: none. Same results.
+  std::shared_ptr<slam::BarycenterCache> barycenter_cache;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;

@@ -123,6 +123,7 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   SlamEvaluationContext shared = plain;
   shared.match_cache = std::make_shared<slam::MatchCache>();
   shared.solve_cache = std::make_shared<slam::SolveCache>();
+  shared.barycenter_cache = std::make_shared<slam::BarycenterCache>();
   const std::vector<Assignment> batch = RandomSets(sets, seed);
   const std::vector<Evaluated> without = EvaluateAll(plain, batch, 1);
   const std::vector<Evaluated> with = EvaluateAll(shared, batch, 3);
@@ -137,6 +138,7 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   EXPECT_GT(c.hits + c.waits, 0u) << label << ": the cache served nothing";
   EXPECT_EQ(c.bypassed, 0u);
   EXPECT_GE(loop_lists.size(), min_loop_lists) << label << ": the sets did not diverge";
+  EXPECT_GT(shared.barycenter_cache->counters().hits, 0u) << label << ": no barycentre was shared";
 
   // Map scores shared too (the optimiser's path: records only). Twice, so that the second pass
   // is served from the map-score cache entirely.
@@ -173,9 +175,9 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   if (loops > 0) {
     EXPECT_GT(sc.hits, 0u) << label << ": no solve was shared";
   }
-  std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s; %s; %s\n",
+  std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s; %s; %s; %s\n",
               label.c_str(), plain.log->scans.size(), loops, loop_lists.size(), batch.size(), c.ToString().c_str(),
-              sc.ToString().c_str(), m.ToString().c_str());
+              sc.ToString().c_str(), m.ToString().c_str(), shared.barycenter_cache->counters().ToString().c_str());
 }
 
 std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::size_t scans) {

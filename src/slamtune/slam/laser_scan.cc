@@ -25,8 +25,7 @@ void LaserScan::SetCorrectedPose(const Pose2& pose) {
 
 void LaserScan::SetSensorPoseWithBarycenter(const Pose2& sensor_pose, const Pose2& barycenter) {
   SetSensorPose(sensor_pose);
-  barycenter_ = barycenter;
-  barycenter_valid_ = true;
+  SetBarycenter(barycenter);
 }
 
 Pose2 LaserScan::SensorPose() const { return Compose(corrected_pose_, geometry_->offset); }

@@ -66,6 +66,14 @@ class LaserScan {
   // SetSensorPose with the barycentre of that pose already known (bit for bit what the readout
   // would compute, e.g. stored when another run made the same solve); the points follow on use.
   void SetSensorPoseWithBarycenter(const Pose2& sensor_pose, const Pose2& barycenter);
+  // Gives the barycentre of the current pose, known bit for bit (e.g. from a BarycenterCache);
+  // checked against the readout's own when that is computed. The points follow on use.
+  void SetBarycenter(const Pose2& barycenter) {
+    barycenter_ = barycenter;
+    barycenter_valid_ = true;
+  }
+  // Whether the barycentre of the current pose is known without computing the readout.
+  bool barycenter_known() const { return barycenter_valid_; }
   // Computes the readout now if the pose changed since it was last computed.
   void EnsureReadout() const {
     if (!readout_valid_) UpdatePoints();

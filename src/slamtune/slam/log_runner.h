@@ -76,6 +76,8 @@ class LogRunner {
   const Mapper& mapper() const { return mapper_; }
   // Back-end solves shared with other runs of this log (solve_cache.h); may be null.
   void set_solve_cache(std::shared_ptr<SolveCache> cache) { mapper_.set_solve_cache(std::move(cache)); }
+  // Scan barycentres shared with other runs of this log (barycenter_cache.h); may be null.
+  void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { mapper_.set_barycenter_cache(std::move(cache)); }
   const io::LaserLog& log() const { return *log_; }
 
   RunSummary Summary() const;

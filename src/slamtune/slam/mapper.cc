@@ -63,7 +63,12 @@ void Mapper::BuildMatchers() {
 
 void Mapper::SetScanSensorPose(int id, const Pose2& sensor_pose) {
   scans_[id].SetSensorPose(sensor_pose);
-  reference_poses_[id] = scans_[id].ReferencePose(params_.use_scan_barycenter);
+  UpdateReferencePose(id);
+}
+
+void Mapper::UpdateReferencePose(int id) {
+  if (params_.use_scan_barycenter && barycenter_cache_) barycenter_cache_->Provide(scans_[id]);
+  reference_poses_[static_cast<std::size_t>(id)] = scans_[id].ReferencePose(params_.use_scan_barycenter);
 }
 
 std::vector<const LaserScan*> Mapper::ScanPointers(const std::vector<int>& ids) const {
@@ -123,7 +128,8 @@ ProcessResult Mapper::Process(LaserScan scan) {
   const int id = static_cast<int>(scans_.size());
   scan.state_id = id;
   scans_.push_back(std::move(scan));
-  reference_poses_.push_back(scans_[id].ReferencePose(params_.use_scan_barycenter));
+  reference_poses_.emplace_back();
+  UpdateReferencePose(id);
   ++counters_.scans_processed;
   result.state_id = id;
   // 9. Graph, edges, running buffer, loop closure.

@@ -13,7 +13,8 @@
 // Shared match results: with a MatchCache (match_cache.h) every matcher call (sequential,
 // near chain, loop coarse, loop fine) goes through the cache, so runs of the same log that
 // share it reuse each other's identical matches; with a SolveCache (solve_cache.h) likewise
-// every CorrectPoses solve. Results are bit-identical with or without them.
+// every CorrectPoses solve, and with a BarycenterCache (barycenter_cache.h) every barycentre a
+// reference pose needs. Results are bit-identical with or without them.
 #pragma once
 
 #include <Eigen/Core>
@@ -24,6 +25,7 @@
 #include <optional>
 #include <vector>
 
+#include "slamtune/slam/barycenter_cache.h"
 #include "slamtune/slam/front_end.h"
 #include "slamtune/slam/laser_scan.h"
 #include "slamtune/slam/match_cache.h"
@@ -95,6 +97,8 @@ class Mapper {
   const std::shared_ptr<MatchCache>& match_cache() const { return match_cache_; }
   // Back-end solves shared with other runs of the same log (may be null: no sharing).
   void set_solve_cache(std::shared_ptr<SolveCache> cache) { solve_cache_ = std::move(cache); }
+  // Scan barycentres shared with other runs of the same log (may be null: no sharing).
+  void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { barycenter_cache_ = std::move(cache); }
 
   // Processed scans, index = state id, with their current poses.
   const std::vector<LaserScan>& scans() const { return scans_; }
@@ -113,6 +117,8 @@ class Mapper {
  private:
   void BuildMatchers();
   void SetScanSensorPose(int id, const Pose2& sensor_pose);
+  // reference_poses_[id] from the scan's current pose (its barycentre through the cache if any).
+  void UpdateReferencePose(int id);
   std::vector<const LaserScan*> ScanPointers(const std::vector<int>& ids) const;
   // matcher.Match(...) of the given role, through the match cache when there is one.
   MatchResult MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
@@ -135,6 +141,7 @@ class Mapper {
   std::optional<ScanMatcher> loop_matcher_;
   std::shared_ptr<MatchCache> match_cache_;  // null: no sharing; thread-safe, shared by copies
   std::shared_ptr<SolveCache> solve_cache_;  // likewise
+  std::shared_ptr<BarycenterCache> barycenter_cache_;  // likewise
   std::vector<LaserScan> scans_;
   std::vector<Pose2> reference_poses_;
   PoseGraph graph_;

@@ -70,20 +70,8 @@ void SolveCache::Store(std::vector<std::uint64_t> key, Solved solved) {
 }
 
 void SolveCache::EvictLeastRecentlyUsedHalfLocked() {
-  std::vector<std::uint64_t> last_uses;
-  last_uses.reserve(entries_.size());
-  for (const auto& [key, entry] : entries_) last_uses.push_back(entry.sequence);
-  if (last_uses.empty()) return;
-  const std::uint64_t cut = LeastRecentlyUsedHalfCut(std::move(last_uses));
-  for (auto it = entries_.begin(); it != entries_.end();) {
-    if (it->second.sequence < cut) {
-      counters_.bytes -= it->second.bytes;
-      ++counters_.evictions;
-      it = entries_.erase(it);
-    } else {
-      ++it;
-    }
-  }
+  counters_.evictions +=
+      EvictLeastRecentlyUsedHalf(entries_, [](const Entry& entry) { return entry.bytes; }, &counters_.bytes);
   counters_.entries = entries_.size();
 }
 
