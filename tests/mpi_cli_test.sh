@@ -36,6 +36,16 @@ strip() { cut -d, -f2-15,17- "$1" | sort; }
 n=$(sed -n 's/^\([0-9]*\) of the SLAM runs ran on the 1 worker ranks$/\1/p' "$work/mpi.txt")
 [[ -n "$n" && "$n" -gt 0 ]] || fail "no SLAM run ran on the worker rank: $(tail -3 "$work/mpi.txt")"
 
+# sweep under mpirun: the same table as one process (wall_s, column 13, is not a result).
+sweep=(sweep --vary g=6:20:7 --fix r=2)
+"${mpi[@]}" "$bin" "${sweep[@]}" --out "$work/sweep_mpi" > "$work/sweep_mpi.txt" 2>&1 ||
+  fail "mpirun sweep failed: $(tail -5 "$work/sweep_mpi.txt")"
+"$bin" "${sweep[@]}" --out "$work/sweep_one" --jobs 2 --quiet > /dev/null 2>&1 || fail "single-process sweep failed"
+[[ -s "$work/sweep_mpi/sweep.csv" && "$(cut -d, -f1-12,14- "$work/sweep_mpi/sweep.csv")" == "$(cut -d, -f1-12,14- "$work/sweep_one/sweep.csv")" ]] ||
+  fail "sweep.csv differs between 2 ranks and one process"
+n=$(sed -n 's/^\([0-9]*\) of the SLAM runs ran on the 1 worker ranks$/\1/p' "$work/sweep_mpi.txt")
+[[ -n "$n" && "$n" -gt 0 ]] || fail "no sweep run ran on the worker rank: $(tail -3 "$work/sweep_mpi.txt")"
+
 # Errors: a clear message and a non-zero exit from every rank, no hang.
 expect_error() {  # PATTERN CMD...
   local pattern=$1; shift
@@ -47,6 +57,7 @@ expect_error "cannot open" "${mpi[@]}" "$bin" optimize "$work/missing.clf" --out
 touch "$work/afile"
 expect_error "cannot create output folder" "${mpi[@]}" "$bin" optimize --out "$work/afile/sub" "${small[@]}"
 expect_error "already holds an optimisation" "${mpi[@]}" "$bin" optimize --out "$work/mpi" "${small[@]}"
+expect_error "cannot open" "${mpi[@]}" "$bin" sweep "$work/missing.clf" --vary g=6:8 --out "$work/x2" --quiet
 expect_error "different settings" "${mpi[@]}" "$bin" optimize --resume "$work/mpi" --seed 6 --population 8 --generations 2 --divisions 3
 
 if [[ $failures -gt 0 ]]; then echo "mpi_cli_test: $failures failure(s)"; exit 1; fi

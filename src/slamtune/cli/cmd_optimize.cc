@@ -59,31 +59,6 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed}};
 }
 
-// What every rank evaluates with: the loaded inputs, the search space's fixed values applied to
-// the base parameters, and the work shared between runs (ShareWork: matches, solves, map scores).
-std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
-                                                                    const std::map<std::string, double>& fixed,
-                                                                    bool no_share, std::size_t share_mb) {
-  auto context = std::make_shared<optim::SlamEvaluationContext>();
-  context->log = inputs.log;
-  context->relations = inputs.relations;
-  context->base = inputs.base;
-  ShareWork(*context, no_share, share_mb);
-  for (const auto& [name, value] : fixed) slam::SetNumeric(context->base, name, value);
-  return context;
-}
-
-// A worker rank under mpirun: evaluates what rank 0 sends, with the inputs rank 0 loaded.
-int ServeAsWorker(const optim::MpiWorld& world) {
-  optim::ServeEvaluations(world, [](const nlohmann::json& setup) -> optim::EvaluateFn {
-    const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), true);
-    auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(),
-                                         setup.at("no_share").get<bool>(), setup.at("share_mb").get<std::size_t>());
-    return [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
-  });
-  return 0;
-}
-
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   optim::MpiWorld world;
   if (world.rank() > 0) return ServeAsWorker(world);
@@ -165,10 +140,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   }
   EnsureWritableDir(dir);
   if (workers) {
-    workers->Setup({{"inputs", args.inputs.ToJson()},
-                    {"fixed", settings.space.fixed},
-                    {"no_share", args.no_share},
-                    {"share_mb", args.share_mb}});
+    workers->Setup(WorkerSetup(args.inputs, settings.space.fixed, args.no_share, args.share_mb));
   }
 
   optim::EvaluationStore store(db_path);

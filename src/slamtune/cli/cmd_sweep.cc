@@ -1,12 +1,14 @@
 // `slamtune sweep [LOG] --vary NAME=LO:HI[:STEP] [--fix NAME=V]... --out DIR`: loop closures
 // and the three map objectives (and errors, with relations) along one parameter — the seed
-// paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18).
+// paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18). Under mpirun, rank 0
+// writes and the other ranks evaluate, as for optimize (optim/mpi_evaluation.h).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "slamtune/cli/command_registry.h"
@@ -14,6 +16,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
 #include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/report/sweep_report.h"
 
@@ -51,7 +54,17 @@ double ParseNumber(const std::string& text, const std::string& what) {
   }
 }
 
-int RunSweep(const SweepArgs& args) {
+int RunSweep(SweepArgs args, const CLI::App& app) {
+  optim::MpiWorld world;
+  if (world.rank() > 0) return ServeAsWorker(world);
+  // Rank 0 of several: the workers wait for the setup; any error below stops them (destructor).
+  std::optional<optim::MpiDispatcher> workers;
+  if (world.distributed()) {
+    workers.emplace(world);
+    // One rank per core: rank 0 evaluates on one thread unless --jobs says otherwise.
+    if (app.get_option("--jobs")->count() == 0) args.jobs = 1;
+  }
+  if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
   // --vary NAME=LO:HI[:STEP]
   const auto eq = args.vary.find('=');
   if (eq == std::string::npos) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + args.vary + "'");
@@ -72,11 +85,7 @@ int RunSweep(const SweepArgs& args) {
   if (args.out.empty()) throw InputError("--out DIR is required");
 
   TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
-  auto context = std::make_shared<optim::SlamEvaluationContext>();
-  context->log = inputs.log;
-  context->relations = inputs.relations;
-  context->base = inputs.base;
-  ShareWork(*context, args.no_share, args.share_mb);
+  auto context = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
   optim::Assignment fixed;
   for (const auto& f : args.fix) {
     const auto e = f.find('=');
@@ -95,20 +104,28 @@ int RunSweep(const SweepArgs& args) {
   std::error_code ec;
   std::filesystem::create_directories(args.out, ec);
   if (ec) throw InputError(args.out, 0, "cannot create output folder: " + ec.message());
+  if (workers) {
+    workers->Setup(WorkerSetup(args.inputs, {}, args.no_share, args.share_mb));
+  }
 
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
-  progress.Update(fmt::format("sweeping {} over {} values on {} ({} jobs)", name, batch.size(), inputs.log_label,
-                              args.jobs),
+  const std::string parallelism =
+      workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
+              : fmt::format("{} jobs", args.jobs);
+  progress.Update(fmt::format("sweeping {} over {} values on {} with {}", name, batch.size(), inputs.log_label,
+                              parallelism),
                   true);
   progress.Finish();
   optim::BatchEvaluator evaluator([context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); },
                                   nullptr, args.jobs);
+  if (workers) evaluator.SetRemote(&*workers);
   evaluator.SetProgressCallback([&](const optim::EvaluationRecord& r, const optim::BatchEvaluatorStats& s) {
     progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closures", s.evaluated, batch.size(), name,
                                 r.params.at(name), r.loop_closures));
   });
   const auto records = evaluator.Evaluate(batch);
   progress.Finish();
+  if (workers) workers->Stop();
   std::vector<report::SweepPoint> points;
   for (std::size_t i = 0; i < batch.size(); ++i) points.push_back({batch[i].at(name), records[i]});
   report::SweepReportOptions options;
@@ -124,6 +141,9 @@ int RunSweep(const SweepArgs& args) {
       std::printf("%s\n", p.record.status == "ok" ? "" : ("  FAILED: " + p.record.reason).c_str());
     }
     std::printf("wrote %zu files to %s\n", summary.files.size(), args.out.c_str());
+    if (workers) {
+      std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
+    }
     std::printf("%s\n", SharedWorkReport(*context).c_str());
   }
   return summary.failed > 0 ? 1 : 0;
@@ -140,14 +160,15 @@ const SubcommandRegistrar kRegistrar{{
           ->required();
       app.add_option("--fix", args->fix, "NAME=VALUE held fixed (repeatable)");
       app.add_option("--out", args->out, "output folder")->required();
-      app.add_option("--jobs,-j", args->jobs, "parallel SLAM runs (default: all cores)");
+      app.add_option("--jobs,-j", args->jobs,
+                     "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs one)");
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
       app.add_flag("--no-share", args->no_share,
                    "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for timing comparisons)");
       app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter, barycentres an eighth)")
           ->capture_default_str();
       args->inputs.AddTo(app);
-      return [args] { return RunSweep(*args); };
+      return [args, &app] { return RunSweep(*args, app); };
     },
 }};
 

@@ -109,4 +109,31 @@ std::string SharedWorkReport(const optim::SlamEvaluationContext& context) {
   return out;
 }
 
+std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
+                                                                    const std::map<std::string, double>& fixed,
+                                                                    bool no_share, std::size_t share_mb) {
+  auto context = std::make_shared<optim::SlamEvaluationContext>();
+  context->log = inputs.log;
+  context->relations = inputs.relations;
+  context->base = inputs.base;
+  ShareWork(*context, no_share, share_mb);
+  for (const auto& [name, value] : fixed) slam::SetNumeric(context->base, name, value);
+  return context;
+}
+
+nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
+                           bool no_share, std::size_t share_mb) {
+  return {{"inputs", inputs.ToJson()}, {"fixed", fixed}, {"no_share", no_share}, {"share_mb", share_mb}};
+}
+
+int ServeAsWorker(const optim::MpiWorld& world) {
+  optim::ServeEvaluations(world, [](const nlohmann::json& setup) -> optim::EvaluateFn {
+    const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), true);
+    auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(),
+                                         setup.at("no_share").get<bool>(), setup.at("share_mb").get<std::size_t>());
+    return [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
+  });
+  return 0;
+}
+
 }  // namespace slamtune::cli

@@ -1,10 +1,12 @@
 // Inputs shared by `slamtune optimize` and `slamtune sweep`: the log (a CARMEN file, or a
 // built-in world simulated in memory when none is given), relations, and the base mapper
-// parameters from --preset / --params / --set.
+// parameters from --preset / --params / --set; and the evaluation context both commands build
+// from them, on rank 0 and, under mpirun, on every worker rank (optim/mpi_evaluation.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/relations.h"
+#include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/slam/mapper_params.h"
 
@@ -53,5 +56,19 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet);
 void ShareWork(optim::SlamEvaluationContext& context, bool no_share, std::size_t share_mb);
 // One line per cache with its counters, or that sharing was off.
 std::string SharedWorkReport(const optim::SlamEvaluationContext& context);
+
+// What every rank evaluates with: the loaded inputs, `fixed` values applied to the base
+// parameters, and the work shared between runs (ShareWork).
+std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
+                                                                    const std::map<std::string, double>& fixed,
+                                                                    bool no_share, std::size_t share_mb);
+
+// What rank 0 sends the worker ranks (MpiDispatcher::Setup) so that they build the same context.
+nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
+                           bool no_share, std::size_t share_mb);
+
+// A worker rank under mpirun: builds its context from rank 0's WorkerSetup, evaluates what rank
+// 0 sends until told to stop, and returns 0.
+int ServeAsWorker(const optim::MpiWorld& world);
 
 }  // namespace slamtune::cli
