@@ -2,15 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "slamtune/common/error.h"
 
 namespace slamtune::slam {
 namespace {
 
-// Geometry (9 words), readings address, corrected pose (3 words).
-constexpr std::size_t kKeyWords = 13;
-// Key words, the vector's header, the entry and the hash node.
-constexpr std::size_t kEntryBytes = kKeyWords * sizeof(std::uint64_t) + 24 + sizeof(Pose2) + 8 + 64;
+// The key, the entry and the hash node with its cached hash.
+constexpr std::size_t kEntryBytes = sizeof(std::array<std::uint64_t, kGeometryKeyWords + 4>) + sizeof(Pose2) + 8 + 32;
 
 }  // namespace
 
@@ -23,19 +23,21 @@ BarycenterCache::BarycenterCache(std::size_t byte_budget) : byte_budget_(byte_bu
   if (byte_budget_ == 0) throw InputError("barycentre cache byte_budget = 0 is out of range: must be > 0");
 }
 
-std::vector<std::uint64_t> BarycenterCache::KeyOf(const LaserScan& scan) {
-  std::vector<std::uint64_t> key;
-  key.reserve(kKeyWords);
-  AppendGeometryKey(scan.geometry(), &key);
-  key.push_back(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(scan.ranges_ptr().get())));
-  AppendKeyPose(scan.corrected_pose(), &key);
-  SLAMTUNE_CHECK(key.size() == kKeyWords);
+BarycenterCache::Key BarycenterCache::KeyOf(const LaserScan& scan) {
+  Key key;
+  const auto geometry = GeometryKeyWords(scan.geometry());
+  std::copy(geometry.begin(), geometry.end(), key.begin());
+  const Pose2& p = scan.corrected_pose();
+  key[kGeometryKeyWords] = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(scan.ranges_ptr().get()));
+  key[kGeometryKeyWords + 1] = KeyBits(p.x);
+  key[kGeometryKeyWords + 2] = KeyBits(p.y);
+  key[kGeometryKeyWords + 3] = KeyBits(p.theta);
   return key;
 }
 
 void BarycenterCache::Provide(LaserScan& scan) {
   if (scan.barycenter_known()) return;
-  std::vector<std::uint64_t> key = KeyOf(scan);
+  const Key key = KeyOf(scan);
   {
     std::lock_guard guard(mutex_);
     auto it = entries_.find(key);
@@ -52,9 +54,9 @@ void BarycenterCache::Provide(LaserScan& scan) {
   std::lock_guard guard(mutex_);
   if (kEntryBytes > byte_budget_ || entries_.count(key) != 0) return;
   if (counters_.bytes + kEntryBytes > byte_budget_) EvictLeastRecentlyUsedHalfLocked();
-  const auto address = key[kKeyWords - 4];
+  const std::uint64_t address = key[kGeometryKeyWords];
   if (readings_.find(address) == readings_.end()) readings_.emplace(address, scan.ranges_ptr());
-  entries_.emplace(std::move(key), Entry{barycenter, next_sequence_++});
+  entries_.emplace(key, Entry{barycenter, next_sequence_++});
   counters_.bytes += kEntryBytes;
   counters_.entries = entries_.size();
 }

@@ -6,7 +6,7 @@
 // decisions so far put the same scan at the same pose, so the barycentre repeats.
 //
 // Exactness, as in match_cache.h: an entry is keyed by everything LaserScan's readout reads,
-// compared word for word: the laser geometry's words (AppendGeometryKey), the address of the
+// compared word for word: the laser geometry's words (GeometryKeyWords), the address of the
 // scan's immutable readings (held by the cache, so the address cannot be reused while it lives)
 // and the bits of the corrected pose. The scan checks a provided barycentre against its own
 // when it later computes its readout (laser_scan.h), so a wrong entry would fail loudly.
@@ -16,6 +16,7 @@
 // changes only the time, never a result.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -61,12 +62,14 @@ class BarycenterCache {
     Pose2 barycenter;
     std::uint64_t sequence = 0;  // last use, for eviction
   };
-  static std::vector<std::uint64_t> KeyOf(const LaserScan& scan);
+  // Geometry words, readings address, corrected pose: fixed size, so a lookup allocates nothing.
+  using Key = std::array<std::uint64_t, kGeometryKeyWords + 4>;
+  static Key KeyOf(const LaserScan& scan);
   void EvictLeastRecentlyUsedHalfLocked();
 
   std::size_t byte_budget_;
   mutable std::mutex mutex_;
-  std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
+  std::unordered_map<Key, Entry, KeyWordsHash> entries_;
   std::map<std::uint64_t, std::shared_ptr<const std::vector<double>>> readings_;  // by address
   std::uint64_t next_sequence_ = 0;
   BarycenterCacheCounters counters_;

@@ -16,7 +16,9 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -136,7 +138,10 @@ class LaserScan {
   alignas(std::atomic_ref<std::uint32_t>::required_alignment) mutable std::uint32_t match_key_hint_ = kNoMatchKeyHint;
 };
 
-// Appends the bits of every field of `g` to an exact cache key (common/key_words.h).
+// The bits of every field of `g`, for exact cache keys (common/key_words.h); AppendGeometryKey
+// appends them to a key.
+inline constexpr std::size_t kGeometryKeyWords = 9;
+std::array<std::uint64_t, kGeometryKeyWords> GeometryKeyWords(const LaserGeometry& g);
 void AppendGeometryKey(const LaserGeometry& g, std::vector<std::uint64_t>* key);
 
 // Robot pose from a sensor pose and the mounting offset (Karto's inverse, §1.4).
