@@ -158,10 +158,7 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
   auto start = std::chrono::steady_clock::now();
 
   optim::SlamEvaluationContext shared = plain;
-  shared.match_cache = std::make_shared<slam::MatchCache>();
-  shared.solve_cache = std::make_shared<slam::SolveCache>();
-  shared.map_scores = std::make_shared<optim::MapScoreCache>();
-  shared.barycenter_cache = std::make_shared<slam::BarycenterCache>();
+  optim::ShareWork(shared, 512);  // what `slamtune optimize` shares at its default --share-mb
   const auto db = std::filesystem::temp_directory_path() / fmt::format("bench_whole_{}.sqlite", ::getpid());
   std::filesystem::remove(db);
   optim::OptimizeResult result;
@@ -197,9 +194,7 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
               static_cast<double>(result.evaluation_count) * one_s / wall);
   std::printf("against population x generations = %.0f runs x %.2f s = %.1f s: %.1fx\n", paper, one_s, paper * one_s,
               paper * one_s / wall);
-  std::printf("%s\n%s\n%s\n%s\n", shared.match_cache->counters().ToString().c_str(),
-              shared.solve_cache->counters().ToString().c_str(), shared.map_scores->counters().ToString().c_str(),
-              shared.barycenter_cache->counters().ToString().c_str());
+  std::printf("%s\n", optim::SharedWorkReport(shared).c_str());
   std::printf("peak RSS %s\n", ProcStatus("VmHWM").c_str());
   const auto* best = result.Find("recommended");
   if (best != nullptr) {

@@ -144,7 +144,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
     if (workers) {
       std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
     }
-    std::printf("%s\n", SharedWorkReport(*context).c_str());
+    std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
   }
   return summary.failed > 0 ? 1 : 0;
 }

@@ -92,21 +92,7 @@ void ShareWork(optim::SlamEvaluationContext& context, bool no_share, std::size_t
   context.barycenter_cache = nullptr;
   if (no_share) return;
   if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
-  slam::MatchCacheOptions options;
-  options.byte_budget = share_mb << 20;
-  context.match_cache = std::make_shared<slam::MatchCache>(options);
-  context.map_scores = std::make_shared<optim::MapScoreCache>(std::max<std::size_t>(share_mb << 18, 1 << 20));
-  context.solve_cache = std::make_shared<slam::SolveCache>(std::max<std::size_t>(share_mb << 19, 1 << 20));
-  context.barycenter_cache = std::make_shared<slam::BarycenterCache>(std::max<std::size_t>(share_mb << 17, 1 << 20));
-}
-
-std::string SharedWorkReport(const optim::SlamEvaluationContext& context) {
-  if (!context.match_cache) return "match cache: off (--no-share)";
-  std::string out = context.match_cache->counters().ToString();
-  if (context.solve_cache) out += "\n" + context.solve_cache->counters().ToString();
-  if (context.barycenter_cache) out += "\n" + context.barycenter_cache->counters().ToString();
-  if (context.map_scores) out += "\n" + context.map_scores->counters().ToString();
-  return out;
+  optim::ShareWork(context, share_mb);
 }
 
 std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,

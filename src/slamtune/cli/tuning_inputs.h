@@ -48,14 +48,9 @@ struct TuningInputs {
 // Loads and validates everything; throws InputError naming the file and problem.
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet);
 
-// The work shared by all SLAM runs of one command (--no-share turns it off; results are
-// identical either way): scan matches (slam/match_cache.h, budget share_mb MB), back-end solves
-// (slam/solve_cache.h, share_mb / 2 MB), map scores of final states (optim/map_score_cache.h,
-// share_mb / 4 MB) and scan barycentres (slam/barycenter_cache.h, share_mb / 8 MB). InputError
-// for share_mb 0.
+// The work shared by all SLAM runs of one command (optim::ShareWork; --no-share turns it off,
+// results are identical either way). InputError for share_mb 0.
 void ShareWork(optim::SlamEvaluationContext& context, bool no_share, std::size_t share_mb);
-// One line per cache with its counters, or that sharing was off.
-std::string SharedWorkReport(const optim::SlamEvaluationContext& context);
 
 // What every rank evaluates with: the loaded inputs, `fixed` values applied to the base
 // parameters, and the work shared between runs (ShareWork).

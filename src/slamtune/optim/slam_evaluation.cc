@@ -1,5 +1,6 @@
 #include "slamtune/optim/slam_evaluation.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -94,6 +95,27 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
 io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {
   const slam::MapperParams params = context.ParamsFor(assignment);
   return MapOf(RunToEnd(context, params), params);
+}
+
+void ShareWork(SlamEvaluationContext& context, std::size_t share_mb) {
+  SLAMTUNE_CHECK(share_mb > 0);
+  slam::MatchCacheOptions options;
+  options.byte_budget = share_mb << 20;
+  context.match_cache = std::make_shared<slam::MatchCache>(options);
+  context.solve_cache = std::make_shared<slam::SolveCache>(std::max<std::size_t>(share_mb << 19, 1 << 20));
+  context.map_scores = std::make_shared<MapScoreCache>(std::max<std::size_t>(share_mb << 18, 1 << 20));
+  context.barycenter_cache = std::make_shared<slam::BarycenterCache>(std::max<std::size_t>(share_mb << 17, 1 << 20));
+}
+
+std::string SharedWorkReport(const SlamEvaluationContext& context) {
+  if (!context.match_cache) return "match cache: off (--no-share)";
+  std::string out = context.match_cache->counters().ToString();
+  for (const std::string& line : {context.solve_cache ? context.solve_cache->counters().ToString() : "",
+                                  context.barycenter_cache ? context.barycenter_cache->counters().ToString() : "",
+                                  context.map_scores ? context.map_scores->counters().ToString() : ""}) {
+    if (!line.empty()) out.append(1, '\n').append(line);
+  }
+  return out;
 }
 
 }  // namespace slamtune::optim

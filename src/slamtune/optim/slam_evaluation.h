@@ -42,6 +42,13 @@ struct SlamEvaluationContext {
   slam::MapperParams ParamsFor(const Assignment& assignment) const;
 };
 
+// Gives `context` every cache shared between its runs (results are identical either way): scan
+// matches (budget share_mb MB), back-end solves (share_mb / 2), map scores of final states
+// (share_mb / 4) and scan barycentres (share_mb / 8), each at least 1 MB. share_mb > 0.
+void ShareWork(SlamEvaluationContext& context, std::size_t share_mb);
+// One line per cache with its counters, or that sharing is off.
+std::string SharedWorkReport(const SlamEvaluationContext& context);
+
 // What one SLAM run of an evaluation produced.
 struct SlamRun {
   slam::RunSummary summary;
