@@ -24,6 +24,17 @@ done
 grep -q "loop_search_maximum_distance:" "$work/whole/best.yaml" || fail "best.yaml lacks r"
 grep -q "ros__parameters:" "$work/whole/best.yaml" || fail "best.yaml is not a ROS 2 parameter file"
 
+# Progress lines (plain, not a terminal) say how much scan matching the runs shared, and
+# nothing of it with --no-share.
+tiny=(--population 4 --generations 1 --divisions 3 --seed 5 --jobs 2)
+"$bin" optimize --out "$work/tiny" "${tiny[@]}" > "$work/tiny.txt" 2>&1 || fail "optimize (tiny) failed: $(tail -3 "$work/tiny.txt")"
+grep -Eq '^gen 1/1 .*\| matches: [0-9.]+% of [0-9.]+( [kM])? shared, [0-9.]+( [kM])? computed$' "$work/tiny.txt" ||
+  fail "progress lacks the shared-match summary: $(grep '^gen' "$work/tiny.txt" | tail -1)"
+"$bin" optimize --out "$work/tiny_noshare" "${tiny[@]}" --no-share > "$work/tiny_noshare.txt" 2>&1 ||
+  fail "optimize --no-share failed: $(tail -3 "$work/tiny_noshare.txt")"
+grep -q '^gen 1/1 ' "$work/tiny_noshare.txt" || fail "--no-share run printed no progress line"
+if grep '^gen' "$work/tiny_noshare.txt" | grep -q 'matches:'; then fail "--no-share progress mentions shared matches"; fi
+
 # 2. kill -9 in the middle of the run, then --resume: the same tables as the uninterrupted run.
 "$bin" optimize --out "$work/cut" "${small[@]}" > "$work/cut.txt" 2>&1 &
 pid=$!

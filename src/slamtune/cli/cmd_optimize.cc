@@ -161,7 +161,10 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); }, &store, args.jobs);
   if (workers) evaluator.SetRemote(&*workers);
   optim::OptimizeHooks hooks;
-  hooks.progress = [&progress](const std::string& line, bool force) { progress.Update(line, force); };
+  hooks.progress = [&progress, context](const std::string& line, bool force) {
+    const std::string shared = optim::SharedWorkBrief(*context);
+    progress.Update(shared.empty() ? line : line + " | " + shared, force);
+  };
   hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
   optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
   progress.Finish();

@@ -57,4 +57,18 @@ std::string FormatDuration(double s) {
   return fmt::format("{}s", total);
 }
 
+std::string FormatCount(double n) {
+  if (!std::isfinite(n) || n < 0) return "?";
+  if (n < 999.5) return fmt::format("{}", std::lround(n));
+  static constexpr const char* kUnits[] = {"k", "M", "G", "T"};
+  int unit = -1;
+  // Divide until the mantissa, as it will be printed, is below 1000 (999.96 k prints 1.00 M).
+  while (unit < 3 && n >= 999.5) {
+    n /= 1000.0;
+    ++unit;
+  }
+  const char* format = n < 9.995 ? "{:.2f} {}" : n < 99.95 ? "{:.1f} {}" : "{:.0f} {}";
+  return fmt::format(fmt::runtime(format), n, kUnits[unit]);
+}
+
 }  // namespace slamtune

@@ -35,5 +35,8 @@ class Progress {
 
 // "1h02m", "3m05s", "12s" for a duration in seconds (negative or non-finite -> "?").
 std::string FormatDuration(double seconds);
+// "950", "25.1 k", "1.20 M", "3.40 G" for a count (three significant digits from 1000 on;
+// negative or non-finite -> "?").
+std::string FormatCount(double count);
 
 }  // namespace slamtune

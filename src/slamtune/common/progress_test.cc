@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -40,6 +41,20 @@ TEST(Progress, FormatsDurations) {
   EXPECT_EQ(FormatDuration(185), "3m05s");
   EXPECT_EQ(FormatDuration(3720), "1h02m");
   EXPECT_EQ(FormatDuration(-1), "?");
+}
+
+TEST(FormatCount, KeepsThreeSignificantDigitsAndCarriesIntoTheNextUnit) {
+  EXPECT_EQ(FormatCount(0), "0");
+  EXPECT_EQ(FormatCount(950), "950");
+  EXPECT_EQ(FormatCount(999.4), "999");
+  EXPECT_EQ(FormatCount(999.6), "1.00 k");
+  EXPECT_EQ(FormatCount(25'100), "25.1 k");
+  EXPECT_EQ(FormatCount(99'960), "100 k");
+  EXPECT_EQ(FormatCount(1'204'000), "1.20 M");
+  EXPECT_EQ(FormatCount(999'960), "1.00 M");
+  EXPECT_EQ(FormatCount(3.4e9), "3.40 G");
+  EXPECT_EQ(FormatCount(-1), "?");
+  EXPECT_EQ(FormatCount(std::nan("")), "?");
 }
 
 }  // namespace

@@ -4,7 +4,10 @@
 #include <chrono>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "slamtune/common/error.h"
+#include "slamtune/common/progress.h"
 #include "slamtune/metrics/gt_error.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/occupancy_grid.h"
@@ -116,6 +119,15 @@ std::string SharedWorkReport(const SlamEvaluationContext& context) {
     if (!line.empty()) out.append(1, '\n').append(line);
   }
   return out;
+}
+
+std::string SharedWorkBrief(const SlamEvaluationContext& context) {
+  if (!context.match_cache) return "";
+  const slam::MatchCacheCounters c = context.match_cache->counters();
+  const std::uint64_t calls = c.hits + c.waits + c.misses;
+  if (calls == 0) return "";
+  return fmt::format("matches: {:.1f}% of {} shared, {} computed", 100.0 * static_cast<double>(c.hits + c.waits) / calls,
+                     FormatCount(static_cast<double>(calls)), FormatCount(static_cast<double>(c.misses)));
 }
 
 }  // namespace slamtune::optim

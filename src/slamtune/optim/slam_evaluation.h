@@ -48,6 +48,10 @@ struct SlamEvaluationContext {
 void ShareWork(SlamEvaluationContext& context, std::size_t share_mb);
 // One line per cache with its counters, or that sharing is off.
 std::string SharedWorkReport(const SlamEvaluationContext& context);
+// The match cache in a few words for progress lines, e.g. "matches: 97.9% of 1.2 M shared,
+// 25.1 k computed"; empty when sharing is off or nothing was matched yet. The computed
+// matches are the cold work.
+std::string SharedWorkBrief(const SlamEvaluationContext& context);
 
 // What one SLAM run of an evaluation produced.
 struct SlamRun {
