@@ -25,7 +25,7 @@ if grep -q "built without MPI" "$work/mpi.txt"; then echo "SKIP: slamtune built 
 [[ -s "$work/mpi/run.sqlite" && -s "$work/mpi/report.html" ]] || fail "the 2-rank run wrote no database or report"
 # Same result: every table and the parameter file byte for byte.
 for f in table3_best_worst_params.csv table4_6_objectives.csv table7_loop_closures.csv table8_loop_scans.csv \
-         table9_10_errors.csv best.yaml; do
+         table9_10_errors.csv best.yaml best_slam_karto.yaml; do
   cmp -s "$work/mpi/$f" "$work/one/$f" || fail "$f differs between 2 ranks and one process"
 done
 # And every evaluation (rows are in finishing order; index and wall time are not results).

@@ -13,7 +13,7 @@ small=(--population 8 --generations 3 --divisions 3 --seed 5 --jobs 2 --quiet)
 
 # 1. An uninterrupted run writes every output.
 "$bin" optimize --out "$work/whole" "${small[@]}" > "$work/whole.txt" 2>&1 || fail "optimize failed: $(tail -3 "$work/whole.txt")"
-for f in best.yaml results.json report.html evaluations.csv table3_best_worst_params.csv table4_6_objectives.csv \
+for f in best.yaml best_slam_karto.yaml results.json report.html evaluations.csv table3_best_worst_params.csv table4_6_objectives.csv \
          table7_loop_closures.csv table8_loop_scans.csv table9_10_errors.csv maps_side_by_side.png \
          population_gen1.png population_gen3.png map_recommended.pgm map_recommended.yaml run.sqlite; do
   [[ -s "$work/whole/$f" ]] || fail "missing output $f"
@@ -23,6 +23,11 @@ for key in recommended knee worst default evaluations cache_hits wall_s; do
 done
 grep -q "loop_search_maximum_distance:" "$work/whole/best.yaml" || fail "best.yaml lacks r"
 grep -q "ros__parameters:" "$work/whole/best.yaml" || fail "best.yaml is not a ROS 2 parameter file"
+# The slam_karto file is flat (ROS 1) and holds the same values.
+r2=$(grep -E '^ +loop_search_maximum_distance:' "$work/whole/best.yaml" | awk '{print $2}')
+r1=$(grep -E '^loop_search_maximum_distance:' "$work/whole/best_slam_karto.yaml" | awk '{print $2}')
+[[ -n "$r1" && "$r1" == "$r2" ]] || fail "best_slam_karto.yaml r '$r1' is not best.yaml's '$r2'"
+if grep -q "ros__parameters" "$work/whole/best_slam_karto.yaml"; then fail "best_slam_karto.yaml is nested"; fi
 
 # Progress lines (plain, not a terminal) say how much scan matching the runs shared, and
 # nothing of it with --no-share.
@@ -52,7 +57,7 @@ else
 fi
 "$bin" optimize --resume "$work/cut" --jobs 2 --quiet > "$work/resume.txt" 2>&1 || fail "resume failed: $(tail -3 "$work/resume.txt")"
 for f in table3_best_worst_params.csv table4_6_objectives.csv table7_loop_closures.csv table8_loop_scans.csv \
-         table9_10_errors.csv best.yaml; do
+         table9_10_errors.csv best.yaml best_slam_karto.yaml; do
   cmp -s "$work/whole/$f" "$work/cut/$f" || fail "$f differs between the uninterrupted and the resumed run"
 done
 

@@ -177,6 +177,12 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     yaml << "# slamtune optimize: recommended loop-closure parameters for " << inputs.log_label << "\n"
          << slam::ToRosYaml(best_params);
   }
+  {
+    std::ofstream yaml(std::filesystem::path(dir) / "best_slam_karto.yaml");
+    yaml << "# slamtune optimize: recommended loop-closure parameters for " << inputs.log_label << "\n"
+         << "# slam_karto (ROS 1): rosparam load best_slam_karto.yaml /slam_karto\n"
+         << slam::ToFlatRosYaml(best_params);
+  }
   const auto summary = report::WriteOptimizeReport(result, dir);
   if (!args.quiet) {
     std::printf("%s\n\n", result.verdict.c_str());
@@ -193,7 +199,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                                         .c_str()
                                   : "");
     }
-    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml and %zu report files (report.html, results.json, tables, maps, figures) to %s\n",
+    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml (slam_toolbox), best_slam_karto.yaml and %zu report files (report.html, results.json, tables, maps, figures) to %s\n",
                 result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
     if (workers) {
       std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);

@@ -147,4 +147,16 @@ std::string ToRosYaml(const MapperParams& params, const std::string& node_name) 
   return out;
 }
 
+std::string ToFlatRosYaml(const MapperParams& params) {
+  std::string out;
+  if (params.solver == "ceres") {
+    out += "# these values were found with the Ceres back-end; slam_karto always uses SPA\n";
+  }
+  for (const NamedParam& p : ToNamedValues(params)) {
+    if (!FindParam(p.name)->ros) continue;
+    out += fmt::format("{}: {}\n", p.name, FormatForYaml(p.value));
+  }
+  return out;
+}
+
 }  // namespace slamtune::slam

@@ -29,5 +29,10 @@ ParamsYamlReport ApplyParamsYamlFile(MapperParams& params, const std::string& pa
 // The ROS parameters (ParamInfo::ros) in slam_toolbox's nesting, `node_name: ros__parameters:`,
 // plus `solver_plugin`. Values round-trip exactly.
 std::string ToRosYaml(const MapperParams& params, const std::string& node_name = "slam_toolbox");
+// The same ROS parameters as a flat map, the form of slam_karto's config/mapper_params.yaml
+// (ROS 1: `rosparam load FILE /slam_karto`, or <rosparam file=.../> inside the node). slam_karto
+// always solves with SPA, so there is no solver key; a comment says so when `params` use
+// Ceres. Values round-trip exactly (ApplyParamsYaml reads flat maps).
+std::string ToFlatRosYaml(const MapperParams& params);
 
 }  // namespace slamtune::slam
