@@ -161,9 +161,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); }, &store, args.jobs);
   if (workers) evaluator.SetRemote(&*workers);
   optim::OptimizeHooks hooks;
-  hooks.progress = [&progress, context](const std::string& line, bool force) {
+  // Under mpirun the counts are rank 0's own runs (each rank has its own caches).
+  const std::string shared_label = workers ? "rank 0 " : "";
+  hooks.progress = [&progress, context, shared_label](const std::string& line, bool force) {
     const std::string shared = optim::SharedWorkBrief(*context);
-    progress.Update(shared.empty() ? line : line + " | " + shared, force);
+    progress.Update(shared.empty() ? line : line + " | " + shared_label + shared, force);
   };
   hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
   optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
