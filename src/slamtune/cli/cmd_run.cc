@@ -147,6 +147,7 @@ int Run(const RunArgs& args) {
       {"loop_closures", summary.loop_closures.size()},
       {"loop_attempts", summary.loop_attempts},
       {"near_chain_matches", summary.near_chain_matches},
+      {"near_chain_matches_skipped", summary.near_chain_matches_skipped},
       {"edges", edges},
       {"duplicate_edges", duplicates},
       {"solver_runs", summary.solver_runs},

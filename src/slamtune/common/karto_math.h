@@ -14,6 +14,9 @@ namespace slamtune {
 inline constexpr double kKartoTolerance = 1e-6;
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kTwoPi = 2.0 * kPi;
+// Karto's degree->radian factor, written as its literal so that 20 degrees (response
+// expansion, §4.2 item 5) has Karto's exact bits.
+inline constexpr double kRadiansPerDegree = 0.01745329251994329577;
 
 // Round half away from zero (§1.2): floor(v + 0.5) for v >= 0, ceil(v - 0.5) otherwise.
 inline double KartoRound(double v) { return v >= 0.0 ? std::floor(v + 0.5) : std::ceil(v - 0.5); }

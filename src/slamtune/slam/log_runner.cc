@@ -80,6 +80,7 @@ RunSummary LogRunner::Summary() const {
   s.edges = c.edges_added;
   s.duplicate_edges = c.duplicate_edges;
   s.near_chain_matches = c.near_chain_matches;
+  s.near_chain_matches_skipped = c.near_chain_matches_skipped;
   s.loop_attempts = c.loop_attempts;
   for (const LoopAttempt& a : mapper_.loop_attempts()) {
     if (!a.accepted) continue;

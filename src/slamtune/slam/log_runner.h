@@ -41,7 +41,8 @@ struct RunSummary {
   int scans_wrong_reading_count = 0;
   std::array<int, kNumEdgeKinds> edges{};            // by EdgeKind
   std::array<int, kNumEdgeKinds> duplicate_edges{};  // dropped LinkScans calls
-  int near_chain_matches = 0;
+  int near_chain_matches = 0;          // near chains tested (size >= g)
+  int near_chain_matches_skipped = 0;  // of those, proven unable to link without matching
   int loop_attempts = 0;    // candidate chains matched by the loop matcher
   std::vector<LoopClosureRecord> loop_closures;
   int solver_runs = 0;
@@ -78,6 +79,8 @@ class LogRunner {
   void set_solve_cache(std::shared_ptr<SolveCache> cache) { mapper_.set_solve_cache(std::move(cache)); }
   // Scan barycentres shared with other runs of this log (barycenter_cache.h); may be null.
   void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { mapper_.set_barycenter_cache(std::move(cache)); }
+  // See Mapper::set_skip_unlinkable_near_chains (same results either way).
+  void set_skip_unlinkable_near_chains(bool on) { mapper_.set_skip_unlinkable_near_chains(on); }
   const io::LaserLog& log() const { return *log_; }
 
   RunSummary Summary() const;

@@ -58,6 +58,7 @@ void Mapper::SetParams(const MapperParams& params) {
 void Mapper::BuildMatchers() {
   const double rt = geometry_->range_threshold;
   sequential_matcher_.emplace(params_.SequentialMatcherOptions(rt));
+  near_chain_bound_.emplace(params_.SequentialMatcherOptions(rt));
   loop_matcher_.emplace(params_.LoopMatcherOptions(rt));
 }
 
@@ -195,8 +196,16 @@ void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eig
   for (const std::vector<int>& chain : chains) {
     if (static_cast<int>(chain.size()) < params_.loop_match_minimum_chain_size) continue;  // g gates here too
     ++counters_.near_chain_matches;
-    const MatchResult m = MatchWith(MatchRole::kSequential, scans_[scan], ScanPointers(chain), false, true);
-    if (m.response > params_.link_match_minimum_response_fine - kKartoTolerance) {
+    const std::vector<const LaserScan*> base = ScanPointers(chain);
+    // The edge needs a response above this; a match proven unable to reach it would be
+    // computed only to be discarded (response_bound.h), so it is skipped.
+    const double threshold = params_.link_match_minimum_response_fine - kKartoTolerance;
+    if (skip_unlinkable_near_chains_ && !near_chain_bound_->MayExceed(scans_[scan], base, threshold)) {
+      ++counters_.near_chain_matches_skipped;
+      continue;
+    }
+    const MatchResult m = MatchWith(MatchRole::kSequential, scans_[scan], base, false, true);
+    if (m.response > threshold) {
       means->push_back(m.mean);
       covariances->push_back(m.covariance);
       LinkChainToScan(chain, scan, m.mean, m.covariance, EdgeKind::kNearChain, result);

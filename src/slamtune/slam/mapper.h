@@ -32,6 +32,7 @@
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/pose_graph_solver.h"
+#include "slamtune/slam/response_bound.h"
 #include "slamtune/slam/scan_matcher.h"
 #include "slamtune/slam/solve_cache.h"
 
@@ -70,7 +71,8 @@ struct MapperCounters {
   int scans_wrong_reading_count = 0;
   std::array<int, kNumEdgeKinds> edges_added{};
   std::array<int, kNumEdgeKinds> duplicate_edges{};  // LinkScans calls dropped as duplicates (§5.1)
-  int near_chain_matches = 0;                        // near chains matched (size >= g)
+  int near_chain_matches = 0;                        // near chains tested (size >= g)
+  int near_chain_matches_skipped = 0;                // of those, proven unable to link (response_bound.h)
   int loop_attempts = 0;
   int loops_closed = 0;
 
@@ -99,6 +101,11 @@ class Mapper {
   void set_solve_cache(std::shared_ptr<SolveCache> cache) { solve_cache_ = std::move(cache); }
   // Scan barycentres shared with other runs of the same log (may be null: no sharing).
   void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { barycenter_cache_ = std::move(cache); }
+
+  // Skip the near-chain matches proven unable to reach link_match_minimum_response_fine
+  // (response_bound.h). On by default; results are identical either way (tested), off is
+  // for tests and timing.
+  void set_skip_unlinkable_near_chains(bool on) { skip_unlinkable_near_chains_ = on; }
 
   // Processed scans, index = state id, with their current poses.
   const std::vector<LaserScan>& scans() const { return scans_; }
@@ -139,6 +146,8 @@ class Mapper {
   std::shared_ptr<const LaserGeometry> geometry_;  // fixed by the first scan
   std::optional<ScanMatcher> sequential_matcher_;
   std::optional<ScanMatcher> loop_matcher_;
+  std::optional<ResponseBound> near_chain_bound_;  // with the sequential matcher's options
+  bool skip_unlinkable_near_chains_ = true;
   std::shared_ptr<MatchCache> match_cache_;  // null: no sharing; thread-safe, shared by copies
   std::shared_ptr<SolveCache> solve_cache_;  // likewise
   std::shared_ptr<BarycenterCache> barycenter_cache_;  // likewise

@@ -6,11 +6,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <memory>
+#include <string>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/carmen_reader.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 
@@ -26,7 +30,9 @@ MapperParams FastParams() {
   return p;
 }
 
-void ExpectSameState(const LogRunner& a, const LogRunner& b) {
+// Everything the engine decided and computed; the count of near-chain matches skipped by
+// the response bound (response_bound.h) only when `same_skips`.
+void ExpectSameState(const LogRunner& a, const LogRunner& b, bool same_skips = true) {
   const Mapper& ma = a.mapper();
   const Mapper& mb = b.mapper();
   ASSERT_EQ(ma.scans().size(), mb.scans().size());
@@ -36,7 +42,9 @@ void ExpectSameState(const LogRunner& a, const LogRunner& b) {
   EXPECT_TRUE(ma.graph() == mb.graph());
   EXPECT_EQ(ma.reference_poses(), mb.reference_poses());
   EXPECT_EQ(ma.running_buffer(), mb.running_buffer());
-  EXPECT_EQ(ma.counters(), mb.counters());
+  MapperCounters ca = ma.counters(), cb = mb.counters();
+  if (!same_skips) ca.near_chain_matches_skipped = cb.near_chain_matches_skipped = 0;
+  EXPECT_EQ(ca, cb);
   ASSERT_EQ(ma.loop_attempts().size(), mb.loop_attempts().size());
   for (std::size_t k = 0; k < ma.loop_attempts().size(); ++k) {
     const LoopAttempt& x = ma.loop_attempts()[k];
@@ -126,6 +134,42 @@ TEST_F(MapperOnCorridor, ForkedStateContinuesBitForBit) {
   b.RunToEnd();
   ExpectSameState(a, b);
   ExpectSameState(a, *full_);  // and equal to the run that was never forked (determinism)
+}
+
+// Skipping near-chain matches the bound proves unable to link changes nothing: same poses,
+// graph, loop attempts and trajectory as matching every near chain.
+TEST(Mapper, SkippingUnlinkableNearChainsChangesNothingInTheOffice) {
+  sim::SimulationOptions o;
+  o.world = "office";
+  o.seed = 1;
+  const auto log = std::make_shared<const io::LaserLog>(sim::Simulate(o).log);
+  LogRunner skipping(log, MapperParams{});
+  LogRunner all(log, MapperParams{});
+  all.set_skip_unlinkable_near_chains(false);
+  skipping.RunToEnd();
+  all.RunToEnd();
+  const MapperCounters& c = skipping.mapper().counters();
+  EXPECT_GT(c.near_chain_matches_skipped, 0) << "the office run skipped nothing";
+  EXPECT_GT(c.near_chain_matches, c.near_chain_matches_skipped);
+  EXPECT_EQ(all.mapper().counters().near_chain_matches_skipped, 0);
+  EXPECT_GE(skipping.Summary().loop_closures.size(), 1u);
+  ExpectSameState(skipping, all, /*same_skips=*/false);
+}
+
+TEST(Mapper, SkippingUnlinkableNearChainsChangesNothingOnAnIntelSlice) {
+  const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/intel.clf.gz";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "dataset not available: " << path;
+  io::LaserLog whole = io::ReadCarmenLog(path);
+  whole.scans.resize(std::min<std::size_t>(whole.scans.size(), 2500));  // first loop closure at scan 1835
+  const auto log = std::make_shared<const io::LaserLog>(std::move(whole));
+  LogRunner skipping(log, MapperParams{});
+  LogRunner all(log, MapperParams{});
+  all.set_skip_unlinkable_near_chains(false);
+  skipping.RunToEnd();
+  all.RunToEnd();
+  EXPECT_GT(skipping.mapper().counters().near_chain_matches_skipped, 50);
+  EXPECT_GE(skipping.Summary().loop_closures.size(), 1u);
+  ExpectSameState(skipping, all, /*same_skips=*/false);
 }
 
 TEST_F(MapperOnCorridor, LoopParametersChangedOnACopyAffectOnlyLaterDecisions) {

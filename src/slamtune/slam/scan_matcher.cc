@@ -25,9 +25,6 @@ namespace {
 // Penalty gains of §1.1.
 constexpr double kDistancePenaltyGain = 0.2;
 constexpr double kAnglePenaltyGain = 0.2;
-// Karto's degree->radian factor, written as its literal so that 20 degrees (response
-// expansion, §4.2 item 5) has Karto's exact bits.
-constexpr double kRadiansPerDegree = 0.01745329251994329577;
 
 void RequirePositive(const char* field, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {
