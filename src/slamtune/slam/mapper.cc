@@ -198,13 +198,24 @@ void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eig
     ++counters_.near_chain_matches;
     const std::vector<const LaserScan*> base = ScanPointers(chain);
     // The edge needs a response above this; a match proven unable to reach it would be
-    // computed only to be discarded (response_bound.h), so it is skipped.
+    // computed only to be discarded (response_bound.h), so it is skipped. With a match
+    // cache the proof is stored like a result, so a run repeating this call skips both.
     const double threshold = params_.link_match_minimum_response_fine - kKartoTolerance;
-    if (skip_unlinkable_near_chains_ && !near_chain_bound_->MayExceed(scans_[scan], base, threshold)) {
+    MatchResult m;
+    if (!skip_unlinkable_near_chains_) {
+      m = MatchWith(MatchRole::kSequential, scans_[scan], base, false, true);
+    } else {
+      const auto may_exceed = [&] { return near_chain_bound_->MayExceed(scans_[scan], base, threshold); };
+      if (match_cache_) {
+        m = match_cache_->MatchAbove(*sequential_matcher_, scans_[scan], base, false, true, threshold, may_exceed);
+      } else {
+        m = may_exceed() ? sequential_matcher_->Match(scans_[scan], base, false, true) : ProvenBelowThreshold();
+      }
+    }
+    if (IsProvenBelowThreshold(m)) {
       ++counters_.near_chain_matches_skipped;
       continue;
     }
-    const MatchResult m = MatchWith(MatchRole::kSequential, scans_[scan], base, false, true);
     if (m.response > threshold) {
       means->push_back(m.mean);
       covariances->push_back(m.covariance);

@@ -94,7 +94,7 @@ std::uint32_t MatchCache::InternLocked(const LaserScan& scan) {
 
 std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatcherOptions& o, const LaserScan& scan,
                                                  std::span<const LaserScan* const> base_scans, bool penalize,
-                                                 bool refine) {
+                                                 bool refine, std::span<const std::uint64_t> extra) {
   std::vector<std::uint64_t> key;
   if (!scan.geometry_ptr() || !scan.ranges_ptr()) return key;
   for (const LaserScan* b : base_scans) {
@@ -112,6 +112,7 @@ std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatch
   }
   header.push_back((o.use_response_expansion ? 1u : 0u) | (penalize ? 2u : 0u) | (refine ? 4u : 0u));
   AppendGeometryKey(scan.geometry(), &header);
+  header.insert(header.end(), extra.begin(), extra.end());
   auto h = headers_.find(header);
   if (h == headers_.end()) {
     if (headers_.size() >= kMaxHeaders) return key;  // bypass: the header table is full
@@ -159,16 +160,33 @@ void MatchCache::EraseLocked(std::unordered_map<std::vector<std::uint64_t>, Entr
 
 MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserScan& scan,
                               std::span<const LaserScan* const> base_scans, bool penalize, bool refine) {
+  SLAMTUNE_CHECK_MSG(role != MatchRole::kNearChain, "match cache: near-chain matches go through MatchAbove");
+  return Find(role, matcher.options(), scan, base_scans, penalize, refine, {},
+              [&] { return matcher.Match(scan, base_scans, penalize, refine); });
+}
+
+MatchResult MatchCache::MatchAbove(ScanMatcher& matcher, const LaserScan& scan,
+                                   std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                                   double threshold, const std::function<bool()>& may_exceed) {
+  const std::uint64_t extra[] = {Bits(threshold)};
+  return Find(MatchRole::kNearChain, matcher.options(), scan, base_scans, penalize, refine, extra, [&] {
+    return may_exceed() ? matcher.Match(scan, base_scans, penalize, refine) : ProvenBelowThreshold();
+  });
+}
+
+MatchResult MatchCache::Find(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
+                             std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                             std::span<const std::uint64_t> extra, const std::function<MatchResult()>& compute) {
   std::unique_lock lock(mutex_);
   std::vector<std::uint64_t> key;
   bool waited = false;
   for (;;) {
     // Rebuilt after every wait: ids may be freed and reused while the lock is released.
-    key = KeyLocked(role, matcher.options(), scan, base_scans, penalize, refine);
+    key = KeyLocked(role, options, scan, base_scans, penalize, refine, extra);
     if (key.empty()) {
       ++counters_.bypassed;
       lock.unlock();
-      return matcher.Match(scan, base_scans, penalize, refine);
+      return compute();
     }
     auto it = entries_.find(key);
     if (it == entries_.end()) break;
@@ -195,7 +213,7 @@ MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserS
   if (counters_.bytes > options_.byte_budget) EvictLeastRecentlyUsedHalfLocked();
   lock.unlock();
   try {
-    MatchResult result = matcher.Match(scan, base_scans, penalize, refine);
+    MatchResult result = compute();
     lock.lock();
     own->result = result;
     own->ready = true;

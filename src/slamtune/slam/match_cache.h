@@ -34,6 +34,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -49,7 +50,9 @@
 namespace slamtune::slam {
 
 // Which of the mapper's matchers made the call (§3.2 step 6, §5.3 step 3, §6.1).
-enum class MatchRole : std::uint8_t { kSequential = 0, kLoop = 1 };
+// kNearChain: a sequential-matcher call whose result the mapper keeps only above a response
+// threshold (MatchAbove); its entries may hold "proven below" instead of a match.
+enum class MatchRole : std::uint8_t { kSequential = 0, kLoop = 1, kNearChain = 2 };
 
 struct MatchCacheOptions {
   std::size_t byte_budget = std::size_t{512} << 20;  // bytes of keys + results kept; > 0
@@ -85,6 +88,14 @@ class MatchCache {
   MatchResult Match(MatchRole role, ScanMatcher& matcher, const LaserScan& scan,
                     std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
 
+  // A near-chain match (role kNearChain; §5.3 step 3), which the caller keeps only when its
+  // response exceeds `threshold`. On a miss `may_exceed()` is asked first; when it says the
+  // response cannot exceed the threshold (an exact proof, response_bound.h), the match is not
+  // computed and ProvenBelowThreshold() is stored and returned instead. The threshold's bits
+  // are part of the key, so a stored proof is only served to calls with the same threshold.
+  MatchResult MatchAbove(ScanMatcher& matcher, const LaserScan& scan, std::span<const LaserScan* const> base_scans,
+                         bool penalize, bool refine, double threshold, const std::function<bool()>& may_exceed);
+
   MatchCacheCounters counters() const;
   const MatchCacheOptions& options() const { return options_; }
 
@@ -105,8 +116,14 @@ class MatchCache {
   };
   static constexpr std::uint32_t kFreeId = 0xffffffffu;  // refs_ value of an unused id
 
+  // `extra` words (e.g. a threshold's bits) join the header.
   std::vector<std::uint64_t> KeyLocked(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                                       std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+                                       std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                                       std::span<const std::uint64_t> extra = {});
+  // The lookup of Match and MatchAbove: a stored result, or `compute()` run once and stored.
+  MatchResult Find(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
+                   std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                   std::span<const std::uint64_t> extra, const std::function<MatchResult()>& compute);
   std::uint32_t InternLocked(const LaserScan& scan);
   void HoldReadingsLocked(const LaserScan& scan);
   // Adds `delta` (+1 / -1) to the reference count of every base id in `key`; ids left

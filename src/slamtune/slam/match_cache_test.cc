@@ -68,6 +68,32 @@ TEST(MatchCacheOptions, RejectsAZeroBudget) {
   EXPECT_THROW(MatchCache{o}, InputError);
 }
 
+// Near-chain calls: a proof that the response stays below the threshold is stored and served
+// like a result (the proof is not asked for again), a real match is stored when the proof
+// fails, and another threshold is another key.
+TEST(MatchCache, MatchAboveStoresProofsAndMatchesPerThreshold) {
+  Fixture f;
+  MatchCache cache;
+  ScanMatcher matcher(f.options);
+  int asked = 0;
+  const auto cannot = [&] { return ++asked, false; };
+  const auto can = [&] { return ++asked, true; };
+  EXPECT_TRUE(IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.8, cannot)));
+  EXPECT_TRUE(IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.8, can)));
+  EXPECT_EQ(asked, 1);  // the second call was served the stored proof
+  const MatchResult real = cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.5, can);
+  EXPECT_EQ(asked, 2);  // another threshold: another entry
+  ScanMatcher fresh(f.options);
+  EXPECT_TRUE(SameBits(real, fresh.Match(f.scan, f.base_ptrs, false, true)));
+  EXPECT_TRUE(SameBits(real, cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.5, cannot)));
+  EXPECT_EQ(asked, 2);
+  // Near-chain entries are apart from plain sequential ones with the same inputs.
+  const MatchResult plain = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, true);
+  EXPECT_TRUE(SameBits(plain, real));
+  EXPECT_EQ(cache.counters().misses, 3u);
+  EXPECT_EQ(cache.counters().hits, 2u);
+}
+
 TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   Fixture f;
   MatchCache cache;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "slamtune/common/karto_math.h"
+#include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/scan_matcher.h"
 #include "slamtune/slam/testing/log_slice.h"
 #include "slamtune/slam/testing/synthetic_room.h"
@@ -18,19 +19,11 @@
 namespace slamtune::slam {
 namespace {
 
-ScanMatcherOptions KartoSequential() { return {}; }  // slam_karto defaults
-
-// slam_toolbox's sequential matcher: wider window, wide smear, response expansion on.
+// The sequential matchers of the two presets (slam_toolbox: wider window and smear,
+// response expansion on), as the mapper builds them.
+ScanMatcherOptions KartoSequential() { return MapperParams::Preset("slam_karto").SequentialMatcherOptions(12.0); }
 ScanMatcherOptions ToolboxSequential() {
-  ScanMatcherOptions o;
-  o.search_dimension = 0.5;
-  o.smear_deviation = 0.1;
-  o.range_threshold = 20.0;
-  o.distance_variance_penalty = 0.25;
-  o.angle_variance_penalty = 1.0;
-  o.minimum_distance_penalty = 0.05;
-  o.use_response_expansion = true;
-  return o;
+  return MapperParams::Preset("slam_toolbox").SequentialMatcherOptions(20.0);
 }
 
 double BoundOf(ResponseBound& bound, const LaserScan& scan, const std::vector<const LaserScan*>& base) {

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <memory>
 #include <span>
 
@@ -55,6 +56,17 @@ struct MatchResult {
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
   double response = 0.0;                            // in [0, 1]
 };
+
+// Stands for a match that was not computed because its response provably cannot exceed the
+// caller's threshold (response_bound.h): the response is -inf, below every threshold.
+inline MatchResult ProvenBelowThreshold() {
+  MatchResult r;
+  r.response = -std::numeric_limits<double>::infinity();
+  return r;
+}
+inline bool IsProvenBelowThreshold(const MatchResult& r) {
+  return r.response == -std::numeric_limits<double>::infinity();
+}
 
 class ScanMatcher {
  public:
