@@ -190,28 +190,25 @@ void Mapper::AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult
   if (!means.empty()) SetScanSensorPose(scan, WeightedMean(means, covariances));  // 4.
 }
 
+MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base,
+                                   double threshold) {
+  if (!skip_unlinkable_near_chains_) return MatchWith(MatchRole::kSequential, scan, base, false, true);
+  // A match proven unable to exceed the threshold would be computed only to be discarded
+  // (response_bound.h). With a match cache the proof is stored like a result, so a run
+  // repeating this call pays for neither.
+  const auto may_exceed = [&] { return near_chain_bound_->MayExceed(scan, base, threshold); };
+  if (match_cache_) return match_cache_->MatchAbove(*sequential_matcher_, scan, base, false, true, threshold, may_exceed);
+  return may_exceed() ? sequential_matcher_->Match(scan, base, false, true) : ProvenBelowThreshold();
+}
+
 void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
                             ProcessResult* result) {
   const auto chains = FindNearChains(graph_, reference_poses_, scan, params_.link_scan_maximum_distance);
+  const double threshold = params_.link_match_minimum_response_fine - kKartoTolerance;  // the edge needs more
   for (const std::vector<int>& chain : chains) {
     if (static_cast<int>(chain.size()) < params_.loop_match_minimum_chain_size) continue;  // g gates here too
     ++counters_.near_chain_matches;
-    const std::vector<const LaserScan*> base = ScanPointers(chain);
-    // The edge needs a response above this; a match proven unable to reach it would be
-    // computed only to be discarded (response_bound.h), so it is skipped. With a match
-    // cache the proof is stored like a result, so a run repeating this call skips both.
-    const double threshold = params_.link_match_minimum_response_fine - kKartoTolerance;
-    MatchResult m;
-    if (!skip_unlinkable_near_chains_) {
-      m = MatchWith(MatchRole::kSequential, scans_[scan], base, false, true);
-    } else {
-      const auto may_exceed = [&] { return near_chain_bound_->MayExceed(scans_[scan], base, threshold); };
-      if (match_cache_) {
-        m = match_cache_->MatchAbove(*sequential_matcher_, scans_[scan], base, false, true, threshold, may_exceed);
-      } else {
-        m = may_exceed() ? sequential_matcher_->Match(scans_[scan], base, false, true) : ProvenBelowThreshold();
-      }
-    }
+    const MatchResult m = MatchNearChain(scans_[scan], ScanPointers(chain), threshold);
     if (IsProvenBelowThreshold(m)) {
       ++counters_.near_chain_matches_skipped;
       continue;

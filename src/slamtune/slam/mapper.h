@@ -136,6 +136,8 @@ class Mapper {
   int LinkChainToScan(const std::vector<int>& chain, int scan, const Pose2& mean, const Eigen::Matrix3d& covariance,
                       EdgeKind kind, ProcessResult* result);
   void AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult* result);
+  // A near-chain match whose result counts only above `threshold` (skipped when provably not).
+  MatchResult MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base, double threshold);
   void LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
                       ProcessResult* result);
   int TryCloseLoop(int scan, ProcessResult* result);

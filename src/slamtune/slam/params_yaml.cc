@@ -136,14 +136,23 @@ ParamsYamlReport ApplyParamsYamlFile(MapperParams& params, const std::string& pa
   return ApplyParamsYaml(params, text.str(), path);
 }
 
+namespace {
+
+// One "name: value" line per ROS parameter, each prefixed by `indent`.
+void AppendRosParamLines(const MapperParams& params, const char* indent, std::string* out) {
+  for (const NamedParam& p : ToNamedValues(params)) {
+    if (!FindParam(p.name)->ros) continue;
+    *out += fmt::format("{}{}: {}\n", indent, p.name, FormatForYaml(p.value));
+  }
+}
+
+}  // namespace
+
 std::string ToRosYaml(const MapperParams& params, const std::string& node_name) {
   std::string out = fmt::format("{}:\n  ros__parameters:\n", node_name);
   out += fmt::format("    solver_plugin: {}\n",
                      params.solver == "ceres" ? "solver_plugins::CeresSolver" : "solver_plugins::SpaSolver");
-  for (const NamedParam& p : ToNamedValues(params)) {
-    if (!FindParam(p.name)->ros) continue;
-    out += fmt::format("    {}: {}\n", p.name, FormatForYaml(p.value));
-  }
+  AppendRosParamLines(params, "    ", &out);
   return out;
 }
 
@@ -152,10 +161,7 @@ std::string ToFlatRosYaml(const MapperParams& params) {
   if (params.solver == "ceres") {
     out += "# these values were found with the Ceres back-end; slam_karto always uses SPA\n";
   }
-  for (const NamedParam& p : ToNamedValues(params)) {
-    if (!FindParam(p.name)->ros) continue;
-    out += fmt::format("{}: {}\n", p.name, FormatForYaml(p.value));
-  }
+  AppendRosParamLines(params, "", &out);
   return out;
 }
 

@@ -26,11 +26,10 @@ void LatticeRange(double offset, double step, double* lo, double* hi) {
 }  // namespace
 
 ResponseBound::ResponseBound(const ScanMatcherOptions& options)
-    : options_(options),
-      geometry_(CorrelationGridGeometry::Compute(options.search_dimension, options.search_resolution,
+    : geometry_(CorrelationGridGeometry::Compute(options.search_dimension, options.search_resolution,
                                                  options.smear_deviation, options.range_threshold)),
       resolution_(1.0 / (1.0 / options.search_resolution)) {
-  options_.Validate();
+  options.Validate();
   // Positions: the coarse lattice spans +-(n-1)/2 rho around the scan; the coarse mean stays
   // inside it and the fine pass adds +-rho (§4.2 items 4 and 6).
   window_ = 0.5 * (geometry_.search_side - 1) * resolution_ + resolution_;
@@ -38,11 +37,11 @@ ResponseBound::ResponseBound(const ScanMatcherOptions& options)
   // expansion is on (§4.2 item 5); the coarse mean heading is a circular mean of lattice
   // headings, so it lies in that range while it is narrower than pi; the fine pass then
   // spans [mean - cr/2, mean - cr/2 + (Kf - 1) fs].
-  const double cr = options_.coarse_angle_resolution;
+  const double cr = options.coarse_angle_resolution;
   double lo = 0.0, hi = 0.0;
-  LatticeRange(options_.coarse_angle_offset, cr, &lo, &hi);
-  if (options_.use_response_expansion) {
-    double offset = options_.coarse_angle_offset;
+  LatticeRange(options.coarse_angle_offset, cr, &lo, &hi);
+  if (options.use_response_expansion) {
+    double offset = options.coarse_angle_offset;
     for (int i = 0; i < 3; ++i) {
       offset += 20 * kRadiansPerDegree;
       double l = 0.0, h = 0.0;
@@ -52,7 +51,7 @@ ResponseBound::ResponseBound(const ScanMatcherOptions& options)
     }
   }
   double fine_lo = 0.0, fine_hi = 0.0;
-  LatticeRange(0.5 * cr, options_.fine_angle_step, &fine_lo, &fine_hi);
+  LatticeRange(0.5 * cr, options.fine_angle_step, &fine_lo, &fine_hi);
   const bool coarse_range_bounded = hi - lo < kPi - 1e-6;
   heading_lo_ = lo + std::min(0.0, fine_lo) - 1e-9;
   heading_hi_ = hi + std::max(0.0, fine_hi) + 1e-9;
@@ -72,10 +71,9 @@ ResponseBound::ResponseBound(const ScanMatcherOptions& options)
   slack_ = (geometry_.kernel_half + 2.5) * resolution_;
   cell_ = kCellsPerBitmapCell * resolution_;
   const double extent = geometry_.stored_side * resolution_;
-  const int columns = static_cast<int>(std::ceil(extent / cell_)) + 1;
-  rows_ = columns;
-  words_per_row_ = (columns + 63) / 64;
-  bits_.assign(static_cast<std::size_t>(rows_) * words_per_row_, 0);
+  side_ = static_cast<int>(std::ceil(extent / cell_)) + 1;
+  words_per_row_ = (side_ + 63) / 64;
+  bits_.assign(static_cast<std::size_t>(side_) * words_per_row_, 0);
 }
 
 const ResponseBound::ScanCells& ResponseBound::CellsOf(const LaserScan& scan) {
@@ -111,16 +109,20 @@ const ResponseBound::ScanCells& ResponseBound::CellsOf(const LaserScan& scan) {
   return entry;
 }
 
-bool ResponseBound::MarkPoints(std::span<const LaserScan* const> base_scans) {
+void ResponseBound::MarkChain(const LaserScan& scan, std::span<const LaserScan* const> base_scans) {
+  // The matcher's ROI placement (§4.2 step 2), so cells line up with the grid it would build.
+  const Pose2 sensor = scan.SensorPose();
+  origin_ = {sensor.x - (0.5 * (geometry_.roi_side - 1) * resolution_),
+             sensor.y - (0.5 * (geometry_.roi_side - 1) * resolution_)};
+  stored_lo_ = origin_ - Eigen::Vector2d::Constant((geometry_.border + 0.5) * resolution_);
   if (marked_x0_ <= marked_x1_) {
     for (std::int32_t y = marked_y0_; y <= marked_y1_; ++y) {
       std::fill_n(bits_.begin() + static_cast<std::ptrdiff_t>(y) * words_per_row_, words_per_row_, 0);
     }
   }
-  const std::int32_t columns = rows_;
   bitmap_x0_ = static_cast<std::int32_t>(std::floor(stored_lo_.x() / cell_));
   bitmap_y0_ = static_cast<std::int32_t>(std::floor(stored_lo_.y() / cell_));
-  marked_x0_ = marked_y0_ = columns;
+  marked_x0_ = marked_y0_ = side_;
   marked_x1_ = marked_y1_ = -1;
   for (const LaserScan* base : base_scans) {
     SLAMTUNE_CHECK(base != nullptr);
@@ -131,16 +133,15 @@ bool ResponseBound::MarkPoints(std::span<const LaserScan* const> base_scans) {
       // Unsigned compare: negative differences wrap above the bitmap's size.
       const auto cx = static_cast<std::uint32_t>(cells[i] - bitmap_x0_);
       const auto cy = static_cast<std::uint32_t>(cells[i + 1] - bitmap_y0_);
-      if (cx >= static_cast<std::uint32_t>(columns) || cy >= static_cast<std::uint32_t>(rows_)) continue;
+      if (cx >= static_cast<std::uint32_t>(side_) || cy >= static_cast<std::uint32_t>(side_)) continue;
       bits_[static_cast<std::size_t>(cy) * words_per_row_ + (cx >> 6)] |= std::uint64_t{1} << (cx & 63);
     }
     // The scan's box, clipped to the bitmap, bounds what it marked.
     marked_x0_ = std::min(marked_x0_, std::max(0, scan_cells.min_x - bitmap_x0_));
-    marked_x1_ = std::max(marked_x1_, std::min(columns - 1, scan_cells.max_x - bitmap_x0_));
+    marked_x1_ = std::max(marked_x1_, std::min(side_ - 1, scan_cells.max_x - bitmap_x0_));
     marked_y0_ = std::min(marked_y0_, std::max(0, scan_cells.min_y - bitmap_y0_));
-    marked_y1_ = std::max(marked_y1_, std::min(rows_ - 1, scan_cells.max_y - bitmap_y0_));
+    marked_y1_ = std::max(marked_y1_, std::min(side_ - 1, scan_cells.max_y - bitmap_y0_));
   }
-  return marked_x0_ <= marked_x1_;
 }
 
 bool ResponseBound::AnyPointIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) const {
@@ -242,11 +243,7 @@ bool ResponseBound::MayExceed(const LaserScan& scan, std::span<const LaserScan* 
   int needed = std::max(0, static_cast<int>(std::floor(threshold * static_cast<double>(beams))) - 1);
   while (needed <= static_cast<int>(beams) && !(static_cast<double>(needed) * 100.0 / divisor > threshold)) ++needed;
   if (needed > static_cast<int>(beams)) return false;  // even every beam at 100 stays <= threshold
-  const Pose2 sensor = scan.SensorPose();
-  origin_ = {sensor.x - (0.5 * (geometry_.roi_side - 1) * resolution_),
-             sensor.y - (0.5 * (geometry_.roi_side - 1) * resolution_)};
-  stored_lo_ = origin_ - Eigen::Vector2d::Constant((geometry_.border + 0.5) * resolution_);
-  MarkPoints(base_scans);
+  MarkChain(scan, base_scans);
   return MaxCount(scan, needed, false) >= needed;
 }
 
@@ -254,11 +251,7 @@ std::int64_t ResponseBound::MaxSumBound(const LaserScan& scan, std::span<const L
   const std::size_t beams = scan.ranges().size();
   if (beams == 0) return 0;
   if (num_buckets_ == 0) return static_cast<std::int64_t>(beams) * 100;
-  const Pose2 sensor = scan.SensorPose();
-  origin_ = {sensor.x - (0.5 * (geometry_.roi_side - 1) * resolution_),
-             sensor.y - (0.5 * (geometry_.roi_side - 1) * resolution_)};
-  stored_lo_ = origin_ - Eigen::Vector2d::Constant((geometry_.border + 0.5) * resolution_);
-  MarkPoints(base_scans);
+  MarkChain(scan, base_scans);
   return static_cast<std::int64_t>(MaxCount(scan, static_cast<int>(beams) + 1, true)) * 100;
 }
 

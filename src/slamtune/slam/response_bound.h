@@ -55,15 +55,14 @@ class ResponseBound {
   std::int64_t MaxSumBound(const LaserScan& scan, std::span<const LaserScan* const> base_scans);
 
  private:
-  // Marks the chain's points; returns false if no point lies in the stored grid.
-  bool MarkPoints(std::span<const LaserScan* const> base_scans);
+  // Places the grid as the matcher would for `scan` and marks the chain's points.
+  void MarkChain(const LaserScan& scan, std::span<const LaserScan* const> base_scans);
   // Whether the bitmap holds a point in the metric box [lo, hi] (bitmap cells rounded outwards).
   bool AnyPointIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) const;
   // With exact_max, the largest bucket count. Otherwise a count >= stop_at if some bucket
   // reaches stop_at (returned as soon as one does) and a smaller one if none does.
   int MaxCount(const LaserScan& scan, int stop_at, bool exact_max);
 
-  ScanMatcherOptions options_;
   CorrelationGridGeometry geometry_;
   double resolution_;          // rho, as the grid reads it back (1 / scale)
   double window_;              // W: largest |offset| of a scored position from the scan's, per axis
@@ -74,7 +73,7 @@ class ResponseBound {
   double slack_;               // (h + 2.5) rho
   double cell_;                // bitmap cell size s (metres)
   int words_per_row_ = 0;
-  int rows_ = 0;
+  int side_ = 0;               // bitmap columns = rows
   Eigen::Vector2d origin_{0, 0};       // ROI cell (0, 0) of the current match (metres)
   Eigen::Vector2d stored_lo_{0, 0};    // metric corner of the stored grid's cell (0, 0)
   // Each scan's points as cells of a world-aligned lattice of size s (so that they do not
