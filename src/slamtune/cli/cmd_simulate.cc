@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/common/error.h"
@@ -21,6 +22,7 @@ struct SimulateState {
   sim::SimulationOptions options;
   std::string out;
   bool list = false;
+  std::vector<double> laser_offset;  // X,Y,YAW when given
 };
 
 int ListWorlds() {
@@ -33,9 +35,13 @@ int ListWorlds() {
 int Run(const SimulateState& state) {
   if (state.list) return ListWorlds();
   if (state.out.empty()) throw InputError("--out: required (the folder to write NAME.clf, NAME.relations, NAME.truth.txt)");
+  sim::SimulationOptions options = state.options;
+  if (!state.laser_offset.empty()) {
+    options.laser_offset = Pose2{state.laser_offset[0], state.laser_offset[1], state.laser_offset[2]};
+  }
   const auto start = std::chrono::steady_clock::now();
-  const sim::Simulation simulation = sim::Simulate(state.options);
-  const sim::SimulationFiles files = sim::WriteSimulation(state.out, simulation, state.options);
+  const sim::Simulation simulation = sim::Simulate(options);
+  const sim::SimulationFiles files = sim::WriteSimulation(state.out, simulation, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s\n", simulation.summary.Report().c_str());
   std::printf("wrote %s\n      %s\n      %s\n", files.log.c_str(), files.relations.c_str(), files.truth.c_str());
@@ -61,6 +67,12 @@ std::function<int()> Setup(CLI::App& app) {
   app.add_option("--max-range", o.laser.max_range_m, "Laser max range = no-return value (m)")->capture_default_str();
   app.add_option("--range-noise", o.laser.range_noise_m, "Range noise sigma (m)")->capture_default_str();
   app.add_option("--range-resolution", o.laser.range_resolution_m, "Range quantum (m)")->capture_default_str();
+  app.add_flag("--float32-scans", o.laser.float32_values,
+               "Beam angles, max range and readings as float32 values, as a ROS LaserScan holds them");
+  app.add_option("--laser-offset", state->laser_offset,
+                 "Laser mounting pose in the robot frame, X,Y,YAW (m, m, rad), e.g. 0.12,-0.04,0.05")
+      ->expected(3)
+      ->delimiter(',');
   app.add_option("--odom-trans-noise", o.odometry.translation_noise, "Distance noise (m per sqrt(m))")
       ->capture_default_str();
   app.add_option("--odom-rot-noise-per-m", o.odometry.rotation_noise_per_m, "Heading noise per metre (rad/sqrt(m))")

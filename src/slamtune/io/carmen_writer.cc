@@ -189,7 +189,11 @@ CarmenWriteSummary WriteChecked(std::ostream& out, const LaserLog& log, const Ca
         fmt::format_to(std::back_inserter(buffer), "ROBOTLASER1 0 {} {} {} {} 0 0 {}", r.angle_min, fov,
                        r.angle_increment, r.max_range, r.ranges.size());
       }
-      for (double range : r.ranges) fmt::format_to(std::back_inserter(buffer), " {:.{}f}", range, options.range_decimals);
+      if (options.exact_ranges) {
+        for (double range : r.ranges) fmt::format_to(std::back_inserter(buffer), " {}", range);
+      } else {
+        for (double range : r.ranges) fmt::format_to(std::back_inserter(buffer), " {:.{}f}", range, options.range_decimals);
+      }
       if (!flaser) buffer.append(std::string_view(" 0"));  // no remissions
       AppendPose(buffer, r.laser_pose, options.pose_decimals);
       AppendPose(buffer, r.robot_pose, options.pose_decimals);

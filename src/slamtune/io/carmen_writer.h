@@ -30,6 +30,9 @@ struct CarmenWriteOptions {
   std::vector<std::string> comments;   // extra header lines, each written as "# <text>"
   std::string hostname = "slamtune";   // ipc_hostname column; non-empty, no whitespace
   int range_decimals = 3;              // digits after the point for ranges, in [0, 9]
+  // Ranges as the shortest text that reads back to the same double (range_decimals unused):
+  // for readings that are not whole millimetres, e.g. float32 values as a ROS LaserScan holds.
+  bool exact_ranges = false;
   int pose_decimals = 6;               // for x, y, theta, tv, rv, accel, in [0, 12]
   int time_decimals = 6;               // for timestamps, in [0, 9]
 

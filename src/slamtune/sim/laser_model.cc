@@ -27,8 +27,19 @@ void LaserOptions::Validate() const {
   }
 }
 
-double LaserOptions::angle_min() const { return -DegToRad(fov_deg) / 2.0; }
-double LaserOptions::angle_increment() const { return DegToRad(fov_deg) / (beams - 1); }
+namespace {
+double AsFloat32(double v) { return static_cast<double>(static_cast<float>(v)); }
+}  // namespace
+
+double LaserOptions::angle_min() const {
+  const double v = -DegToRad(fov_deg) / 2.0;
+  return float32_values ? AsFloat32(v) : v;
+}
+double LaserOptions::angle_increment() const {
+  const double v = DegToRad(fov_deg) / (beams - 1);
+  return float32_values ? AsFloat32(v) : v;
+}
+double LaserOptions::max_range() const { return float32_values ? AsFloat32(max_range_m) : max_range_m; }
 
 SimulatedScan SimulateScan(const RayCaster& caster, const Pose2& laser_pose, const LaserOptions& options,
                            Random& random) {
@@ -38,7 +49,7 @@ SimulatedScan SimulateScan(const RayCaster& caster, const Pose2& laser_pose, con
   // World angle of beam i as Karto evaluates it: (theta + angle_min) + i * increment (§2.1).
   const double first = laser_pose.theta + options.angle_min();
   const double increment = options.angle_increment();
-  const double max_range = options.max_range_m;
+  const double max_range = options.max_range();
   // k / steps (not k * resolution): the nearest double to the decimal k/steps, so a reading
   // printed with enough decimals parses back to exactly this value.
   const double steps = std::round(1.0 / options.range_resolution_m);
@@ -49,6 +60,7 @@ SimulatedScan SimulateScan(const RayCaster& caster, const Pose2& laser_pose, con
     if (hit) {
       const double quantised = std::round((*hit + noise) * steps) / steps;
       reading = std::clamp(quantised, 0.0, max_range);
+      if (options.float32_values) reading = AsFloat32(reading);
     }
     if (reading >= max_range) {
       reading = max_range;

@@ -24,12 +24,16 @@ struct LaserOptions {
   double range_noise_m = 0.01;       // standard deviation of the range noise (m), >= 0
   double range_resolution_m = 0.001; // readings are multiples of this (m), in (0, 0.1], 1/res
                                      // whole; 1 mm keeps the written log (3 decimals) exact
+  // Beam angles, max range and readings as float32 values (widened to double), as a ROS
+  // sensor_msgs/LaserScan carries them, so a bag made from the log holds the same numbers.
+  bool float32_values = false;
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
 
   double angle_min() const;        // rad, -fov/2
   double angle_increment() const;  // rad, fov/(beams-1)
+  double max_range() const;        // m, max_range_m (as float32 when float32_values)
 };
 
 struct SimulatedScan {

@@ -30,6 +30,12 @@ double Round6(double v) { return std::round(v * 1e6) / 1e6; }
 
 Pose2 Round6(const Pose2& p) { return {Round6(p.x), Round6(p.y), Round6(p.theta)}; }
 
+// The same at 12 decimals (k / 1e12 is exact for |v| < 9000 m), for laser poses with an offset.
+double Round12(double v) { return std::round(v * 1e12) / 1e12; }
+Pose2 Round12(const Pose2& p) { return {Round12(p.x), Round12(p.y), Round12(p.theta)}; }
+
+bool IsZero(const Pose2& p) { return p.x == 0.0 && p.y == 0.0 && p.theta == 0.0; }
+
 }  // namespace
 
 void SimulationOptions::Validate() const {
@@ -47,6 +53,9 @@ void SimulationOptions::Validate() const {
   RequireRange("scan_rate_hz", scan_rate_hz, 0.0, 100.0, true);
   RequireRange("step_length_m", step_length_m, 0.0, 1.0, true);
   RequireRange("start_time_s", start_time_s, 0.0, 1e9, false);
+  RequireRange("laser_offset.x", laser_offset.x, -5.0, 5.0, false);
+  RequireRange("laser_offset.y", laser_offset.y, -5.0, 5.0, false);
+  RequireRange("laser_offset.theta", laser_offset.theta, -kPi, kPi, false);
   if (max_scans < 1) throw InputError("max_scans = 0: must be >= 1");
 }
 
@@ -92,11 +101,17 @@ Simulation Simulate(const SimulationOptions& options) {
 
   io::LaserLog& log = sim.log;
   log.path = "<memory>";
-  log.params = {{kMaxRangeParam, fmt::format("{}", laser.max_range_m)},
+  const Pose2& offset = options.laser_offset;
+  const bool has_offset = !IsZero(offset);
+  log.params = {{kMaxRangeParam, fmt::format("{}", laser.max_range())},
                 {"laser_front_laser_fov", fmt::format("{}", laser.fov_deg)},
                 {"laser_front_laser_resolution", fmt::format("{}", laser.fov_deg / (laser.beams - 1))},
-                {"robot_frontlaser_offset", "0.0"}};
-  log.no_return_value = laser.max_range_m;
+                {"robot_frontlaser_offset", has_offset ? fmt::format("{}", offset.x) : "0.0"}};
+  if (has_offset) {
+    log.params["robot_frontlaser_side_offset"] = fmt::format("{}", offset.y);
+    log.params["robot_frontlaser_angular_offset"] = fmt::format("{}", offset.theta);
+  }
+  log.no_return_value = laser.max_range();
   log.no_return_rule = std::string("PARAM ") + kMaxRangeParam;
   log.scans.reserve(num_scans);
   log.odometry.reserve(num_odometry);
@@ -129,20 +144,22 @@ Simulation Simulate(const SimulationOptions& options) {
       ++next_odometry;
       continue;
     }
-    SimulatedScan scan = SimulateScan(caster, true_pose, laser, laser_random);
+    const Pose2 true_laser = has_offset ? Compose(true_pose, offset) : true_pose;
+    SimulatedScan scan = SimulateScan(caster, true_laser, laser, laser_random);
     io::LaserScanRecord record;
     record.kind = kind;
     record.angle_min = angle_min;
     record.angle_increment = angle_increment;
-    record.max_range = laser.max_range_m;
+    record.max_range = laser.max_range();
     record.ranges = std::move(scan.ranges);
     record.no_returns = scan.no_returns;
-    record.laser_pose = Round6(odometry.pose());
-    record.robot_pose = record.laser_pose;
+    record.robot_pose = Round6(odometry.pose());
+    record.laser_pose = has_offset ? Round12(Compose(record.robot_pose, offset)) : record.robot_pose;
+    record.laser_offset = Between(record.robot_pose, record.laser_pose);  // as the reader derives it
     record.ipc_time = time;
     record.logger_time = logger_time;
     log.scans.push_back(std::move(record));
-    sim.truth.push_back(io::TimedPose{time, true_pose});
+    sim.truth.push_back(io::TimedPose{time, true_laser});
     ++next_scan;
   }
   log.record_counts = {{kind == io::RecordKind::kFlaser ? "FLASER" : "ROBOTLASER1", log.scans.size()},

@@ -8,9 +8,15 @@
 // j * step_length / speed; both rounded to whole microseconds so the %.6f timestamps written to
 // the log, relations and truth files denote the same doubles. Recorded poses and velocities
 // are rounded to 6 decimals and readings to the range resolution (1 mm), so the in-memory
-// log equals the written log read back by io::ReadCarmenLog, value for value. Odometry is integrated over
-// every interval between consecutive records, and the laser is at the robot origin, so a
-// scan's laser pose = its odometry pose = the ODOM pose at the same instant.
+// log equals the written log read back by io::ReadCarmenLog, value for value. Odometry is
+// integrated over every interval between consecutive records and describes the robot base.
+//
+// Laser mounting offset O (laser in the robot frame, zero by default): the laser looks from
+// true base pose (+) O, a scan's robot pose is the odometry at that instant and its laser pose
+// robot (+) O, rounded to 12 decimals (the log then writes poses with 12); the truth file and
+// relations follow the true laser pose, as a SLAM trajectory of sensor poses does. With O = 0
+// the laser pose is the robot pose. The offset is also written as the CARMEN PARAMs
+// robot_frontlaser_offset, _side_offset and _angular_offset.
 //
 // Scans are FLASER records when the laser's beams follow the FLASER convention of the reader
 // (io::FlaserBeamGeometry: 180 deg field of view and an odd beam count such as the default
@@ -49,6 +55,7 @@ struct SimulationOptions {
   double scan_rate_hz = 5.0;       // laser scans per second, in (0, 100]
   double step_length_m = 0.05;     // m: spacing of ODOM records (odometry is integrated per record), in (0, 1]
   double start_time_s = 100.0;     // s: timestamp of the first record, in [0, 1e9]
+  Pose2 laser_offset;              // laser in the robot frame (m, m, rad): |x|, |y| <= 5, |theta| <= pi
   std::size_t max_scans = 200000;  // refuse settings that would produce more scans than this
 
   // Throws InputError naming the field, its value and the rule (checks the nested options too).
@@ -81,7 +88,7 @@ struct SimulationSummary {
 struct Simulation {
   World world;
   io::LaserLog log;                   // laser scans and ODOM records, each in time order
-  std::vector<io::TimedPose> truth;   // true laser pose at each scan
+  std::vector<io::TimedPose> truth;   // true laser pose at each scan (robot (+) laser_offset)
   std::vector<io::Relation> relations;
   SimulationSummary summary;
 };

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -9,6 +10,35 @@
 #include "slamtune/io/carmen_writer.h"
 
 namespace slamtune::sim {
+namespace {
+
+bool HasOffset(const SimulationOptions& options) {
+  const Pose2& o = options.laser_offset;
+  return o.x != 0.0 || o.y != 0.0 || o.theta != 0.0;
+}
+
+std::string LaserPoseComment(const Simulation& simulation, const SimulationOptions& options) {
+  const bool flaser = simulation.log.scans.empty() || simulation.log.scans.front().kind == io::RecordKind::kFlaser;
+  if (!HasOffset(options)) {
+    return flaser ? "FLASER x y theta = odom_x odom_y odom_theta = odometric laser pose (laser at the robot origin)"
+                  : "ROBOTLASER1 laser pose = robot pose = odometric laser pose (laser at the robot origin)";
+  }
+  const Pose2& o = options.laser_offset;
+  return fmt::format("{}: laser pose = robot pose (+) mounting offset ({}, {}, {}) (m, m, rad), the PARAMs "
+                     "robot_frontlaser_offset, _side_offset, _angular_offset",
+                     flaser ? "FLASER" : "ROBOTLASER1", o.x, o.y, o.theta);
+}
+
+// Digits after the point that print multiples of `resolution` exactly (9 at most).
+int RangeDecimals(double resolution) {
+  for (int d = 3; d < 9; ++d) {
+    const double scaled = resolution * std::pow(10.0, d);
+    if (std::fabs(scaled - std::round(scaled)) < 1e-9) return d;
+  }
+  return 9;
+}
+
+}  // namespace
 
 std::vector<std::string> DescribeSimulation(const Simulation& simulation, const SimulationOptions& options) {
   const LaserOptions& laser = options.laser;
@@ -27,9 +57,7 @@ std::vector<std::string> DescribeSimulation(const Simulation& simulation, const 
                   "distance x{}, rotation x{}, heading drift {} rad/m",
                   odo.translation_noise, odo.rotation_noise_per_m, odo.rotation_noise_per_rad,
                   1.0 + odo.translation_scale_bias, 1.0 + odo.rotation_scale_bias, odo.heading_drift_per_m),
-      simulation.log.scans.empty() || simulation.log.scans.front().kind == io::RecordKind::kFlaser
-          ? "FLASER x y theta = odom_x odom_y odom_theta = odometric laser pose (laser at the robot origin)"
-          : "ROBOTLASER1 laser pose = robot pose = odometric laser pose (laser at the robot origin)",
+      LaserPoseComment(simulation, options),
       fmt::format("ground truth: {0}.truth.txt (true laser pose per scan), {0}.relations (Freiburg format)",
                   simulation.world.name),
   };
@@ -44,6 +72,11 @@ SimulationFiles WriteSimulation(const std::string& dir, const Simulation& simula
 
   io::CarmenWriteOptions write_options;
   write_options.comments = DescribeSimulation(simulation, options);
+  // Every value reads back exactly: laser poses with an offset have 12 decimals, float32
+  // readings need their shortest round-trip text, other readings the resolution's decimals.
+  if (HasOffset(options)) write_options.pose_decimals = 12;
+  write_options.range_decimals = RangeDecimals(options.laser.range_resolution_m);
+  write_options.exact_ranges = options.laser.float32_values || write_options.range_decimals == 9;
   io::WriteCarmenLog(files.log, simulation.log, write_options);
   io::WriteRelations(files.relations, simulation.relations);
   io::WriteTrajectory(files.truth, simulation.truth);

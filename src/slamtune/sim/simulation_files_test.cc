@@ -134,6 +134,39 @@ TEST_F(SimulationFilesTest, WideLaserIsWrittenAsRobotLaser1) {
   EXPECT_EQ(scan.ranges, sim.log.scans.front().ranges);
 }
 
+// A ROS-like robot: laser mounted off the base, float32 values, 1/512 m readings. The log holds
+// both poses and the offset PARAMs, and every value reads back bit for bit.
+TEST_F(SimulationFilesTest, OffsetFloat32LaserReadsBackBitForBit) {
+  SimulationOptions options;
+  options.speed_mps = 1.0;
+  options.scan_rate_hz = 3.0;
+  options.laser_offset = Pose2{0.12, -0.04, 0.05};
+  options.laser.float32_values = true;
+  options.laser.range_resolution_m = 1.0 / 512;
+  const Simulation sim = Simulate(options);
+  const SimulationFiles files = WriteSimulation(dir_.string(), sim, options);
+  const io::LaserLog log = io::ReadCarmenLog(files.log);
+  ASSERT_EQ(log.scans.size(), sim.log.scans.size());
+  EXPECT_EQ(log.record_counts.at("ROBOTLASER1"), sim.log.scans.size());  // float32 angles are not FLASER's
+  EXPECT_EQ(log.params.at("robot_frontlaser_offset"), "0.12");
+  EXPECT_EQ(log.params.at("robot_frontlaser_side_offset"), "-0.04");
+  EXPECT_EQ(log.params.at("robot_frontlaser_angular_offset"), "0.05");
+  for (std::size_t k = 0; k < log.scans.size(); ++k) {
+    const io::LaserScanRecord &read = log.scans[k], &made = sim.log.scans[k];
+    ASSERT_EQ(read.ranges, made.ranges) << "scan " << k;
+    ASSERT_EQ(read.laser_pose, made.laser_pose) << "scan " << k;
+    ASSERT_EQ(read.robot_pose, made.robot_pose) << "scan " << k;
+    ASSERT_EQ(read.laser_offset, made.laser_offset) << "scan " << k;
+    ASSERT_EQ(read.angle_min, made.angle_min);
+    ASSERT_EQ(read.angle_increment, made.angle_increment);
+    for (double r : read.ranges) ASSERT_EQ(r, static_cast<double>(static_cast<float>(r)));
+    ASSERT_NEAR(read.laser_offset.x, 0.12, 1e-9);
+    ASSERT_NEAR(read.laser_offset.y, -0.04, 1e-9);
+    ASSERT_NEAR(read.laser_offset.theta, 0.05, 1e-9);
+  }
+  EXPECT_EQ(log.scans.front().angle_min, static_cast<double>(static_cast<float>(-kPi / 2)));
+}
+
 TEST_F(SimulationFilesTest, UnwritableFolderIsAnInputError) {
   std::ofstream(dir_.string() + "_file") << "x";  // a file where the folder should go
   SimulationOptions options;

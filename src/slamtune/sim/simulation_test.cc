@@ -100,6 +100,32 @@ TEST(Simulate, FlaserPosesAreTheOdometryAtTheScan) {
   EXPECT_EQ(sim.log.no_return_value, 30.0);
 }
 
+// With a mounting offset the laser looks from robot (+) offset: the scan's laser pose is its
+// odometric robot pose composed with the offset, and the truth is the true laser pose.
+TEST(Simulate, LaserOffsetPlacesTheLaserOffTheBase) {
+  SimulationOptions options;
+  options.world = "corridor";
+  options.laser_offset = Pose2{0.3, 0.1, -0.2};
+  const Simulation sim = Simulate(options);
+  const Simulation& plain = Cached("corridor");
+  ASSERT_EQ(sim.log.scans.size(), plain.log.scans.size());
+  for (std::size_t k = 0; k < sim.log.scans.size(); ++k) {
+    const io::LaserScanRecord& scan = sim.log.scans[k];
+    ASSERT_EQ(scan.robot_pose, plain.log.scans[k].robot_pose);  // odometry does not depend on the laser
+    const Pose2 expected = Compose(scan.robot_pose, options.laser_offset);
+    ASSERT_NEAR(scan.laser_pose.x, expected.x, 1e-11);
+    ASSERT_NEAR(scan.laser_pose.y, expected.y, 1e-11);
+    ASSERT_NEAR(scan.laser_pose.theta, expected.theta, 1e-11);
+    ASSERT_EQ(scan.laser_offset, Between(scan.robot_pose, scan.laser_pose));
+  }
+  // The scans see the world from the offset laser, not from the base.
+  EXPECT_NE(sim.log.scans[10].ranges, plain.log.scans[10].ranges);
+  EXPECT_EQ(sim.log.params.at("robot_frontlaser_offset"), "0.3");
+  SimulationOptions bad;
+  bad.laser_offset = Pose2{0, 0, 4.0};
+  EXPECT_THROW(Simulate(bad), InputError);
+}
+
 TEST(Simulate, RelationsAreRelativeTruePoses) {
   for (const char* world : {"office", "hall"}) {
     const Simulation& sim = Cached(world);
