@@ -206,6 +206,23 @@ TEST(CarmenReaderTest, OdomParamCommentsEmptyAndUnknownRecords) {
   EXPECT_EQ(log.lines_read, 10u);
 }
 
+// The newer CARMEN PARAM form carries ipc_timestamp, hostname and logger_timestamp.
+TEST(CarmenReaderTest, ParamsInTheNewerFormatWithBothTimestamps) {
+  const std::string text =
+      "PARAM laser_front_laser_max_range 2.5 1031745824.648210 nohost 0.001234\n"
+      "PARAM robot_frontlaser_offset 0.2 1031745824.648210 nohost 0.001234\n"
+      "PARAM some_name two words 1031745824.648210 nohost 0.001234\n"
+      "PARAM older_form 0.5 0.6 nohost 0\n" +
+      Flaser(10.5);
+  const LaserLog log = ReadText(text);
+  EXPECT_EQ(log.params.at("laser_front_laser_max_range"), "2.5");
+  EXPECT_EQ(log.no_return_rule, "PARAM laser_front_laser_max_range");
+  EXPECT_EQ(log.no_return_value, 2.5);
+  EXPECT_EQ(log.params.at("robot_frontlaser_offset"), "0.2");
+  EXPECT_EQ(log.params.at("some_name"), "two words");
+  EXPECT_EQ(log.params.at("older_form"), "0.5 0.6");
+}
+
 TEST(CarmenReaderTest, TimeOrderAnomaliesAreCountedAndFileOrderKept) {
   const LaserLog log = ReadText(Flaser(10.0) + Flaser(11.0) + Flaser(10.25) + Flaser(12.0) + Flaser(11.9));
   EXPECT_EQ(log.time_backward_steps, 2u);

@@ -173,8 +173,14 @@ std::pair<std::string, std::string> ParseParam(const Fields& f) {
                             " fields, expects at least 5 (PARAM name value ipc_hostname timestamp)");
   }
   Number(f, f.size() - 1, "timestamp");
+  // Newer CARMEN: PARAM name value ipc_timestamp ipc_hostname logger_timestamp, both times
+  // written with a decimal point (%f); older: PARAM name value ipc_hostname timestamp.
+  const std::size_t n = f.size();
+  const auto is_time = [&](std::size_t k) { return f[k].find('.') != std::string_view::npos && ParseDouble(f[k]); };
+  const bool newer = n >= 6 && is_time(n - 3) && is_time(n - 1);
+  const std::size_t value_end = newer ? n - 3 : n - 2;
   std::string value(f[2]);
-  for (std::size_t k = 3; k + 2 < f.size(); ++k) value.append(" ").append(f[k]);
+  for (std::size_t k = 3; k < value_end; ++k) value.append(" ").append(f[k]);
   return {std::string(f[1]), value};
 }
 

@@ -34,8 +34,10 @@ LaserScanRecord ParseRawLaser(const Fields& f);
 
 OdomRecord ParseOdom(const Fields& f);
 
-// PARAM name value host time -> (name, value); a value made of several fields is re-joined
-// with single spaces.
+// PARAM name value host time, or the newer CARMEN form PARAM name value ipc_timestamp host
+// logger_timestamp (recognised when the fields third from last and last are both numbers
+// with a decimal point, as CARMEN writes its timestamps) -> (name, value); a value made of
+// several fields is re-joined with single spaces.
 std::pair<std::string, std::string> ParseParam(const Fields& f);
 
 }  // namespace slamtune::io::carmen
