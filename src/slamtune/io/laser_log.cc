@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "slamtune/common/error.h"
 #include "slamtune/io/line_reader.h"
 
@@ -19,6 +21,19 @@ const char* RecordKindName(RecordKind kind) {
   }
   return "unknown";
 }
+
+bool BeamGeometry::SameAs(const BeamGeometry& other, double tolerance_rad) const {
+  return readings == other.readings && std::fabs(angle_min - other.angle_min) <= tolerance_rad &&
+         std::fabs(angle_max() - other.angle_max()) <= tolerance_rad;
+}
+
+std::string BeamGeometry::ToString() const {
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  return fmt::format("{} beams, {:.2f} .. {:.2f} deg, step {:.4f} deg", readings, angle_min * kDeg,
+                     angle_max() * kDeg, angle_increment * kDeg);
+}
+
+BeamGeometry GeometryOf(const LaserScanRecord& scan) { return {scan.ranges.size(), scan.angle_min, scan.angle_increment}; }
 
 void LogReadOptions::Validate() const {
   if (!(no_return_value >= 0.0) || !std::isfinite(no_return_value)) {

@@ -40,6 +40,35 @@ struct LaserScanRecord {
   std::size_t no_returns = 0;  // readings >= max_range, NaN, +-inf or negative
 };
 
+// A laser's beams: reading count and angles in the laser frame (beam i at angle_min + i * inc).
+struct BeamGeometry {
+  std::size_t readings = 0;
+  double angle_min = 0.0;        // rad, first beam
+  double angle_increment = 0.0;  // rad
+  double angle_max() const {
+    return angle_min + angle_increment * static_cast<double>(readings > 0 ? readings - 1 : 0);
+  }
+  // Same count, first and last beam within tolerance_rad (beam_geometry.h).
+  bool SameAs(const BeamGeometry& other, double tolerance_rad) const;
+  // "181 beams, -90.00 .. 90.00 deg, step 1.0000 deg".
+  std::string ToString() const;
+};
+
+BeamGeometry GeometryOf(const LaserScanRecord& scan);
+
+// What io::HarmonizeBeams did (beam_geometry.h).
+struct BeamReport {
+  std::string policy;  // "resample", "strict"; empty when not applied
+  struct Seen {
+    BeamGeometry geometry;
+    std::size_t scans = 0;
+  };
+  std::vector<Seen> geometries;  // distinct geometries, most scans first; [0] is the reference
+  std::size_t scans_resampled = 0;   // scans put onto the reference geometry
+  std::size_t readings_outside = 0;  // reference beams with no beam of the scan near them (+inf)
+  bool varies() const { return geometries.size() > 1; }
+};
+
 struct OdomRecord {
   std::size_t line = 0;
   Pose2 pose;
@@ -72,6 +101,7 @@ struct LaserLog {
   bool stopped_at_max_scans = false;  // LogReadOptions::max_scans ended the read early
   std::size_t total_readings = 0;     // sum of ranges.size() over scans
   std::size_t total_no_returns = 0;   // sum of no_returns over scans
+  BeamReport beams;                   // one geometry for the engine (beam_geometry.h)
 };
 
 struct LogReadOptions {

@@ -1,0 +1,100 @@
+#include "slamtune/io/beam_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::io {
+namespace {
+
+bool IsNoReturn(double r, double max_range) { return !std::isfinite(r) || r < 0.0 || r >= max_range; }
+
+std::size_t CountNoReturns(const LaserScanRecord& scan) {
+  return static_cast<std::size_t>(
+      std::count_if(scan.ranges.begin(), scan.ranges.end(), [&](double r) { return IsNoReturn(r, scan.max_range); }));
+}
+
+// Distinct geometries of the log, most scans first (stable: first seen wins a tie).
+std::vector<BeamReport::Seen> DistinctGeometries(const LaserLog& log) {
+  std::vector<BeamReport::Seen> seen;
+  for (const LaserScanRecord& scan : log.scans) {
+    const BeamGeometry g = GeometryOf(scan);
+    auto it = std::find_if(seen.begin(), seen.end(),
+                           [&](const BeamReport::Seen& s) { return s.geometry.SameAs(g, kSameAngleTolerance); });
+    if (it == seen.end()) {
+      seen.push_back({g, 1});
+    } else {
+      ++it->scans;
+    }
+  }
+  std::stable_sort(seen.begin(), seen.end(), [](const auto& a, const auto& b) { return a.scans > b.scans; });
+  return seen;
+}
+
+}  // namespace
+
+const char* BeamPolicyName(BeamPolicy policy) {
+  switch (policy) {
+    case BeamPolicy::kResample: return "resample";
+    case BeamPolicy::kStrict: return "strict";
+  }
+  return "resample";
+}
+
+BeamPolicy ParseBeamPolicy(const std::string& text) {
+  if (text == "resample") return BeamPolicy::kResample;
+  if (text == "strict") return BeamPolicy::kStrict;
+  throw InputError("--beams '" + text + "': must be 'resample' (one geometry for all scans) or 'strict' (Karto: "
+                   "scans of another reading count are dropped)");
+}
+
+std::size_t ResampleScan(const BeamGeometry& target, LaserScanRecord* scan) {
+  const BeamGeometry own = GeometryOf(*scan);
+  std::vector<double> out(target.readings, std::numeric_limits<double>::infinity());
+  std::size_t outside = target.readings;
+  for (std::size_t j = 0; j < target.readings; ++j) {
+    const double angle = target.angle_min + static_cast<double>(j) * target.angle_increment;
+    if (own.readings == 0) break;
+    double index = 0.0;
+    if (own.readings > 1 && own.angle_increment != 0.0) {
+      index = std::floor((angle - own.angle_min) / own.angle_increment + 0.5);  // a tie takes the later beam
+    }
+    if (!(index >= 0.0 && index <= static_cast<double>(own.readings - 1))) continue;
+    const std::size_t i = static_cast<std::size_t>(index);
+    const double own_angle = own.angle_min + static_cast<double>(i) * own.angle_increment;
+    const double reach = 0.5 * std::fabs(own.readings > 1 ? own.angle_increment : target.angle_increment) + 1e-9;
+    if (std::fabs(own_angle - angle) <= reach) {
+      out[j] = scan->ranges[i];
+      --outside;
+    }
+  }
+  scan->ranges = std::move(out);
+  scan->angle_min = target.angle_min;
+  scan->angle_increment = target.angle_increment;
+  scan->no_returns = CountNoReturns(*scan);
+  return outside;
+}
+
+void HarmonizeBeams(BeamPolicy policy, LaserLog* log) {
+  SLAMTUNE_CHECK(log != nullptr);
+  BeamReport& report = log->beams;
+  report = BeamReport{};
+  report.policy = BeamPolicyName(policy);
+  report.geometries = DistinctGeometries(*log);
+  if (policy == BeamPolicy::kStrict || report.geometries.size() < 2) return;
+  const BeamGeometry reference = report.geometries.front().geometry;
+  for (LaserScanRecord& scan : log->scans) {
+    const BeamGeometry own = GeometryOf(scan);
+    if (own.SameAs(reference, kSameAngleTolerance)) continue;
+    log->total_readings -= scan.ranges.size();
+    log->total_no_returns -= scan.no_returns;
+    report.readings_outside += ResampleScan(reference, &scan);
+    ++report.scans_resampled;
+    log->total_readings += scan.ranges.size();
+    log->total_no_returns += scan.no_returns;
+  }
+}
+
+}  // namespace slamtune::io

@@ -1,0 +1,46 @@
+// One beam geometry for a whole log.
+//
+// Karto describes a laser once (karto-algorithm.md §2.1): every scan must have the first
+// scan's reading count, or Process rejects it, and scans of the same count are read with the
+// first scan's angles whatever their own. Real recordings break that: a CARMEN log whose scans
+// alternate between 180 and 181 readings with four start angles, cheap lidars whose count
+// varies from turn to turn (slam_toolbox#540, "contains 268 range readings, expected 274").
+//
+// Policy (BeamPolicy):
+//   * kResample (default): the reference geometry is the one most scans have (the first seen on
+//     a tie); every scan with another geometry is resampled onto it, each reference beam taking
+//     the reading of the nearest beam of the scan's own geometry, and +inf (no return) where the
+//     scan has no beam within half of its own increment (outside its field of view). Nearest,
+//     not interpolated: interpolating across an edge would invent points between two walls.
+//     Scans of the reference geometry are untouched, so a log with one geometry is unchanged.
+//   * kStrict: nothing is changed; the engine then does what Karto does (drops scans of another
+//     reading count, counted in the run's scans_wrong_reading_count).
+// Geometries are "the same" when they have the same reading count and their first and last
+// beam angles agree within kSameAngleTolerance (1e-6 rad: float32 rounding of a ROS message
+// is 1e-7).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "slamtune/io/laser_log.h"
+
+namespace slamtune::io {
+
+inline constexpr double kSameAngleTolerance = 1e-6;  // rad
+
+enum class BeamPolicy { kResample, kStrict };
+const char* BeamPolicyName(BeamPolicy policy);  // "resample", "strict"
+// "resample" / "strict"; InputError naming the option otherwise.
+BeamPolicy ParseBeamPolicy(const std::string& text);
+
+// Makes the log's scans share one geometry under `policy` and records what was done in
+// log->beams. Idempotent.
+void HarmonizeBeams(BeamPolicy policy, LaserLog* log);
+
+// `scan`'s readings on `target` beams as described above; no_returns recounted against the
+// scan's max_range. Returns the target beams that no beam of the scan is near (set to +inf).
+std::size_t ResampleScan(const BeamGeometry& target, LaserScanRecord* scan);
+
+}  // namespace slamtune::io
