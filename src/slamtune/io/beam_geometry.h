@@ -30,7 +30,6 @@ namespace slamtune::io {
 
 inline constexpr double kSameAngleTolerance = 1e-6;  // rad
 
-enum class BeamPolicy { kResample, kStrict };
 const char* BeamPolicyName(BeamPolicy policy);  // "resample", "strict"
 // "resample" / "strict"; InputError naming the option otherwise.
 BeamPolicy ParseBeamPolicy(const std::string& text);

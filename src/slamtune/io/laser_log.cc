@@ -18,6 +18,7 @@ const char* RecordKindName(RecordKind kind) {
     case RecordKind::kParam: return "PARAM";
     case RecordKind::kComment: return "#";
     case RecordKind::kUnknown: return "unknown";
+    case RecordKind::kRosLaserScan: return "LaserScan";
   }
   return "unknown";
 }
@@ -35,7 +36,21 @@ std::string BeamGeometry::ToString() const {
 
 BeamGeometry GeometryOf(const LaserScanRecord& scan) { return {scan.ranges.size(), scan.angle_min, scan.angle_increment}; }
 
+void RecordingReadOptions::Validate() const {
+  if (!(max_odom_gap_s > 0.0 && max_odom_gap_s <= 60.0)) {
+    throw InputError("--max-odom-gap = " + FormatExact(max_odom_gap_s) + ": must be in (0, 60] seconds");
+  }
+  if (laser_offset) {
+    const Pose2& o = *laser_offset;
+    if (!std::isfinite(o.x) || !std::isfinite(o.y) || !(std::fabs(o.theta) <= 3.14159265358979323846)) {
+      throw InputError(fmt::format("--laser-offset = {},{},{}: must be finite, yaw in [-pi, pi] rad", o.x, o.y,
+                                   o.theta));
+    }
+  }
+}
+
 void LogReadOptions::Validate() const {
+  recording.Validate();
   if (!(no_return_value >= 0.0) || !std::isfinite(no_return_value)) {
     throw InputError("no_return_value = " + FormatExact(no_return_value) +
                      ": must be 0 (detect from the log) or a positive finite range in metres");

@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <limits>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,7 +15,8 @@
 
 namespace slamtune::io {
 
-enum class RecordKind { kFlaser, kRobotLaser1, kRawLaser, kOdom, kParam, kComment, kUnknown };
+// kRosLaserScan: a sensor_msgs/LaserScan of a ROS recording (recording_log.h).
+enum class RecordKind { kFlaser, kRobotLaser1, kRawLaser, kOdom, kParam, kComment, kUnknown, kRosLaserScan };
 
 const char* RecordKindName(RecordKind kind);
 
@@ -76,6 +79,42 @@ struct OdomRecord {
   double ipc_time = 0.0, logger_time = 0.0;
 };
 
+// Where the scans of a ROS recording came from and what could not be used (recording_log.h).
+struct RecordingInfo {
+  std::string format;                 // "MCAP", "rosbag2 SQLite3", "ROS 1 bag v2.0"
+  std::vector<std::string> files;
+  bool complete = true;               // the container's end marker was found
+  std::string ending;                 // how the data ended
+  std::uint64_t dropped_tail_bytes = 0;  // --lenient: a corrupt or truncated tail not read
+  std::string dropped_tail_reason;
+  struct Topic {
+    std::string name, type;
+    std::size_t messages = 0;
+    double rate_hz = 0.0;  // (messages - 1) / span of their receive times; 0 if undefined
+  };
+  std::vector<Topic> topics;
+  // Each choice and how it was made ("--scan-topic", "the only LaserScan topic", ...).
+  std::string scan_topic, scan_topic_rule;
+  std::string odometry_source, odometry_rule;  // e.g. "tf odom -> base_footprint"
+  std::string odom_frame, base_frame, laser_frame;
+  std::string laser_offset_source;             // e.g. "tf base_footprint -> base_link -> laser (static)"
+  Pose2 laser_offset;                          // base -> laser, projected to x, y, yaw
+  double laser_height_m = 0.0;                 // z of the laser above the base frame
+  double laser_tilt_deg = 0.0;                 // angle between the laser's z axis and the base's
+  bool upside_down = false;                    // z axis down: beams reversed (slam_toolbox)
+  bool odometry_velocities = false;            // log.odometry carries recorded tv, rv
+  std::size_t scan_messages = 0;               // on the scan topic
+  std::size_t scans_unplaced = 0;              // no odometry or laser pose at their stamp: not used
+  std::vector<std::string> unplaced_examples;  // the first few, "scan K at T s: why"
+  std::size_t scans_malformed = 0;             // --lenient: undecodable or inconsistent, not used
+  std::vector<std::string> malformed_examples;
+  std::size_t scans_other_frame = 0;           // frame_id differs from the first scan's (used)
+  std::size_t messages_undecodable = 0;        // --lenient: tf / odometry messages skipped
+  std::vector<std::string> tf_edges;           // "parent -> child (static)" / "(N samples)"
+  std::size_t tf_parent_conflicts = 0;         // transforms giving a frame a second parent, ignored
+  std::size_t tf_bad_rotations = 0;            // transforms refused for a bad quaternion
+};
+
 struct LaserLog {
   std::string path;  // as given to the reader ("<memory>" for streams)
   std::vector<LaserScanRecord> scans;  // file order
@@ -102,12 +141,30 @@ struct LaserLog {
   std::size_t total_readings = 0;     // sum of ranges.size() over scans
   std::size_t total_no_returns = 0;   // sum of no_returns over scans
   BeamReport beams;                   // one geometry for the engine (beam_geometry.h)
+  std::optional<RecordingInfo> recording;  // set when the log was read from a ROS recording
+};
+
+// How scans whose beam geometry differs from the others' are treated (beam_geometry.h).
+enum class BeamPolicy { kResample, kStrict };
+
+// Choices made when turning a ROS recording into a log (recording_log.h); empty = automatic.
+struct RecordingReadOptions {
+  std::string scan_topic;   // sensor_msgs/LaserScan topic; "" = the only one
+  std::string odom_topic;   // nav_msgs/Odometry topic for the poses; "" = odom -> base from /tf
+  std::string odom_frame;   // "" = "odom"
+  std::string base_frame;   // "" = base_footprint, else base_link, as found in the tf tree
+  std::optional<Pose2> laser_offset;  // base -> laser (m, m, rad), instead of the tf tree's
+  double max_odom_gap_s = 0.5;        // odometry samples farther apart are not interpolated
+
+  void Validate() const;
 };
 
 struct LogReadOptions {
   bool lenient = false;        // skip malformed records (and count them) instead of failing
   double no_return_value = 0;  // > 0 overrides the detected no-return value (m)
   std::size_t max_scans = 0;   // stop after this many laser scans (0 = all); for short slices
+  BeamPolicy beams = BeamPolicy::kResample;  // applied by ReadLaserLog (log_reader.h)
+  RecordingReadOptions recording;            // for ROS recordings
 
   // Throws InputError naming the field if no_return_value is negative, NaN or infinite.
   void Validate() const;

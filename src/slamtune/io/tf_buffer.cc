@@ -34,6 +34,10 @@ RigidTransform3 RigidTransform3::Inverse() const {
   return out;
 }
 
+std::string NormalizeFrameId(const std::string& frame) {
+  return !frame.empty() && frame.front() == '/' ? frame.substr(1) : frame;
+}
+
 double YawOf(const Eigen::Quaterniond& q) {
   return std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()), 1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
 }

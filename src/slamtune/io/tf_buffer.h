@@ -40,6 +40,9 @@ Pose2 ToPose2(const RigidTransform3& t);
 // Yaw about z of a quaternion, as tf2::getYaw: atan2(2(wz + xy), 1 - 2(y^2 + z^2)).
 double YawOf(const Eigen::Quaterniond& q);
 
+// A frame id as tf2 names it: without the leading '/' ROS 1's tf allowed ("/base_link").
+std::string NormalizeFrameId(const std::string& frame);
+
 struct TfLookup {
   std::optional<RigidTransform3> transform;
   std::string failure;  // why not, when transform is empty
