@@ -1,4 +1,5 @@
-// `slamtune info LOG`: what a CARMEN log holds (io/log_summary.h), as a table or JSON.
+// `slamtune info LOG`: what a log holds (io/log_summary.h) — a CARMEN log or a ROS recording —
+// as a table or JSON.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -7,7 +8,7 @@
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/cli/log_input.h"
 #include "slamtune/io/log_summary.h"
 
 namespace slamtune::cli {
@@ -16,9 +17,7 @@ namespace {
 struct InfoArgs {
   std::string log;
   bool json = false;
-  bool lenient = false;
-  double no_return = 0.0;    // m; 0 = detect from the log
-  std::size_t max_scans = 0;  // 0 = whole log
+  LogInputOptions input;
 };
 
 // JSON numbers cannot be infinite: an infinite value (no no-return value) is written as null.
@@ -63,28 +62,24 @@ nlohmann::ordered_json ToJson(const io::LogSummary& s) {
       {"unknown_records", s.unknown_records},
       {"skipped_records", s.skipped_records},
       {"skipped_reasons", s.skipped_reasons},
+      {"input", s.input},
   };
 }
 
 const SubcommandRegistrar kInfo(Subcommand{
     "info",
-    "Summarise a CARMEN log (plain or gzip): records, scans, beam geometry, no-return value, odometry, "
-    "time-order anomalies",
+    "Summarise a log (CARMEN, or a ROS 2 / ROS 1 bag): scans, beam geometry, no-return value, odometry, "
+    "laser offset, time-order anomalies",
     10,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<InfoArgs>();
-      app.add_option("LOG", args->log, "CARMEN log file (.clf, plain or gzip-compressed)")->required();
+      app.add_option("LOG", args->log,
+                     "CARMEN log (.clf, plain or gzip), MCAP / .db3 / rosbag2 folder, or ROS 1 .bag")
+          ->required();
       app.add_flag("--json", args->json, "Print the summary as one JSON object");
-      app.add_flag("--lenient", args->lenient, "Skip malformed records (and count them) instead of failing");
-      app.add_option("--no-return", args->no_return,
-                     "Readings >= this value (m) are no-returns; overrides the value detected from the log");
-      app.add_option("--max-scans", args->max_scans, "Read only the first N laser scans (0 = all)");
+      args->input.AddTo(app);
       return [args]() -> int {
-        io::LogReadOptions options;
-        options.lenient = args->lenient;
-        options.no_return_value = args->no_return;
-        options.max_scans = args->max_scans;
-        const io::LogSummary summary = io::SummarizeLog(io::ReadCarmenLog(args->log, options));
+        const io::LogSummary summary = io::SummarizeLog(ReadLog(args->log, args->input));
         if (args->json) {
           std::printf("%s\n", ToJson(summary).dump(2).c_str());
         } else {

@@ -9,7 +9,8 @@
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/cli/log_input.h"
+#include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/slam/params_yaml.h"
@@ -20,6 +21,7 @@ namespace {
 
 struct RenderArgs {
   std::string log, poses, out, preset, params_file;
+  LogInputOptions input;
   std::vector<std::string> sets;
 };
 
@@ -27,7 +29,8 @@ int RunRender(const RenderArgs& args) {
   slam::MapperParams params = args.preset.empty() ? slam::MapperParams{} : slam::MapperParams::Preset(args.preset);
   if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
   for (const auto& s : args.sets) slam::ApplyOverride(params, s);
-  const io::LaserLog log = io::ReadCarmenLog(args.log);
+  const io::LaserLog log = ReadLog(args.log, args.input);
+  for (const std::string& line : io::DescribeLogInput(log)) std::fprintf(stderr, "%s\n", line.c_str());
   const auto poses = args.poses == "odometry" ? slam::OdometryTrajectory(log) : io::ReadTrajectory(args.poses);
   slam::PoseMapSummary summary;
   const io::MapImage map = slam::MapFromPoses(log, poses, params, &summary);
@@ -52,7 +55,8 @@ const SubcommandRegistrar kRegistrar{{
     35,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RenderArgs>();
-      app.add_option("LOG", args->log, "CARMEN log (plain or gzip)")->required();
+      app.add_option("LOG", args->log, "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag")->required();
+      args->input.AddTo(app);
       app.add_option("--poses", args->poses, "trajectory file (timestamp x y theta per scan) or 'odometry'")
           ->required();
       app.add_option("--out", args->out, "output folder")->required();

@@ -16,9 +16,10 @@
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
+#include "slamtune/cli/log_input.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/relations.h"
 #include "slamtune/io/trajectory.h"
@@ -39,9 +40,7 @@ struct RunArgs {
   std::vector<std::string> sets;
   std::string relations;
   bool no_loop_closure = false;
-  bool lenient = false;
-  double no_return = 0.0;
-  std::size_t max_scans = 0;
+  LogInputOptions input;
   bool quiet = false;
 };
 
@@ -91,11 +90,10 @@ int Run(const RunArgs& args) {
   const auto file = [&](const char* name) { return (std::filesystem::path(args.out) / name).string(); };
 
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto, 10.0);
-  io::LogReadOptions read_options;
-  read_options.lenient = args.lenient;
-  read_options.no_return_value = args.no_return;
-  read_options.max_scans = args.max_scans;
-  auto log = std::make_shared<const io::LaserLog>(io::ReadCarmenLog(args.log, read_options));
+  auto log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
+  if (!args.quiet) {
+    for (const std::string& line : io::DescribeLogInput(*log)) std::fprintf(stderr, "%s\n", line.c_str());
+  }
 
   slam::LogRunner runner(log, params);
   const auto start = std::chrono::steady_clock::now();
@@ -160,6 +158,7 @@ int Run(const RunArgs& args) {
       {"range_threshold_m", summary.range_threshold},
       {"no_return_value_m", Number(log->no_return_value)},
       {"no_return_rule", log->no_return_rule},
+      {"input", io::DescribeLogInput(*log)},
       {"params", ParamsJson(params)},
       {"map",
        {{"width", quality.width},
@@ -192,20 +191,24 @@ int Run(const RunArgs& args) {
   json_out << run.dump(2) << "\n";
 
   progress.Finish();
-  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s; wrote %s\n", summary.scans_read,
-              summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, gt_line.c_str(),
-              args.out.c_str());
+  const std::string dropped =
+      summary.scans_wrong_reading_count > 0
+          ? fmt::format(", {} scans dropped (reading count differs from the first scan's)", summary.scans_wrong_reading_count)
+          : "";
+  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s; wrote %s\n", summary.scans_read,
+              summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, dropped.c_str(),
+              gt_line.c_str(), args.out.c_str());
   return 0;
 }
 
 const SubcommandRegistrar kRun(Subcommand{
     "run",
-    "Run the Karto-faithful SLAM engine on a CARMEN log: map.pgm/map.yaml/map.png, trajectory.txt, "
+    "Run the Karto-faithful SLAM engine on a log or bag: map.pgm/map.yaml/map.png, trajectory.txt, "
     "loop_closures.csv and run.json in --out",
     20,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RunArgs>();
-      app.add_option("LOG", args->log, "CARMEN log (plain or gzip)")->required();
+      app.add_option("LOG", args->log, "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag")->required();
       app.add_option("--out", args->out, "Output folder (created)")->required();
       app.add_option("--params", args->params_file,
                      "Mapper parameters YAML (slam_toolbox ros__parameters nesting or a flat map)");
@@ -214,9 +217,7 @@ const SubcommandRegistrar kRun(Subcommand{
       app.add_option("--set", args->sets, "Override one parameter, name=value (repeatable; applied last)");
       app.add_option("--relations", args->relations, "Freiburg relations file: report the relation error");
       app.add_flag("--no-loop-closure", args->no_loop_closure, "Same as --set do_loop_closing=false");
-      app.add_flag("--lenient", args->lenient, "Skip malformed log records instead of failing");
-      app.add_option("--no-return", args->no_return, "No-return value of the log in m (default: detected)");
-      app.add_option("--max-scans", args->max_scans, "Read only the first N laser scans (0 = all)");
+      args->input.AddTo(app);
       app.add_flag("--quiet", args->quiet, "No progress on stderr");
       return [args]() -> int { return Run(*args); };
     }});

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/log_summary.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/params_yaml.h"
 
@@ -21,17 +21,17 @@ void TuningInputOptions::AddTo(CLI::App& app) {
   app.add_option("--preset", preset, "base parameters: slam_karto (default), open_karto or slam_toolbox");
   app.add_option("--params", params_file, "slam_toolbox / slam_karto parameter YAML for the base parameters");
   app.add_option("--set", sets, "override one base parameter, NAME=VALUE (repeatable)");
-  app.add_option("--no-return", no_return, "no-return value of the log in metres (default: detected)");
+  input.AddTo(app);
 }
 
 nlohmann::json TuningInputOptions::ToJson() const {
-  nlohmann::json j{{"log", log},       {"relations", relations}, {"world", world},          {"world_seed", world_seed},
-                   {"preset", preset}, {"params", params_file}, {"sets", sets},            {"no_return", no_return}};
+  nlohmann::json j{{"log", log},       {"relations", relations}, {"world", world}, {"world_seed", world_seed},
+                   {"preset", preset}, {"params", params_file}, {"sets", sets},   {"input", input.ToJson()}};
   // A file's identity: its size and modification time, so a changed file is noticed on --resume.
   for (const char* key : {"log", "relations", "params"}) {
     const std::string path = j[key];
     std::error_code ec;
-    if (!path.empty() && std::filesystem::exists(path, ec)) {
+    if (!path.empty() && std::filesystem::is_regular_file(path, ec)) {
       j[std::string(key) + "_bytes"] = std::filesystem::file_size(path, ec);
     }
   }
@@ -47,7 +47,7 @@ TuningInputOptions TuningInputOptions::FromJson(const nlohmann::json& j) {
   o.preset = j.at("preset");
   o.params_file = j.at("params");
   o.sets = j.at("sets").get<std::vector<std::string>>();
-  o.no_return = j.at("no_return");
+  o.input = LogInputOptions::FromJson(j.at("input"));
   return o;
 }
 
@@ -73,10 +73,11 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
       in.relations_label = "simulated (true trajectory)";
     }
   } else {
-    io::LogReadOptions read;
-    read.no_return_value = options.no_return;
-    in.log = std::make_shared<const io::LaserLog>(io::ReadCarmenLog(options.log, read));
+    in.log = std::make_shared<const io::LaserLog>(ReadLog(options.log, options.input));
     in.log_label = options.log;
+    if (!quiet) {
+      for (const std::string& line : io::DescribeLogInput(*in.log)) std::fprintf(stderr, "%s\n", line.c_str());
+    }
   }
   if (!options.relations.empty()) {
     in.relations = io::ReadRelations(options.relations);

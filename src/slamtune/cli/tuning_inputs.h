@@ -1,4 +1,5 @@
-// Inputs shared by `slamtune optimize` and `slamtune sweep`: the log (a CARMEN file, or a
+// Inputs shared by `slamtune optimize` and `slamtune sweep`: the log (a CARMEN file or a ROS
+// recording, or a
 // built-in world simulated in memory when none is given), relations, and the base mapper
 // parameters from --preset / --params / --set; and the evaluation context both commands build
 // from them, on rank 0 and, under mpirun, on every worker rank (optim/mpi_evaluation.h).
@@ -13,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "slamtune/cli/log_input.h"
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/relations.h"
 #include "slamtune/optim/mpi_evaluation.h"
@@ -29,7 +31,7 @@ struct TuningInputOptions {
   std::string preset;
   std::string params_file;
   std::vector<std::string> sets;
-  double no_return = 0.0;
+  LogInputOptions input;  // how the log is read (--lenient, --no-return, --beams, bag choices)
 
   void AddTo(CLI::App& app);
   // Everything that changes results, for the run database and --resume.

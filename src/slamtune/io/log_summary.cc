@@ -35,6 +35,7 @@ LogSummary SummarizeLog(const LaserLog& log) {
   s.unknown_records = log.unknown_records;
   s.skipped_records = log.skipped_records;
   s.skipped_reasons = log.skipped_reasons;
+  s.input = DescribeLogInput(log);
   if (log.scans.empty()) return s;
 
   const LaserScanRecord& first = log.scans.front();
@@ -81,13 +82,80 @@ LogSummary SummarizeLog(const LaserLog& log) {
   return s;
 }
 
+std::vector<std::string> DescribeLogInput(const LaserLog& log) {
+  std::vector<std::string> out;
+  if (log.recording) {
+    const RecordingInfo& r = *log.recording;
+    const std::string ending =
+        r.dropped_tail_bytes > 0
+            ? fmt::format("{} bytes of a corrupt or truncated tail not read, --lenient ({})", r.dropped_tail_bytes,
+                          r.dropped_tail_reason)
+            : (r.ending.empty() ? (r.complete ? "complete" : "no end marker") : r.ending);
+    out.push_back(fmt::format("recording: {}, {} file{}; {}", r.format, r.files.size(), r.files.size() == 1 ? "" : "s",
+                              ending));
+    out.push_back(fmt::format("scans: {} ({}), {} messages, {} used", r.scan_topic, r.scan_topic_rule, r.scan_messages,
+                              log.scans.size()));
+    out.push_back(fmt::format("odometry: {} ({})", r.odometry_source, r.odometry_rule));
+    out.push_back(fmt::format("laser offset: x {:.4f} m, y {:.4f} m, yaw {:.3f} deg, {} ({}){}{}", r.laser_offset.x,
+                              r.laser_offset.y, RadToDeg(r.laser_offset.theta),
+                              r.laser_frame == r.base_frame ? r.base_frame : r.base_frame + " -> " + r.laser_frame,
+                              r.laser_offset_source,
+                              r.upside_down ? "; upside down: readings reversed" : "",
+                              r.laser_tilt_deg > 1.0 ? fmt::format("; tilted {:.1f} deg", r.laser_tilt_deg) : ""));
+    if (r.scans_unplaced > 0) {
+      out.push_back(fmt::format("not used: {} scans without odometry at their stamp (first: {})", r.scans_unplaced,
+                                r.unplaced_examples.empty() ? "-" : r.unplaced_examples.front()));
+    }
+    if (r.scans_malformed > 0) {
+      out.push_back(fmt::format("not used: {} malformed scans, --lenient (first: {})", r.scans_malformed,
+                                r.malformed_examples.empty() ? "-" : r.malformed_examples.front()));
+    }
+    if (r.messages_undecodable > 0) {
+      out.push_back(fmt::format("not used: {} undecodable tf / odometry messages, --lenient", r.messages_undecodable));
+    }
+    if (r.scans_other_frame > 0) {
+      out.push_back(fmt::format("note: {} scans name another frame than {} (read as {})", r.scans_other_frame,
+                                r.laser_frame, r.laser_frame));
+    }
+  }
+  const BeamReport& b = log.beams;
+  if (b.varies()) {
+    std::string seen;
+    for (const BeamReport::Seen& g : b.geometries) {
+      seen += fmt::format("{}{} ({} scans)", seen.empty() ? "" : "; ", g.geometry.ToString(), g.scans);
+    }
+    out.push_back(fmt::format("beams: {} geometries: {}", b.geometries.size(), seen));
+    if (b.policy == "strict") {
+      const std::size_t first = log.scans.empty() ? 0 : log.scans.front().ranges.size();
+      const auto other_count = std::count_if(log.scans.begin(), log.scans.end(),
+                                             [&](const LaserScanRecord& scan) { return scan.ranges.size() != first; });
+      out.push_back(fmt::format("beams: --beams strict: the engine reads every scan with the first scan's geometry "
+                                "and drops the {} whose reading count differs, as Karto does",
+                                other_count));
+    } else {
+      out.push_back(fmt::format("beams: {} scans resampled onto {} (nearest beam; {} readings outside their own "
+                                "field of view set to no-return); --beams strict keeps Karto's behaviour",
+                                b.scans_resampled, b.geometries[0].geometry.ToString(), b.readings_outside));
+    }
+  }
+  if (log.skipped_records > 0) {
+    out.push_back(fmt::format("not used: {} malformed records, --lenient (first: {})", log.skipped_records,
+                              log.skipped_reasons.empty() ? "-" : log.skipped_reasons.front()));
+  }
+  return out;
+}
+
 std::string FormatLogSummary(const LogSummary& s) {
   std::string out;
   auto row = [&out](std::string_view key, const std::string& value) {
     out += fmt::format("{:<24} {}\n", key, value);
   };
   row("log", s.path + (s.compressed ? " (gzip)" : "") + (s.stopped_at_max_scans ? " (first scans only)" : ""));
-  row("lines", std::to_string(s.lines));
+  for (const std::string& line : s.input) {
+    const std::size_t colon = line.find(": ");
+    row(line.substr(0, colon), line.substr(colon + 2));
+  }
+  if (s.lines > 0) row("lines", std::to_string(s.lines));
   std::string counts;
   for (const auto& [name, count] : s.record_counts) {
     counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", name, count);

@@ -60,9 +60,16 @@ struct LogSummary {
   std::size_t unknown_records = 0;
   std::size_t skipped_records = 0;
   std::vector<std::string> skipped_reasons;
+  std::vector<std::string> input;  // DescribeLogInput
 };
 
 LogSummary SummarizeLog(const LaserLog& log);
+
+// What was read and every choice made, one line each: for a ROS recording its format, the
+// scan topic, odometry source, laser offset and the scans that could not be used (each with
+// the rule that chose it); for any log the beam geometries seen and what was done about them,
+// and records skipped under --lenient. Commands print these before they work on the log.
+std::vector<std::string> DescribeLogInput(const LaserLog& log);
 
 // Human-readable two-column table, one quantity per line.
 std::string FormatLogSummary(const LogSummary& summary);

@@ -63,7 +63,7 @@ struct Reader {
         if (is_static) ++out->static_tf_messages;
         for (const TransformStampedMessage& t : m.transforms) {
           out->tf.Add(NormalizeFrameId(t.header.frame_id), NormalizeFrameId(t.child_frame_id), t.header.stamp_ns,
-                      ToRigid(t.translation, t.rotation), is_static);
+                      ToRigid(t.translation, t.rotation), is_static, message.log_time_ns);
         }
         return;
       }
@@ -74,9 +74,9 @@ struct Reader {
 
 }  // namespace
 
-RecordingContents ReadRecordingContents(const std::string& path, bool lenient, double max_odom_gap_s,
-                                        std::size_t max_scan_messages) {
-  RecordingContents contents{path, {}, {}, {}, {}, TfBuffer(max_odom_gap_s), 0, 0, 0, 0, {}};
+RecordingContents ReadRecordingContents(const std::string& path, bool lenient, std::size_t max_scan_messages) {
+  RecordingContents contents;
+  contents.path = path;
   Reader reader{&contents, lenient, max_scan_messages};
   ContainerReadOptions options;
   options.lenient = lenient;

@@ -52,7 +52,6 @@ struct RecordingContents {
 // Reads `path` (a ROS recording, see DetectRecordingKind). `max_scan_messages` > 0 stops
 // keeping LaserScans after that many on any one topic (for short slices; the rest is still
 // read for tf).
-RecordingContents ReadRecordingContents(const std::string& path, bool lenient, double max_odom_gap_s,
-                                        std::size_t max_scan_messages = 0);
+RecordingContents ReadRecordingContents(const std::string& path, bool lenient, std::size_t max_scan_messages = 0);
 
 }  // namespace slamtune::io

@@ -69,7 +69,7 @@ void UseOdometryTopic(const RecordingContents& contents, const std::string& topi
   info->odom_frame = options.odom_frame.empty() ? samples.front().frame_id : options.odom_frame;
   info->base_frame = options.base_frame.empty() ? samples.front().child_frame_id : options.base_frame;
   for (const OdometrySample& s : samples) {
-    source->topic_samples.Add(info->odom_frame, info->base_frame, s.stamp_ns, s.pose, false);
+    source->topic_samples.Add(info->odom_frame, info->base_frame, s.stamp_ns, s.pose, false, s.log_time_ns);
   }
   source->tf = &source->topic_samples;
   source->samples = &samples;
@@ -110,8 +110,9 @@ void ChooseOdometry(const RecordingContents& contents, const RecordingReadOption
     info->base_frame = base;
     source->tf = &contents.tf;
     info->odometry_source = fmt::format("tf {} -> {}", odom, base);
-    info->odometry_rule = options.base_frame.empty() ? fmt::format("--odom-frame {}, base frame found in the tf tree", odom)
-                                                     : "--odom-frame, --base-frame";
+    info->odometry_rule = fmt::format("odometry frame {} ({}), base frame {} ({})", odom,
+                                      options.odom_frame.empty() ? "default" : "--odom-frame", base,
+                                      options.base_frame.empty() ? "found in the tf tree" : "--base-frame");
     return;
   }
   const std::string why = fmt::format("no {} -> {} transform in /tf", odom, base.empty() ? "base_footprint/base_link" : base);
@@ -334,7 +335,7 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
       continue;
     }
     if (NormalizeFrameId(m.header.frame_id) != info.laser_frame) ++info.scans_other_frame;
-    const TfLookup pose = source.tf->Lookup(info.odom_frame, info.base_frame, m.header.stamp_ns);
+    const TfLookup pose = source.tf->Lookup(info.odom_frame, info.base_frame, m.header.stamp_ns, choice.max_odom_gap_s);
     if (!pose.transform) {
       ++info.scans_unplaced;
       Example(&info.unplaced_examples, fmt::format("scan {} at {}: {}", k, Seconds(m.header.stamp_ns), pose.failure));
@@ -377,7 +378,7 @@ LaserLog ReadRecordingLog(const std::string& path, const LogReadOptions& options
   // Scans beyond max_scans are not kept; a few more than asked cover scans that cannot be placed.
   const std::size_t keep = options.max_scans > 0 ? options.max_scans * 2 + 100 : 0;
   const RecordingContents contents =
-      ReadRecordingContents(path, options.lenient, options.recording.max_odom_gap_s, keep);
+      ReadRecordingContents(path, options.lenient, keep);
   return RecordingToLog(contents, options);
 }
 

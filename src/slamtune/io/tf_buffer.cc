@@ -45,7 +45,7 @@ double YawOf(const Eigen::Quaterniond& q) {
 Pose2 ToPose2(const RigidTransform3& t) { return {t.translation.x(), t.translation.y(), YawOf(t.rotation)}; }
 
 bool TfBuffer::Add(const std::string& parent, const std::string& child, std::int64_t stamp_ns,
-                   const RigidTransform3& t, bool is_static) {
+                   const RigidTransform3& t, bool is_static, std::int64_t received_ns) {
   // tf2 refuses rotations whose squared norm is more than 0.01 from 1, and so does this.
   const double norm2 = t.rotation.squaredNorm();
   if (!std::isfinite(norm2) || std::fabs(norm2 - 1.0) > 0.01 || !t.translation.allFinite()) {
@@ -68,11 +68,11 @@ bool TfBuffer::Add(const std::string& parent, const std::string& child, std::int
     // A static edge holds one transform at all times; a later message replaces it (latched
     // /tf_static republished). A frame once static stays static.
     edge.is_static = true;
-    edge.samples.assign(1, Sample{stamp_ns, normalised});
+    edge.samples.assign(1, Sample{stamp_ns, normalised, received_ns});
     return true;
   }
   if (!edge.samples.empty() && stamp_ns < edge.samples.back().stamp_ns) edge.sorted = false;
-  edge.samples.push_back(Sample{stamp_ns, normalised});
+  edge.samples.push_back(Sample{stamp_ns, normalised, received_ns});
   return true;
 }
 
@@ -85,7 +85,8 @@ void TfBuffer::SortEdges() const {
   }
 }
 
-TfLookup TfBuffer::EdgeAt(const std::string& child, const Edge& edge, std::int64_t stamp_ns) const {
+TfLookup TfBuffer::EdgeAt(const std::string& child, const Edge& edge, std::int64_t stamp_ns,
+                          std::int64_t max_gap_ns) const {
   if (edge.is_static) return {edge.samples.front().transform, ""};
   const auto& s = edge.samples;
   auto after = std::lower_bound(s.begin(), s.end(), stamp_ns,
@@ -97,7 +98,7 @@ TfLookup TfBuffer::EdgeAt(const std::string& child, const Edge& edge, std::int64
   }
   const Sample& b = *after;
   const Sample& a = *(after - 1);
-  if (b.stamp_ns - a.stamp_ns > max_gap_ns_) {
+  if (b.stamp_ns - a.stamp_ns > max_gap_ns) {
     return {std::nullopt, fmt::format("{} -> {} at {}: no sample for {:.3f} s around it (gap {} .. {})", edge.parent,
                                       child, Seconds(stamp_ns), static_cast<double>(b.stamp_ns - a.stamp_ns) / 1e9,
                                       Seconds(a.stamp_ns), Seconds(b.stamp_ns))};
@@ -120,8 +121,10 @@ std::vector<std::string> TfBuffer::PathToRoot(const std::string& frame) const {
   return path;
 }
 
-TfLookup TfBuffer::Lookup(const std::string& target, const std::string& source, std::int64_t stamp_ns) const {
+TfLookup TfBuffer::Lookup(const std::string& target, const std::string& source, std::int64_t stamp_ns,
+                          double max_gap_s) const {
   SortEdges();
+  const auto max_gap_ns = static_cast<std::int64_t>(max_gap_s * 1e9);
   for (const std::string& frame : {target, source}) {
     if (!HasFrame(frame)) return {std::nullopt, fmt::format("frame '{}' is in no transform", frame)};
   }
@@ -136,7 +139,7 @@ TfLookup TfBuffer::Lookup(const std::string& target, const std::string& source, 
     RigidTransform3 t;
     for (const std::string& frame : up) {
       if (frame == ancestor) break;
-      const TfLookup edge = EdgeAt(frame, edges_.at(frame), stamp_ns);
+      const TfLookup edge = EdgeAt(frame, edges_.at(frame), stamp_ns, max_gap_ns);
       if (!edge.transform) return edge;
       t = *edge.transform * t;
     }
@@ -165,6 +168,15 @@ std::vector<std::int64_t> TfBuffer::SampleStamps(const std::string& child) const
   auto it = edges_.find(child);
   if (it == edges_.end() || it->second.is_static) return out;
   for (const Sample& s : it->second.samples) out.push_back(s.stamp_ns);
+  return out;
+}
+
+std::vector<std::int64_t> TfBuffer::SampleReceiveTimes(const std::string& child) const {
+  SortEdges();
+  std::vector<std::int64_t> out;
+  auto it = edges_.find(child);
+  if (it == edges_.end() || it->second.is_static) return out;
+  for (const Sample& s : it->second.samples) out.push_back(s.received_ns);
   return out;
 }
 

@@ -7,7 +7,7 @@
 // (target, source, t)), composed along the tree through the frames' common ancestor. A
 // lookup fails — with the reason — when a frame is unknown, the frames are not connected, t
 // lies outside a dynamic edge's samples, or the two samples around t are farther apart than
-// max_gap_s (a hole in the recording is not bridged). A sample exactly at t is returned as
+// the given maximum gap (a hole in the recording is not bridged). A sample exactly at t is returned as
 // recorded.
 //
 // Projection to the plane (ToPose2): x, y and the yaw of the rotation's Z-Y-X Euler angles
@@ -50,24 +50,28 @@ struct TfLookup {
 
 class TfBuffer {
  public:
-  explicit TfBuffer(double max_gap_s = 0.5) : max_gap_ns_(static_cast<std::int64_t>(max_gap_s * 1e9)) {}
 
   // Adds parent -> child at `stamp_ns`. Returns false (and counts a conflict) when `child`
   // already has another parent: tf2 keeps one parent per frame; the first one stays.
   // A rotation is normalised; one whose squared norm is more than 0.01 from 1, or a non-finite
   // value, is refused as tf2 refuses it (false, counted in bad_rotations).
+  // `received_ns` is when the recording received it (its log time), for lateness checks.
   bool Add(const std::string& parent, const std::string& child, std::int64_t stamp_ns, const RigidTransform3& t,
-           bool is_static);
+           bool is_static, std::int64_t received_ns = 0);
 
-  TfLookup Lookup(const std::string& target, const std::string& source, std::int64_t stamp_ns) const;
+  // Dynamic samples farther apart than `max_gap_s` around the stamp are not interpolated.
+  TfLookup Lookup(const std::string& target, const std::string& source, std::int64_t stamp_ns,
+                  double max_gap_s = 0.5) const;
   // Whether `frame` is a parent or child of any transform.
   bool HasFrame(const std::string& frame) const;
   // Frames on the path from `frame` up to its root, `frame` first.
   std::vector<std::string> PathToRoot(const std::string& frame) const;
   // "a -> b (static), b -> c (dynamic, 812 samples)" per edge, for reports.
   std::vector<std::string> Describe() const;
-  // The dynamic samples' stamps of the edge parent -> child (empty if none or static).
+  // The dynamic samples' stamps of the edge parent -> child (empty if none or static), and
+  // when each was received, in stamp order.
   std::vector<std::int64_t> SampleStamps(const std::string& child) const;
+  std::vector<std::int64_t> SampleReceiveTimes(const std::string& child) const;
   bool IsStatic(const std::string& child) const;
   std::string ParentOf(const std::string& child) const;  // "" for a root or unknown frame
 
@@ -79,6 +83,7 @@ class TfBuffer {
   struct Sample {
     std::int64_t stamp_ns;
     RigidTransform3 transform;
+    std::int64_t received_ns;
   };
   struct Edge {
     std::string parent;
@@ -87,10 +92,9 @@ class TfBuffer {
     bool sorted = true;
   };
   // The child's transform in its parent at `stamp_ns`, or the reason it has none.
-  TfLookup EdgeAt(const std::string& child, const Edge& edge, std::int64_t stamp_ns) const;
+  TfLookup EdgeAt(const std::string& child, const Edge& edge, std::int64_t stamp_ns, std::int64_t max_gap_ns) const;
   void SortEdges() const;
 
-  std::int64_t max_gap_ns_;
   mutable std::map<std::string, Edge> edges_;  // by child frame
   std::size_t parent_conflicts_ = 0;
   std::size_t bad_rotations_ = 0;

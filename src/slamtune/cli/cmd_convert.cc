@@ -1,0 +1,103 @@
+// `slamtune convert RECORDING --out FILE.clf`: what slamtune read from a log or bag, written as a
+// CARMEN log (ROBOTLASER1 lines with the laser and the robot pose, ODOM lines, the laser
+// offset and max range as PARAMs), so that other tools — a Karto build, Cartographer's or
+// GMapping's CARMEN readers — read exactly the scans slamtune reads: the same topic, poses at
+// the scan stamps, resampled beams, reversed readings of an upside-down laser.
+//
+// CARMEN holds finite numbers only: a no-return written as +inf or NaN in the recording is
+// written as the scan's max range (the CARMEN convention), and counted.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "slamtune/cli/command_registry.h"
+#include "slamtune/cli/log_input.h"
+#include "slamtune/common/error.h"
+#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/log_summary.h"
+
+namespace slamtune::cli {
+namespace {
+
+struct ConvertArgs {
+  std::string log;
+  std::string out;
+  LogInputOptions input;
+  bool quiet = false;
+};
+
+// Non-finite readings become the max range; returns how many. Scans become ROBOTLASER1.
+std::size_t PrepareForCarmen(io::LaserLog* log) {
+  std::size_t replaced = 0;
+  for (io::LaserScanRecord& scan : log->scans) {
+    scan.kind = io::RecordKind::kRobotLaser1;
+    if (!std::isfinite(scan.max_range)) {
+      double largest = 0.0;
+      for (double r : scan.ranges) largest = std::isfinite(r) ? std::max(largest, r) : largest;
+      scan.max_range = std::max(largest + 1.0, 1.0);
+    }
+    for (double& r : scan.ranges) {
+      if (!std::isfinite(r)) {
+        r = scan.max_range;
+        ++replaced;
+      }
+    }
+  }
+  const Pose2 offset = log->scans.empty() ? Pose2{} : log->scans.front().laser_offset;
+  log->params["robot_frontlaser_offset"] = fmt::format("{}", offset.x);
+  log->params["robot_frontlaser_side_offset"] = fmt::format("{}", offset.y);
+  log->params["robot_frontlaser_angular_offset"] = fmt::format("{}", offset.theta);
+  if (!log->scans.empty()) log->params["laser_front_laser_max_range"] = fmt::format("{}", log->scans.front().max_range);
+  return replaced;
+}
+
+int Convert(const ConvertArgs& args) {
+  if (std::filesystem::is_directory(args.out)) throw InputError(args.out, 0, "--out is a folder; give a file name");
+  io::LaserLog log = ReadLog(args.log, args.input);
+  const std::vector<std::string> input = io::DescribeLogInput(log);
+  if (!args.quiet) {
+    for (const std::string& line : input) std::fprintf(stderr, "%s\n", line.c_str());
+  }
+  const std::size_t replaced = PrepareForCarmen(&log);
+  io::CarmenWriteOptions options;
+  options.comments.push_back("converted by slamtune from " + args.log);
+  for (const std::string& line : input) options.comments.push_back(line);
+  options.comments.push_back("ROBOTLASER1 laser pose = robot pose (+) laser offset (PARAM robot_frontlaser_*); "
+                             "no-returns written as the max range");
+  options.pose_decimals = 9;
+  options.exact_ranges = true;
+  // Written beside the target and renamed: a reader never sees half a file.
+  const std::string partial = args.out + ".partial";
+  const io::CarmenWriteSummary written = io::WriteCarmenLog(partial, log, options);
+  std::error_code error;
+  std::filesystem::rename(partial, args.out, error);
+  if (error) throw InputError(args.out, 0, "cannot write: " + error.message());
+  std::printf("convert: %zu scans, %zu ODOM records%s; wrote %s\n", written.scans, written.odometry,
+              replaced > 0 ? fmt::format(", {} non-finite readings written as the max range", replaced).c_str() : "",
+              args.out.c_str());
+  return 0;
+}
+
+const SubcommandRegistrar kConvert(Subcommand{
+    "convert",
+    "Write what slamtune reads from a log or bag as a CARMEN log (ROBOTLASER1 with laser and robot poses)",
+    15,
+    [](CLI::App& app) -> std::function<int()> {
+      auto args = std::make_shared<ConvertArgs>();
+      app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag (or a CARMEN log)")->required();
+      app.add_option("--out", args->out, "CARMEN log to write (.clf)")->required();
+      app.add_flag("--quiet", args->quiet, "Do not print what was read");
+      args->input.AddTo(app);
+      app.footer(
+          "Examples:\n"
+          "  slamtune convert drive.mcap --out drive.clf\n"
+          "  slamtune convert drive_bag/ --scan-topic /scan_front --base-frame base_link --out drive.clf");
+      return [args]() -> int { return Convert(*args); };
+    }});
+
+}  // namespace
+}  // namespace slamtune::cli

@@ -1,0 +1,77 @@
+#include "slamtune/cli/log_input.h"
+
+#include "slamtune/common/error.h"
+#include "slamtune/io/beam_geometry.h"
+#include "slamtune/io/log_reader.h"
+
+namespace slamtune::cli {
+
+void LogInputOptions::AddTo(CLI::App& app, bool with_max_scans) {
+  app.add_flag("--lenient", lenient, "Skip malformed records or messages (and count them) instead of failing");
+  app.add_option("--no-return", no_return,
+                 "Readings >= this value (m) are no-returns; overrides the log's own (PARAM, range_max, detected)");
+  if (with_max_scans) app.add_option("--max-scans", max_scans, "Read only the first N laser scans (0 = all)");
+  app.add_option("--beams", beams,
+                 "Scans whose beam count or angles differ from the others': 'resample' onto the most common "
+                 "geometry, or 'strict' (dropped, as Karto does)")
+      ->capture_default_str();
+  auto* ros = "ROS recordings";
+  app.add_option("--scan-topic", scan_topic, "sensor_msgs/LaserScan topic (default: the only one)")->group(ros);
+  app.add_option("--odom-topic", odom_topic,
+                 "nav_msgs/Odometry topic for the robot poses (default: odom -> base frame from /tf)")
+      ->group(ros);
+  app.add_option("--odom-frame", odom_frame, "odometry frame of /tf (default: odom)")->group(ros);
+  app.add_option("--base-frame", base_frame, "robot base frame (default: base_footprint, else base_link)")->group(ros);
+  app.add_option("--laser-offset", laser_offset,
+                 "laser mounting pose in the base frame X,Y,YAW (m, m, rad), instead of the tf tree's")
+      ->expected(3)
+      ->delimiter(',')
+      ->group(ros);
+  app.add_option("--max-odom-gap", max_odom_gap_s, "odometry samples farther apart (s) are not interpolated")
+      ->capture_default_str()
+      ->group(ros);
+}
+
+io::LogReadOptions LogInputOptions::ToReadOptions() const {
+  io::LogReadOptions o;
+  o.lenient = lenient;
+  o.no_return_value = no_return;
+  o.max_scans = max_scans;
+  o.beams = io::ParseBeamPolicy(beams);
+  o.recording.scan_topic = scan_topic;
+  o.recording.odom_topic = odom_topic;
+  o.recording.odom_frame = odom_frame;
+  o.recording.base_frame = base_frame;
+  if (!laser_offset.empty()) o.recording.laser_offset = Pose2{laser_offset[0], laser_offset[1], laser_offset[2]};
+  o.recording.max_odom_gap_s = max_odom_gap_s;
+  o.Validate();
+  return o;
+}
+
+nlohmann::json LogInputOptions::ToJson() const {
+  return {{"lenient", lenient},       {"no_return", no_return},   {"max_scans", max_scans},
+          {"beams", beams},           {"scan_topic", scan_topic}, {"odom_topic", odom_topic},
+          {"odom_frame", odom_frame}, {"base_frame", base_frame}, {"laser_offset", laser_offset},
+          {"max_odom_gap_s", max_odom_gap_s}};
+}
+
+LogInputOptions LogInputOptions::FromJson(const nlohmann::json& j) {
+  LogInputOptions o;
+  o.lenient = j.at("lenient");
+  o.no_return = j.at("no_return");
+  o.max_scans = j.at("max_scans");
+  o.beams = j.at("beams");
+  o.scan_topic = j.at("scan_topic");
+  o.odom_topic = j.at("odom_topic");
+  o.odom_frame = j.at("odom_frame");
+  o.base_frame = j.at("base_frame");
+  o.laser_offset = j.at("laser_offset").get<std::vector<double>>();
+  o.max_odom_gap_s = j.at("max_odom_gap_s");
+  return o;
+}
+
+io::LaserLog ReadLog(const std::string& path, const LogInputOptions& options) {
+  return io::ReadLaserLog(path, options.ToReadOptions());
+}
+
+}  // namespace slamtune::cli

@@ -1,0 +1,38 @@
+// The options every command that reads a log shares (--lenient, --no-return, --beams, and the
+// choices made for a ROS recording: --scan-topic, --odom-topic, --odom-frame, --base-frame,
+// --laser-offset, --max-odom-gap), turned into io::LogReadOptions; and the lines that say what
+// was read and chosen, printed by each command so that no choice is silent.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "slamtune/io/laser_log.h"
+
+namespace slamtune::cli {
+
+struct LogInputOptions {
+  bool lenient = false;
+  double no_return = 0.0;     // m; 0 = from the log
+  std::size_t max_scans = 0;  // 0 = all
+  std::string beams = "resample";
+  std::string scan_topic, odom_topic, odom_frame, base_frame;
+  std::vector<double> laser_offset;  // X,Y,YAW when given
+  double max_odom_gap_s = 0.5;
+
+  // Adds the options to `app`; --max-scans only when `with_max_scans`.
+  void AddTo(CLI::App& app, bool with_max_scans = true);
+  // Throws InputError naming the option for a bad value.
+  io::LogReadOptions ToReadOptions() const;
+  // Everything that changes what is read, for the run database and --resume.
+  nlohmann::json ToJson() const;
+  static LogInputOptions FromJson(const nlohmann::json& j);
+};
+
+// The log at `path` read with `options` (io::ReadLaserLog).
+io::LaserLog ReadLog(const std::string& path, const LogInputOptions& options);
+
+}  // namespace slamtune::cli

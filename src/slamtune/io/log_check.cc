@@ -1,0 +1,478 @@
+#include "slamtune/io/log_check.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/io/beam_geometry.h"
+#include "slamtune/io/log_reader.h"
+#include "slamtune/io/log_summary.h"
+#include "slamtune/io/recording_container.h"
+#include "slamtune/io/recording_contents.h"
+#include "slamtune/io/recording_log.h"
+
+namespace slamtune::io {
+namespace {
+
+constexpr std::size_t kListed = 5;  // scans listed per problem
+
+// Occurrences of one problem: how many, and the first few scans and times.
+struct Occurrences {
+  std::size_t count = 0;
+  std::vector<std::size_t> scans;
+  std::vector<double> times;
+  void Add(std::size_t scan, double time) {
+    if (count++ < kListed) {
+      scans.push_back(scan);
+      times.push_back(time);
+    }
+  }
+};
+
+void Report(CheckReport* report, ProblemKind kind, const Occurrences& o, std::string what) {
+  if (o.count == 0) return;
+  report->problems.push_back({kind, std::move(what), o.count, o.scans, o.times});
+}
+
+void Problem(CheckReport* report, ProblemKind kind, std::string what, std::size_t count = 1) {
+  report->problems.push_back({kind, std::move(what), count, {}, {}});
+}
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// A scan's index by time: the scan at or just before `time` (for listing odometry problems).
+class ScanIndex {
+ public:
+  explicit ScanIndex(const LaserLog& log) {
+    for (std::size_t k = 0; k < log.scans.size(); ++k) by_time_.emplace_back(log.scans[k].ipc_time, k);
+    std::sort(by_time_.begin(), by_time_.end());
+  }
+  std::size_t At(double time) const {
+    auto it = std::upper_bound(by_time_.begin(), by_time_.end(), std::make_pair(time, std::size_t(-1)));
+    if (it == by_time_.begin()) return by_time_.empty() ? 0 : by_time_.front().second;
+    return std::prev(it)->second;
+  }
+  std::size_t CountBetween(double a, double b) const {
+    const auto lo = std::upper_bound(by_time_.begin(), by_time_.end(), std::make_pair(a, std::size_t(-1)));
+    const auto hi = std::lower_bound(by_time_.begin(), by_time_.end(), std::make_pair(b, std::size_t(0)));
+    return hi > lo ? static_cast<std::size_t>(hi - lo) : 0;
+  }
+
+ private:
+  std::vector<std::pair<double, std::size_t>> by_time_;
+};
+
+void CheckStamps(const std::vector<double>& stamps, const CheckOptions& o, CheckReport* report) {
+  std::vector<double> periods;
+  for (std::size_t k = 1; k < stamps.size(); ++k) {
+    if (stamps[k] > stamps[k - 1]) periods.push_back(stamps[k] - stamps[k - 1]);
+  }
+  const double period = Median(periods);
+  if (period > 0) report->facts.push_back(fmt::format("scan period: {:.4f} s median ({:.2f} Hz)", period, 1.0 / period));
+  Occurrences gaps, back, duplicate;
+  double longest = 0.0, largest_back = 0.0;
+  for (std::size_t k = 1; k < stamps.size(); ++k) {
+    const double dt = stamps[k] - stamps[k - 1];
+    if (dt < 0) {
+      back.Add(k, stamps[k]);
+      largest_back = std::max(largest_back, -dt);
+    } else if (dt == 0) {
+      duplicate.Add(k, stamps[k]);
+    } else if (period > 0 && dt > o.gap_factor * period) {
+      gaps.Add(k, stamps[k]);
+      longest = std::max(longest, dt);
+    }
+  }
+  Report(report, ProblemKind::kScanGap, gaps,
+         fmt::format("{} gaps between scan stamps longer than {} x the median period (longest {:.3f} s)", gaps.count,
+                     o.gap_factor, longest));
+  Report(report, ProblemKind::kScanStampBackward, back,
+         fmt::format("{} scan stamps earlier than the one before (largest step back {:.3f} s)", back.count,
+                     largest_back));
+  Report(report, ProblemKind::kScanStampDuplicate, duplicate,
+         fmt::format("{} scans with the same stamp as the one before", duplicate.count));
+}
+
+void CheckBeams(const LaserLog& log, CheckReport* report) {
+  if (log.scans.empty()) return;
+  report->facts.push_back("beams: " + GeometryOf(log.scans.front()).ToString());
+  Occurrences changes;
+  for (std::size_t k = 1; k < log.scans.size(); ++k) {
+    if (!GeometryOf(log.scans[k]).SameAs(GeometryOf(log.scans[k - 1]), kSameAngleTolerance)) {
+      changes.Add(k, log.scans[k].ipc_time);
+    }
+  }
+  std::string seen;
+  for (const BeamReport::Seen& g : log.beams.geometries) {
+    seen += fmt::format("{}{} in {} scans", seen.empty() ? "" : "; ", g.geometry.ToString(), g.scans);
+  }
+  Report(report, ProblemKind::kBeamGeometryChange, changes,
+         fmt::format("the beam geometry changes {} times between scans ({}); Karto drops scans of another reading "
+                     "count, slamtune resamples them onto the most common geometry (--beams resample)",
+                     changes.count, seen));
+}
+
+void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report) {
+  Occurrences above;
+  double largest_valid = 0.0, largest_above = 0.0, range_max = 0.0;
+  std::size_t readings = 0, no_returns = 0, above_count = 0;
+  for (std::size_t k = 0; k < log.scans.size(); ++k) {
+    const LaserScanRecord& scan = log.scans[k];
+    range_max = std::max(range_max, scan.max_range);
+    std::size_t scan_above = 0;
+    for (double r : scan.ranges) {
+      if (!std::isfinite(r) || r < 0) continue;
+      if (r > scan.max_range * (1 + 1e-6)) {
+        ++scan_above;
+        largest_above = std::max(largest_above, r);
+      } else if (r < scan.max_range) {
+        largest_valid = std::max(largest_valid, r);
+      }
+    }
+    if (scan_above > 0) above.Add(k, scan.ipc_time);
+    above_count += scan_above;
+    readings += scan.ranges.size();
+    no_returns += scan.no_returns;
+  }
+  const double share = readings > 0 ? static_cast<double>(no_returns) / static_cast<double>(readings) : 0.0;
+  report->facts.push_back(fmt::format("readings: {}, largest below range_max {:.3f} m, range_max {} m, no-returns "
+                                      "{:.1f} %",
+                                      readings, largest_valid, range_max, 100.0 * share));
+  if (above.count > 0) {
+    report->problems.push_back(
+        {ProblemKind::kRangeMaxTooLow,
+         fmt::format("{} readings in {} scans lie above range_max (up to {:.3f} m): range_max is too low for this "
+                     "laser; they are taken as no-returns",
+                     above_count, above.count, largest_above),
+         above.count, above.scans, above.times});
+  }
+  if (std::isfinite(range_max) && range_max > 0 && largest_valid < o.range_max_use_fraction * range_max) {
+    Problem(report, ProblemKind::kRangeMaxTooHigh,
+            fmt::format("no reading reaches {:.0f} % of range_max: the largest is {:.3f} m, range_max {} m; if the "
+                        "laser's real range is lower, readings at its limit may be taken for walls",
+                        100.0 * o.range_max_use_fraction, largest_valid, range_max));
+  }
+  if (share > o.no_return_majority) {
+    Problem(report, ProblemKind::kMostlyNoReturns,
+            fmt::format("{:.1f} % of the readings are no-returns (inf, NaN or >= range_max)", 100.0 * share));
+  }
+}
+
+// The odometry to check: the log's ODOM / Odometry records, or the scans' robot poses.
+struct OdometryTrack {
+  std::vector<OdomRecord> records;
+  bool velocities = false;
+  std::string source;
+};
+
+OdometryTrack TrackOf(const LaserLog& log) {
+  OdometryTrack t;
+  if (log.odometry.size() >= 2) {
+    t.records = log.odometry;
+    t.velocities = !log.recording || log.recording->odometry_velocities;
+    t.source = log.recording ? (log.recording->odometry_velocities ? "Odometry messages" : "tf samples") : "ODOM records";
+    return t;
+  }
+  for (const LaserScanRecord& s : log.scans) {
+    OdomRecord r;
+    r.pose = s.robot_pose;
+    r.ipc_time = s.ipc_time;
+    t.records.push_back(r);
+  }
+  t.source = "scan poses";
+  return t;
+}
+
+void CheckOdometry(const LaserLog& log, const CheckOptions& o, CheckReport* report) {
+  const OdometryTrack track = TrackOf(log);
+  const std::vector<OdomRecord>& r = track.records;
+  if (r.size() < 2) return;
+  const ScanIndex index(log);
+  std::vector<double> periods;
+  for (std::size_t k = 1; k < r.size(); ++k) {
+    if (r[k].ipc_time > r[k - 1].ipc_time) periods.push_back(r[k].ipc_time - r[k - 1].ipc_time);
+  }
+  const double period = Median(periods);
+  report->facts.push_back(fmt::format("odometry: {} {}, median period {:.4f} s{}", r.size(), track.source, period,
+                                      track.velocities ? ", with velocities" : ""));
+  Occurrences jumps, wraps, gaps, frozen, mismatch;
+  std::size_t moving_steps = 0, unwrapped = 0;
+  double frozen_since = -1.0;
+  for (std::size_t k = 1; k < r.size(); ++k) {
+    const OdomRecord &a = r[k - 1], &b = r[k];
+    const double dt = b.ipc_time - a.ipc_time;
+    const double d = std::hypot(b.pose.x - a.pose.x, b.pose.y - a.pose.y);
+    const double turn = std::fabs(NormalizeAngle(b.pose.theta - a.pose.theta));
+    const std::size_t scan = index.At(b.ipc_time);
+    if (std::fabs(b.pose.theta) > kPi + 1e-6) ++unwrapped;
+    const bool wrapped = std::fabs(b.pose.theta - a.pose.theta) > kPi;
+    if (wrapped && std::min(std::fabs(a.pose.theta), std::fabs(b.pose.theta)) < kPi / 2) {
+      wraps.Add(scan, b.ipc_time);
+    } else if ((dt <= 0 && (d > 0.05 || turn > 0.05)) ||
+               (dt > 0 && ((d > 0.1 && d / dt > o.max_speed_mps) || (turn > 0.2 && turn / dt > o.max_turn_rate_rad_s)))) {
+      jumps.Add(scan, b.ipc_time);
+    }
+    if (track.source != "scan poses" && period > 0 && period < o.stall_s / 2 && dt > o.stall_s &&
+        index.CountBetween(a.ipc_time, b.ipc_time) > 0) {
+      gaps.Add(scan, a.ipc_time);
+    }
+    if (!track.velocities || dt <= 0) continue;
+    const double v = 0.5 * (a.tv + b.tv);
+    const bool still = d < 1e-9 && turn < 1e-9;
+    if (std::fabs(v) > o.moving_speed_mps && still) {
+      if (frozen_since < 0) frozen_since = a.ipc_time;
+      if (b.ipc_time - frozen_since > o.stall_s && (frozen.count == 0 || frozen.times.back() != frozen_since)) {
+        frozen.Add(index.At(frozen_since), frozen_since);
+      }
+    } else {
+      frozen_since = -1.0;
+    }
+    const double forward = std::cos(a.pose.theta) * (b.pose.x - a.pose.x) + std::sin(a.pose.theta) * (b.pose.y - a.pose.y);
+    if (std::fabs(v) > o.moving_speed_mps && std::fabs(forward) > 1e-3) {
+      ++moving_steps;
+      if ((forward > 0) != (v > 0)) mismatch.Add(scan, b.ipc_time);
+    }
+  }
+  if (unwrapped > 0) report->facts.push_back(fmt::format("headings: {} outside [-pi, pi] (not wrapped)", unwrapped));
+  Report(report, ProblemKind::kOdometryJump, jumps,
+         fmt::format("{} odometry jumps (faster than {} m/s or {} rad/s between samples, or a move within one stamp)",
+                     jumps.count, o.max_speed_mps, o.max_turn_rate_rad_s));
+  Report(report, ProblemKind::kHeadingWrap, wraps,
+         fmt::format("{} heading wraps away from +-pi (a step of more than pi between headings near 0): the "
+                     "odometry heading is discontinuous",
+                     wraps.count));
+  Occurrences stalls = gaps;
+  for (std::size_t k = 0; k < frozen.scans.size(); ++k) stalls.Add(frozen.scans[k], frozen.times[k]);
+  stalls.count = gaps.count + frozen.count;
+  Report(report, ProblemKind::kOdometryStall, stalls,
+         fmt::format("odometry stalls: {} gaps of more than {} s while scans go on, {} times the pose frozen for more "
+                     "than {} s while the recorded speed says moving",
+                     gaps.count, o.stall_s, frozen.count, o.stall_s));
+  if (moving_steps > 0 && static_cast<double>(mismatch.count) > o.velocity_mismatch_share * moving_steps) {
+    Report(report, ProblemKind::kOdometryVelocityMismatch, mismatch,
+           fmt::format("odometry poses disagree with the recorded velocities in {} of {} moving steps: the pose moves "
+                       "forward while the speed is negative or the other way round (a logger that integrated |tv| "
+                       "turns reversing into driving forward); the map will break whatever the SLAM parameters",
+                       mismatch.count, moving_steps));
+  }
+}
+
+void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
+  if (!log.recording) return;
+  const RecordingInfo& r = *log.recording;
+  for (const RecordingInfo::Topic& t : r.topics) {
+    report->facts.push_back(fmt::format("topic: {} ({}), {} messages, {:.2f} Hz", t.name, t.type, t.messages, t.rate_hz));
+  }
+  for (const std::string& e : r.tf_edges) report->facts.push_back("tf: " + e);
+  if (r.scans_unplaced > 0) {
+    Problem(report, ProblemKind::kTfMissing,
+            fmt::format("{} of {} scans have no odometry at their stamp and cannot be used (first: {})", r.scans_unplaced,
+                        r.scan_messages, r.unplaced_examples.empty() ? "-" : r.unplaced_examples.front()),
+            r.scans_unplaced);
+  }
+  if (r.scans_malformed + r.messages_undecodable > 0) {
+    Problem(report, ProblemKind::kMalformedMessages,
+            fmt::format("{} malformed scans and {} undecodable tf / odometry messages (first: {})", r.scans_malformed,
+                        r.messages_undecodable, r.malformed_examples.empty() ? "-" : r.malformed_examples.front()),
+            r.scans_malformed + r.messages_undecodable);
+  }
+  if (r.dropped_tail_bytes > 0) {
+    Problem(report, ProblemKind::kTruncatedRecording,
+            fmt::format("the recording ends in a corrupt or truncated part: {} bytes not read ({})", r.dropped_tail_bytes,
+                        r.dropped_tail_reason));
+  }
+  if (r.tf_parent_conflicts + r.tf_bad_rotations > 0) {
+    report->facts.push_back(fmt::format("tf: {} transforms ignored (second parent), {} refused (bad rotation)",
+                                        r.tf_parent_conflicts, r.tf_bad_rotations));
+  }
+}
+
+// Odometry received long after the scan it places: a live slam_toolbox would drop such scans.
+void CheckLateness(const RecordingContents& contents, const LaserLog& log, const CheckOptions& o, CheckReport* report) {
+  const RecordingInfo& info = *log.recording;
+  std::vector<std::int64_t> stamps, received;
+  if (info.odometry_source.rfind("tf ", 0) == 0) {
+    stamps = contents.tf.SampleStamps(info.base_frame);
+    received = contents.tf.SampleReceiveTimes(info.base_frame);
+  } else {
+    for (const auto& [name, samples] : contents.odometry) {
+      if (info.odometry_source.find(name + " ") == std::string::npos) continue;
+      for (const OdometrySample& s : samples) {
+        stamps.push_back(s.stamp_ns);
+        received.push_back(s.log_time_ns);
+      }
+    }
+  }
+  if (stamps.empty()) return;
+  const auto& scans = contents.scans.at(info.scan_topic);
+  Occurrences late;
+  double latest = 0.0;
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const std::int64_t stamp = scans[k].message.header.stamp_ns;
+    const auto it = std::lower_bound(stamps.begin(), stamps.end(), stamp);
+    if (it == stamps.end()) continue;
+    const double delay = static_cast<double>(received[it - stamps.begin()] - scans[k].log_time_ns) / 1e9;
+    if (delay > o.late_s) {
+      late.Add(k, static_cast<double>(stamp) / 1e9);
+      latest = std::max(latest, delay);
+    }
+  }
+  Report(report, ProblemKind::kTfLate, late,
+         fmt::format("for {} scans the odometry at their stamp was received more than {} s after the scan (up to "
+                     "{:.3f} s): a live SLAM node waiting for tf would drop them",
+                     late.count, o.late_s, latest));
+}
+
+void AddInputFacts(const LaserLog& log, CheckReport* report) {
+  for (const std::string& line : DescribeLogInput(log)) {
+    if (line.rfind("beams:", 0) != 0) report->facts.push_back(line);
+  }
+  if (!log.scans.empty()) {
+    report->facts.push_back(fmt::format("scans: {} over {:.3f} s, no-return value {} m ({})", log.scans.size(),
+                                        log.scans.back().ipc_time - log.scans.front().ipc_time, log.no_return_value,
+                                        log.no_return_rule));
+  }
+}
+
+// Every log check, with stamp checks on `stamps` (all scans, placed or not).
+CheckReport CheckParts(const LaserLog& log, const std::vector<double>& stamps, const CheckOptions& options) {
+  CheckReport report;
+  report.path = log.path;
+  AddInputFacts(log, &report);
+  CheckStamps(stamps, options, &report);
+  CheckBeams(log, &report);
+  CheckRanges(log, options, &report);
+  CheckOdometry(log, options, &report);
+  CheckRecordingInfo(log, &report);
+  return report;
+}
+
+std::vector<double> StampsOf(const LaserLog& log) {
+  std::vector<double> out;
+  for (const LaserScanRecord& s : log.scans) out.push_back(s.ipc_time);
+  return out;
+}
+
+}  // namespace
+
+void CheckOptions::Validate() const {
+  const auto require = [](const char* name, double v, double lo, double hi) {
+    if (!(v > lo && v <= hi)) throw InputError(fmt::format("check {} = {}: must be in ({}, {}]", name, v, lo, hi));
+  };
+  require("gap_factor", gap_factor, 1.0, 1000.0);
+  require("range_max_use_fraction", range_max_use_fraction, 0.0, 1.0);
+  require("no_return_majority", no_return_majority, 0.0, 1.0);
+  require("max_speed_mps", max_speed_mps, 0.0, 100.0);
+  require("max_turn_rate_rad_s", max_turn_rate_rad_s, 0.0, 100.0);
+  require("stall_s", stall_s, 0.0, 3600.0);
+  require("moving_speed_mps", moving_speed_mps, 0.0, 10.0);
+  require("late_s", late_s, 0.0, 3600.0);
+  require("velocity_mismatch_share", velocity_mismatch_share, 0.0, 1.0);
+}
+
+const char* ProblemKindName(ProblemKind kind) {
+  switch (kind) {
+    case ProblemKind::kScanGap: return "scan_gap";
+    case ProblemKind::kScanStampBackward: return "scan_stamp_backward";
+    case ProblemKind::kScanStampDuplicate: return "scan_stamp_duplicate";
+    case ProblemKind::kBeamGeometryChange: return "beam_geometry_change";
+    case ProblemKind::kRangeMaxTooLow: return "range_max_too_low";
+    case ProblemKind::kRangeMaxTooHigh: return "range_max_too_high";
+    case ProblemKind::kMostlyNoReturns: return "mostly_no_returns";
+    case ProblemKind::kOdometryJump: return "odometry_jump";
+    case ProblemKind::kOdometryStall: return "odometry_stall";
+    case ProblemKind::kHeadingWrap: return "heading_wrap";
+    case ProblemKind::kOdometryVelocityMismatch: return "odometry_velocity_mismatch";
+    case ProblemKind::kTfMissing: return "tf_missing";
+    case ProblemKind::kTfLate: return "tf_late";
+    case ProblemKind::kNoLaserOffset: return "no_laser_offset";
+    case ProblemKind::kSeveralScanTopics: return "several_scan_topics";
+    case ProblemKind::kMalformedMessages: return "malformed_messages";
+    case ProblemKind::kTruncatedRecording: return "truncated_recording";
+  }
+  return "unknown";
+}
+
+bool CheckReport::Has(ProblemKind kind) const {
+  return std::any_of(problems.begin(), problems.end(), [&](const CheckProblem& p) { return p.kind == kind; });
+}
+
+CheckReport CheckLog(const LaserLog& log, const CheckOptions& options) {
+  options.Validate();
+  return CheckParts(log, StampsOf(log), options);
+}
+
+CheckReport CheckRecording(const std::string& path, const LogReadOptions& read, const CheckOptions& options) {
+  options.Validate();
+  LogReadOptions attempt = read;
+  attempt.beams = BeamPolicy::kStrict;
+  attempt.Validate();
+  if (DetectRecordingKind(path) == RecordingKind::kCarmenLog) return CheckLog(ReadLaserLog(path, attempt), options);
+
+  const RecordingContents contents = ReadRecordingContents(path, read.lenient);
+  std::vector<CheckProblem> early;
+  if (attempt.recording.scan_topic.empty() && contents.scans.size() > 1) {
+    std::string names, busiest;
+    std::size_t most = 0;
+    for (const auto& [name, scans] : contents.scans) {
+      names += fmt::format("{}{} ({})", names.empty() ? "" : ", ", name, scans.size());
+      if (scans.size() > most) most = scans.size(), busiest = name;
+    }
+    early.push_back({ProblemKind::kSeveralScanTopics,
+                     fmt::format("{} LaserScan topics: {}; the rest of the check reads {} (choose with --scan-topic)",
+                                 contents.scans.size(), names, busiest),
+                     contents.scans.size(), {}, {}});
+    attempt.recording.scan_topic = busiest;
+  }
+  LaserLog log;
+  try {
+    log = RecordingToLog(contents, attempt);
+  } catch (const InputError& e) {
+    const bool no_offset = std::string(e.what()).find("no laser offset") != std::string::npos;
+    if (!no_offset || attempt.recording.laser_offset) throw;
+    early.push_back({ProblemKind::kNoLaserOffset,
+                     std::string(e.what()) + " (the rest of the check assumes the laser at the base)", 1, {}, {}});
+    attempt.recording.laser_offset = Pose2{};
+    log = RecordingToLog(contents, attempt);
+  }
+  HarmonizeBeams(BeamPolicy::kStrict, &log);
+  std::vector<double> stamps;
+  for (const RecordedScan& s : contents.scans.at(log.recording->scan_topic)) {
+    stamps.push_back(static_cast<double>(s.message.header.stamp_ns) / 1e9);
+  }
+  CheckReport report = CheckParts(log, stamps, options);
+  CheckLateness(contents, log, options, &report);
+  report.problems.insert(report.problems.begin(), early.begin(), early.end());
+  report.path = path;
+  return report;
+}
+
+std::string FormatCheckReport(const CheckReport& report) {
+  std::string out = fmt::format("check {}\n", report.path);
+  for (const std::string& fact : report.facts) out += "  " + fact + "\n";
+  if (report.ok()) return out + "verdict: no problem found\n";
+  std::string kinds;
+  for (const CheckProblem& p : report.problems) {
+    out += fmt::format("problem {}: {}\n", ProblemKindName(p.kind), p.what);
+    if (!p.scans.empty()) {
+      std::string where;
+      for (std::size_t k = 0; k < p.scans.size(); ++k) {
+        where += fmt::format("{}scan {} ({:.3f} s)", k ? ", " : "", p.scans[k], p.times_s[k]);
+      }
+      out += fmt::format("  at {}{}\n", where, p.count > p.scans.size() ? fmt::format(" and {} more", p.count - p.scans.size()) : "");
+    }
+    kinds += (kinds.empty() ? "" : ", ") + std::string(ProblemKindName(p.kind));
+  }
+  return out + fmt::format("verdict: {} problem{}: {}\n", report.problems.size(), report.problems.size() == 1 ? "" : "s", kinds);
+}
+
+}  // namespace slamtune::io

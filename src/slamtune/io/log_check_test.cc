@@ -1,0 +1,144 @@
+#include "slamtune/io/log_check.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::io {
+namespace {
+
+const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/recordings/";
+
+// 200 scans at 5 Hz of a robot driving along x at 0.5 m/s, ODOM at 10 Hz with its speed;
+// readings up to 20 m of a 30 m laser.
+LaserLog CleanLog() {
+  LaserLog log;
+  log.path = "clean.clf";
+  for (int k = 0; k < 400; ++k) {
+    OdomRecord r;
+    r.ipc_time = 100.0 + 0.1 * k;
+    r.pose = Pose2{0.05 * k, 0.0, 0.0};
+    r.tv = 0.5;
+    log.odometry.push_back(r);
+  }
+  for (int k = 0; k < 200; ++k) {
+    LaserScanRecord s;
+    s.ipc_time = 100.0 + 0.2 * k;
+    s.angle_min = -1.5707963267948966;
+    s.angle_increment = 0.017453292519943295;
+    s.max_range = 30.0;
+    s.ranges.assign(181, 5.0);
+    s.ranges[90] = 20.0;
+    s.robot_pose = s.laser_pose = Pose2{0.1 * k, 0.0, 0.0};
+    log.scans.push_back(s);
+  }
+  log.no_return_value = 30.0;
+  return log;
+}
+
+std::vector<std::string> Kinds(const CheckReport& report) {
+  std::vector<std::string> kinds;
+  for (const CheckProblem& p : report.problems) kinds.push_back(ProblemKindName(p.kind));
+  return kinds;
+}
+
+TEST(LogCheck, CleanLogHasNoProblem) {
+  const CheckReport report = CheckLog(CleanLog());
+  EXPECT_TRUE(report.ok()) << FormatCheckReport(report);
+  EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("verdict: no problem found"));
+}
+
+struct Planted {
+  const char* name;
+  ProblemKind kind;
+  std::function<void(LaserLog*)> plant;
+};
+
+class LogCheckFinds : public testing::TestWithParam<Planted> {};
+
+TEST_P(LogCheckFinds, ThePlantedFaultAndNothingElse) {
+  LaserLog log = CleanLog();
+  GetParam().plant(&log);
+  const CheckReport report = CheckLog(log);
+  EXPECT_THAT(Kinds(report), testing::ElementsAre(ProblemKindName(GetParam().kind))) << FormatCheckReport(report);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, LogCheckFinds,
+    testing::Values(
+        Planted{"ScanGap", ProblemKind::kScanGap,
+                [](LaserLog* log) { log->scans.erase(log->scans.begin() + 50, log->scans.begin() + 60); }},
+        Planted{"StampBackward", ProblemKind::kScanStampBackward,
+                [](LaserLog* log) { std::swap(log->scans[70].ipc_time, log->scans[71].ipc_time); }},
+        Planted{"StampDuplicate", ProblemKind::kScanStampDuplicate,
+                [](LaserLog* log) { log->scans[80].ipc_time = log->scans[79].ipc_time; }},
+        Planted{"BeamChange", ProblemKind::kBeamGeometryChange, [](LaserLog* log) { log->scans[90].ranges.pop_back(); }},
+        Planted{"RangeMaxTooLow", ProblemKind::kRangeMaxTooLow, [](LaserLog* log) { log->scans[12].ranges[3] = 31.5; }},
+        Planted{"RangeMaxTooHigh", ProblemKind::kRangeMaxTooHigh,
+                [](LaserLog* log) {
+                  for (LaserScanRecord& s : log->scans) s.ranges[90] = 5.0;
+                }},
+        Planted{"MostlyNoReturns", ProblemKind::kMostlyNoReturns,
+                [](LaserLog* log) {
+                  for (LaserScanRecord& s : log->scans) s.no_returns = 150;
+                }},
+        Planted{"OdometryJump", ProblemKind::kOdometryJump,
+                [](LaserLog* log) {
+                  for (std::size_t k = 200; k < log->odometry.size(); ++k) log->odometry[k].pose.x += 2.0;
+                }},
+        Planted{"OdometryStallGap", ProblemKind::kOdometryStall,
+                [](LaserLog* log) { log->odometry.erase(log->odometry.begin() + 100, log->odometry.begin() + 130); }},
+        Planted{"OdometryStallFrozen", ProblemKind::kOdometryStall,
+                [](LaserLog* log) {
+                  for (std::size_t k = 100; k < log->odometry.size(); ++k) log->odometry[k].pose.x = 5.0 + 0.05 * (k < 130 ? 0 : k - 130);
+                }},
+        Planted{"HeadingWrap", ProblemKind::kHeadingWrap,
+                [](LaserLog* log) {
+                  // Headings 0.3 then -2.9 rad, the poses moving along them.
+                  for (std::size_t k = 1; k < log->odometry.size(); ++k) {
+                    const double heading = k < 150 ? 0.3 : -2.9;
+                    const Pose2& before = log->odometry[k - 1].pose;
+                    log->odometry[k].pose = {before.x + 0.05 * std::cos(heading), before.y + 0.05 * std::sin(heading), heading};
+                  }
+                }},
+        Planted{"VelocityMismatch", ProblemKind::kOdometryVelocityMismatch,
+                [](LaserLog* log) {
+                  // Reversing for 10 s, written by a logger that integrated |tv|: poses move forward.
+                  for (std::size_t k = 100; k < 200; ++k) log->odometry[k].tv = -0.5;
+                }}),
+    [](const testing::TestParamInfo<Planted>& info) { return std::string(info.param.name); });
+
+TEST(LogCheck, ProblemsListTheirFirstScansAndTimes) {
+  LaserLog log = CleanLog();
+  log.scans.erase(log.scans.begin() + 50, log.scans.begin() + 60);
+  const CheckReport report = CheckLog(log);
+  ASSERT_EQ(report.problems.size(), 1u);
+  EXPECT_EQ(report.problems[0].count, 1u);
+  EXPECT_EQ(report.problems[0].scans, (std::vector<std::size_t>{50}));
+  EXPECT_DOUBLE_EQ(report.problems[0].times_s[0], 100.0 + 0.2 * 60);
+  EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("at scan 50 (112.000 s)"));
+}
+
+TEST(LogCheck, RecordingFaultsAreFoundInTheFixtureBags) {
+  const CheckOptions options;
+  EXPECT_TRUE(CheckRecording(kFixtures + "office_zstd.mcap", {}, options).ok());
+  EXPECT_TRUE(CheckRecording(kFixtures + "fault_no_tf_static.mcap", {}, options).Has(ProblemKind::kNoLaserOffset));
+  const CheckReport gap = CheckRecording(kFixtures + "fault_tf_gap.mcap", {}, options);
+  EXPECT_TRUE(gap.Has(ProblemKind::kTfMissing));
+  EXPECT_TRUE(gap.Has(ProblemKind::kTfLate));
+  EXPECT_TRUE(CheckRecording(kFixtures + "fault_two_scan_topics.mcap", {}, options).Has(ProblemKind::kSeveralScanTopics));
+  EXPECT_TRUE(CheckRecording(kFixtures + "fault_inf_nan.mcap", {}, options).Has(ProblemKind::kRangeMaxTooLow));
+}
+
+TEST(LogCheck, OptionsAreValidated) {
+  CheckOptions bad;
+  bad.gap_factor = 0.5;
+  EXPECT_THROW(bad.Validate(), InputError);
+}
+
+}  // namespace
+}  // namespace slamtune::io
