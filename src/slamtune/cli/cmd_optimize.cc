@@ -133,6 +133,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   }
   for (const auto& [name, value] : settings.space.fixed) settings.default_assignment[name] = value;
   settings.log_path = inputs.log_label;
+  settings.log_input = inputs.log_input;
   settings.relations_path = inputs.relations_label;
   settings.engine = {{"inputs", args.inputs.ToJson()}, {"base", nlohmann::json::object()}};
   for (const auto& p : slam::ToNamedValues(inputs.base)) {

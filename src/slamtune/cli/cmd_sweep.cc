@@ -130,6 +130,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   for (std::size_t i = 0; i < batch.size(); ++i) points.push_back({batch[i].at(name), records[i]});
   report::SweepReportOptions options;
   options.log_path = inputs.log_label;
+  options.log_input = inputs.log_input;
   const auto summary = report::WriteSweepReport(name, points, args.out, options);
   if (!args.quiet) {
     std::printf("%-10s %6s %10s %10s %9s%s\n", name.size() > 10 ? name.substr(0, 10).c_str() : name.c_str(), "loops",

@@ -75,8 +75,9 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
   } else {
     in.log = std::make_shared<const io::LaserLog>(ReadLog(options.log, options.input));
     in.log_label = options.log;
+    in.log_input = io::DescribeLogInput(*in.log);
     if (!quiet) {
-      for (const std::string& line : io::DescribeLogInput(*in.log)) std::fprintf(stderr, "%s\n", line.c_str());
+      for (const std::string& line : in.log_input) std::fprintf(stderr, "%s\n", line.c_str());
     }
   }
   if (!options.relations.empty()) {

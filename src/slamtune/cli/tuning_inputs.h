@@ -45,6 +45,7 @@ struct TuningInputs {
   slam::MapperParams base;
   std::string log_label;        // path, or "built-in world NAME (seed N)"
   std::string relations_label;  // path, "simulated", or empty
+  std::vector<std::string> log_input;  // what was read and chosen (io::DescribeLogInput)
 };
 
 // Loads and validates everything; throws InputError naming the file and problem.

@@ -145,16 +145,26 @@ std::vector<std::string> DescribeLogInput(const LaserLog& log) {
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> InputRows(const std::vector<std::string>& lines) {
+  std::vector<std::pair<std::string, std::string>> rows;
+  for (const std::string& line : lines) {
+    const std::size_t colon = line.find(": ");
+    if (colon == std::string::npos) {
+      rows.emplace_back(line, "");
+    } else {
+      rows.emplace_back(line.substr(0, colon), line.substr(colon + 2));
+    }
+  }
+  return rows;
+}
+
 std::string FormatLogSummary(const LogSummary& s) {
   std::string out;
   auto row = [&out](std::string_view key, const std::string& value) {
     out += fmt::format("{:<24} {}\n", key, value);
   };
   row("log", s.path + (s.compressed ? " (gzip)" : "") + (s.stopped_at_max_scans ? " (first scans only)" : ""));
-  for (const std::string& line : s.input) {
-    const std::size_t colon = line.find(": ");
-    row(line.substr(0, colon), line.substr(colon + 2));
-  }
+  for (const auto& [name, value] : InputRows(s.input)) row(name, value);
   if (s.lines > 0) row("lines", std::to_string(s.lines));
   std::string counts;
   for (const auto& [name, count] : s.record_counts) {

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slamtune/io/laser_log.h"
@@ -70,6 +71,8 @@ LogSummary SummarizeLog(const LaserLog& log);
 // the rule that chose it); for any log the beam geometries seen and what was done about them,
 // and records skipped under --lenient. Commands print these before they work on the log.
 std::vector<std::string> DescribeLogInput(const LaserLog& log);
+// Those lines as (name, value) rows, split at their first ": ", for tables and reports.
+std::vector<std::pair<std::string, std::string>> InputRows(const std::vector<std::string>& lines);
 
 // Human-readable two-column table, one quantity per line.
 std::string FormatLogSummary(const LogSummary& summary);

@@ -31,6 +31,7 @@ struct GenerationSnapshot {
 
 struct OptimizeResult {
   std::string log_path;
+  std::vector<std::string> log_input;  // what was read and chosen (recording topics, offset, beams)
   std::string relations_path;  // empty without --relations
   SearchSpace space;
   nlohmann::json settings;     // population, generations, seed, jobs, ...

@@ -99,6 +99,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
 
   OptimizeResult result;
   result.log_path = settings.log_path;
+  result.log_input = settings.log_input;
   result.relations_path = settings.relations_path;
   result.space = settings.space;
   result.settings = settings_json;

@@ -24,6 +24,7 @@ namespace slamtune::optim {
 
 struct OptimizeSettings {
   std::string log_path;        // for the record and the --resume check
+  std::vector<std::string> log_input;  // what was read from the log and chosen, for the report
   std::string relations_path;  // empty without ground truth
   SearchSpace space = SearchSpace::PaperDefault();
   Assignment default_assignment;  // slam_karto's defaults for the varied parameters (+ fixed)

@@ -1,4 +1,5 @@
 // report.html (optimize_html.h).
+#include "slamtune/io/log_summary.h"
 #include "slamtune/report/optimize_html.h"
 
 #include <fmt/format.h>
@@ -39,11 +40,14 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Run");
   std::vector<std::pair<std::string, std::string>> items = {
       {"log", r.log_path},
+  };
+  for (const auto& row : io::InputRows(r.log_input)) items.push_back(row);
+  items.insert(items.end(), {
       {"relations (ground truth)", r.relations_path.empty() ? "none" : r.relations_path},
       {"SLAM runs (evaluations)", std::to_string(r.evaluation_count)},
       {"requests served from the cache", std::to_string(r.cache_hits)},
       {"wall time", Seconds(r.wall_s)},
-  };
+  });
   if (r.settings.is_object() && r.settings.contains("population")) {
     items.push_back({"recommended share", fmt::format("{} of {} individuals of the final population",
                                                       r.recommended_share, SettingText(r.settings["population"]))});

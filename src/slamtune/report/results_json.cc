@@ -38,6 +38,7 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   j["settings"] = result.settings.is_null() ? nlohmann::json::object() : result.settings;
   j["search_space"] = SearchSpaceJson(result.space);
   j["log"] = result.log_path;
+  j["input"] = result.log_input;
   j["relations"] = result.relations_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.relations_path);
   if (correlation) {
     nlohmann::json c = {{"parameter_sets", correlation->parameter_sets}};

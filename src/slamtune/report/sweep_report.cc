@@ -1,4 +1,5 @@
 // The sweep outputs (sweep_report.h).
+#include "slamtune/io/log_summary.h"
 #include "slamtune/report/sweep_report.h"
 
 #include <fmt/format.h>
@@ -111,6 +112,7 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
   std::vector<std::pair<std::string, std::string>> run = {{"log", options.log_path.empty() ? "(not given)" : options.log_path},
                                                           {"varied", parameter},
                                                           {"points", std::to_string(points.size())}};
+  for (const auto& row : io::InputRows(options.log_input)) run.push_back(row);
   std::string held;
   for (const auto& [name, value] : points.front().record.params) {
     if (name == parameter) continue;
