@@ -20,9 +20,10 @@
 //     -> laser), projected to x, y, yaw; --laser-offset states it instead. A laser whose z axis
 //     points down (upside down) has its readings reversed, as slam_karto and slam_toolbox do,
 //     and its beams described exactly: first beam at -angle_max.
-//   * the engine's input: laser pose = robot pose (+) offset, the sensor pose Karto computes
-//     from the odometric pose and the range finder's offset pose (karto-algorithm.md §1.4), so
-//     the graph is over sensor poses as in slam_karto; robot_pose and laser_offset are kept.
+//   * each scan keeps its robot pose and the offset, and laser pose = robot pose (+) offset, the
+//     sensor pose Karto computes from the odometric pose and the range finder's offset pose
+//     (karto-algorithm.md §1.4); the engine is given the robot poses and the offset
+//     (slam/log_runner.h OdometryFrameOf).
 //
 // Every choice is recorded in LaserLog::recording with the rule that made it.
 #pragma once

@@ -23,6 +23,11 @@ void LaserScan::SetCorrectedPose(const Pose2& pose) {
   barycenter_valid_ = false;
 }
 
+void LaserScan::SetCorrectedPoseWithBarycenter(const Pose2& corrected_pose, const Pose2& barycenter) {
+  SetCorrectedPose(corrected_pose);
+  SetBarycenter(barycenter);
+}
+
 void LaserScan::SetSensorPoseWithBarycenter(const Pose2& sensor_pose, const Pose2& barycenter) {
   SetSensorPose(sensor_pose);
   SetBarycenter(barycenter);

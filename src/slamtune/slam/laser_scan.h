@@ -68,6 +68,8 @@ class LaserScan {
   // SetSensorPose with the barycentre of that pose already known (bit for bit what the readout
   // would compute, e.g. stored when another run made the same solve); the points follow on use.
   void SetSensorPoseWithBarycenter(const Pose2& sensor_pose, const Pose2& barycenter);
+  // The same for a corrected (robot) pose, as a robot-pose graph writes its values back.
+  void SetCorrectedPoseWithBarycenter(const Pose2& corrected_pose, const Pose2& barycenter);
   // Gives the barycentre of the current pose, known bit for bit (e.g. from a BarycenterCache);
   // checked against the readout's own when that is computed. The points follow on use.
   void SetBarycenter(const Pose2& barycenter) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
 
 #include "slamtune/common/error.h"
@@ -12,7 +13,23 @@ namespace slamtune::slam {
 
 int RunSummary::total_edges() const { return std::accumulate(edges.begin(), edges.end(), 0); }
 
-LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params) {
+OdometryFrame OdometryFrameOf(const io::LaserLog& log) {
+  OdometryFrame frame;
+  if (log.scans.empty()) return frame;
+  const Pose2 first = log.scans.front().laser_offset;
+  for (const io::LaserScanRecord& s : log.scans) {
+    const Pose2& o = s.laser_offset;
+    if (!(std::fabs(o.x - first.x) <= kSameOffsetTolerance && std::fabs(o.y - first.y) <= kSameOffsetTolerance &&
+          std::fabs(NormalizeAngle(o.theta - first.theta)) <= kSameOffsetTolerance)) {
+      return frame;  // not a fixed mount: laser poses, zero offset
+    }
+  }
+  frame.robot_poses = true;
+  frame.offset = first;
+  return frame;
+}
+
+LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params, const Pose2& offset) {
   LaserGeometry g;
   g.min_angle = record.angle_min;
   g.angular_resolution = record.angle_increment;
@@ -22,7 +39,7 @@ LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperP
   // reference setup (80 m); a log without one uses the cap.
   g.max_range = std::min(params.laser_max_range_cap, record.max_range);
   g.range_threshold = params.RangeThreshold(g.min_range, g.max_range);
-  g.offset = Pose2{};  // laser poses as odometry, zero offset (§1.4)
+  g.offset = offset;  // the laser's offset pose (§1.4; zero for laser poses as odometry)
   return g;
 }
 
@@ -31,7 +48,8 @@ LogRunner::LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams
     : log_(std::move(log)), mapper_(params, std::move(match_cache)) {
   SLAMTUNE_CHECK(log_ != nullptr);
   if (log_->scans.empty()) throw InputError(log_->path, 0, "the log has no laser scans");
-  geometry_ = std::make_shared<const LaserGeometry>(GeometryForRecord(log_->scans.front(), params));
+  frame_ = OdometryFrameOf(*log_);
+  geometry_ = std::make_shared<const LaserGeometry>(GeometryForRecord(log_->scans.front(), params, frame_.offset));
   state_of_log_scan_.assign(log_->scans.size(), -1);
 }
 
@@ -50,9 +68,9 @@ ProcessResult LogRunner::Step() {
     std::shared_ptr<const std::vector<double>> ranges(log_, &record.ranges);
     std::shared_ptr<const LaserGeometry> geometry = geometry_;
     if (static_cast<int>(record.ranges.size()) != geometry_->num_readings) {
-      geometry = std::make_shared<const LaserGeometry>(GeometryForRecord(record, mapper_.params()));
+      geometry = std::make_shared<const LaserGeometry>(GeometryForRecord(record, mapper_.params(), frame_.offset));
     }
-    LaserScan scan(geometry, ranges, record.laser_pose, record.ipc_time);
+    LaserScan scan(geometry, ranges, OdometricPose(record, frame_), record.ipc_time);
     scan.log_index = static_cast<int>(index);
     result = mapper_.Process(std::move(scan));
     state_of_log_scan_[index] = result.state_id;
@@ -97,6 +115,10 @@ RunSummary LogRunner::Summary() const {
   return s;
 }
 
+Pose2 LogRunner::OdometricSensorPose(const io::LaserScanRecord& record) const {
+  return frame_.robot_poses ? Compose(record.robot_pose, frame_.offset) : record.laser_pose;
+}
+
 std::vector<io::TimedPose> LogRunner::Trajectory() const {
   std::vector<io::TimedPose> out;
   out.reserve(log_->scans.size());
@@ -111,9 +133,9 @@ std::vector<io::TimedPose> LogRunner::Trajectory() const {
       previous = id;
     } else if (previous >= 0) {
       const LaserScan& p = scans[previous];
-      pose = Compose(p.SensorPose(), Between(p.OdometricSensorPose(), record.laser_pose));
+      pose = Compose(p.SensorPose(), Between(p.OdometricSensorPose(), OdometricSensorPose(record)));
     } else {
-      pose = record.laser_pose;
+      pose = OdometricSensorPose(record);
     }
     out.push_back({record.ipc_time, pose});
   }

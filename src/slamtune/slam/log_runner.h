@@ -1,6 +1,7 @@
 // Runs a recorded laser log (io::LaserLog) through the Karto mapper the way a slam_karto user
 // replaying it would (karto-algorithm.md §2.3, §1.4 [DECIDE]): every scan in file order, the
-// FLASER laser pose as odometry with a zero mounting offset, readings unchanged,
+// odometric poses and mounting offset of OdometryFrameOf (for CARMEN FLASER logs: the laser pose
+// with a zero offset), readings unchanged,
 // maxRange = min(laser_max_range_cap, the scan's no-return value), rangeThreshold by the rule
 // of §9.2, time = ipc timestamp, throttle_scans keeping every n-th scan.
 //
@@ -54,6 +55,24 @@ struct RunSummary {
   int total_edges() const;
 };
 
+// How a log's scans are given to the mapper (karto-algorithm.md §1.4). When every scan has the
+// same laser mounting offset (within kSameOffsetTolerance), as a robot's recording does, the
+// mapper gets the robot's odometric poses and the offset as the laser's offset pose, as a ROS
+// node gives Karto the base's odometry and the range finder's offset; sensor poses are then
+// robot (+) offset, as in slam_karto (and the graph's frame follows robot_pose_graph). A log
+// whose per-scan "offset" varies (laser poses from another source than the robot's) is given
+// as laser poses with a zero offset. A log whose offset is zero is the same either way.
+inline constexpr double kSameOffsetTolerance = 1e-9;  // m and rad
+struct OdometryFrame {
+  bool robot_poses = false;  // scans' robot_pose as odometry, `offset` as the laser's offset
+  Pose2 offset;
+};
+OdometryFrame OdometryFrameOf(const io::LaserLog& log);
+// A scan's odometric pose for the mapper in that frame.
+inline const Pose2& OdometricPose(const io::LaserScanRecord& record, const OdometryFrame& frame) {
+  return frame.robot_poses ? record.robot_pose : record.laser_pose;
+}
+
 class LogRunner {
  public:
   // Validates `params`. The log is shared (read-only) by all copies of the runner.
@@ -91,7 +110,11 @@ class LogRunner {
   std::vector<io::TimedPose> Trajectory() const;
 
  private:
+  // The sensor pose the odometry gives for a log scan (as LaserScan::OdometricSensorPose).
+  Pose2 OdometricSensorPose(const io::LaserScanRecord& record) const;
+
   std::shared_ptr<const io::LaserLog> log_;
+  OdometryFrame frame_;
   std::shared_ptr<const LaserGeometry> geometry_;
   Mapper mapper_;
   std::size_t next_ = 0;
@@ -100,8 +123,10 @@ class LogRunner {
   double wall_s_ = 0.0;
 };
 
-// Laser geometry of a log scan record for these parameters (§2.3, §9.2).
-LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params);
+// Laser geometry of a log scan record for these parameters (§2.3, §9.2), with `offset` as the
+// laser's offset pose.
+LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params,
+                                const Pose2& offset = {});
 
 // The whole log in one call.
 struct RunResult {

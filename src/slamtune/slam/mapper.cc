@@ -150,7 +150,12 @@ ProcessResult Mapper::Process(LaserScan scan) {
 
 bool Mapper::Link(int from, int to, const Pose2& mean, const Eigen::Matrix3d& covariance, EdgeKind kind,
                   ProcessResult* result) {
-  const bool added = graph_.LinkScans(from, to, scans_[from].SensorPose(), mean, covariance, kind);
+  // slam_toolbox labels edges with robot poses (the mean converted to the robot frame, the
+  // sensor-frame covariance kept); slam_karto with sensor poses.
+  const bool robot = params_.robot_pose_graph;
+  const Pose2 from_pose = robot ? scans_[from].corrected_pose() : scans_[from].SensorPose();
+  const Pose2 to_pose = robot ? RobotPoseFromSensor(mean, geometry_->offset) : mean;
+  const bool added = graph_.LinkScans(from, to, from_pose, to_pose, covariance, kind);
   const auto k = static_cast<std::size_t>(kind);
   if (added) {
     ++counters_.edges_added[k];
@@ -271,6 +276,7 @@ int Mapper::CorrectPoses() {
   std::optional<SolveCache::Solved> stored;
   if (solve_cache_) {
     key = SolveCache::KeyOf(params_.solver, params_.ceres_loss_function, nodes, graph_.edges());
+    key.push_back(params_.robot_pose_graph ? 1 : 0);  // how the values are written back
     // The stored barycentres also depend on the laser (range threshold, ...): key it too.
     AppendGeometryKey(*geometry_, &key);
     stored = solve_cache_->Find(key);
@@ -287,10 +293,19 @@ int Mapper::CorrectPoses() {
   summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (summary.usable) {
     const bool known = stored && stored->barycenters.size() == nodes.size();
+    // Node values are sensor poses (slam_karto) or robot poses (slam_toolbox's robot_pose_graph).
+    const bool robot = params_.robot_pose_graph;
     for (std::size_t k = 0; k < nodes.size(); ++k) {
       if (known) {
-        scans_[k].SetSensorPoseWithBarycenter(nodes[k], stored->barycenters[k]);
+        if (robot) {
+          scans_[k].SetCorrectedPoseWithBarycenter(nodes[k], stored->barycenters[k]);
+        } else {
+          scans_[k].SetSensorPoseWithBarycenter(nodes[k], stored->barycenters[k]);
+        }
         reference_poses_[k] = scans_[k].ReferencePose(params_.use_scan_barycenter);
+      } else if (robot) {
+        scans_[k].SetCorrectedPose(nodes[k]);
+        UpdateReferencePose(static_cast<int>(k));
       } else {
         SetScanSensorPose(static_cast<int>(k), nodes[k]);
       }

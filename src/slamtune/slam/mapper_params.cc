@@ -94,6 +94,8 @@ const std::vector<Row>& Rows() {
       ST_NUM(kDouble, minimum_distance_penalty, true, Closed(0, 1), "in [0, 1]",
              "floor of the distance penalty"),
       ST_BOOL(use_response_expansion, true, "widen the coarse angle search on a zero response"),
+      ST_BOOL(robot_pose_graph, false,
+              "pose graph over robot (base) poses as slam_toolbox; false: over sensor poses as slam_karto"),
       ST_STR(range_threshold_rule, false, "slam_karto or slam_toolbox",
              "which node's rule sets the laser range threshold", "slam_karto", "slam_toolbox"),
       ST_NUM(kDouble, max_laser_range, true, Any(), "any finite value (<= 0 means the laser maximum)",
@@ -319,6 +321,7 @@ MapperParams MapperParams::Preset(std::string_view name) {
     p.angle_variance_penalty = 1.0;
     p.minimum_distance_penalty = 0.5;
     p.use_response_expansion = true;
+    p.robot_pose_graph = true;
     p.range_threshold_rule = "slam_toolbox";
     p.max_laser_range = 20.0;
     p.solver = "ceres";

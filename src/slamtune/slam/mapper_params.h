@@ -52,6 +52,11 @@ struct MapperParams {
   double minimum_angle_penalty = 0.9;          // floor of the angular penalty factor
   double minimum_distance_penalty = 0.5;       // floor of the distance penalty factor
   bool use_response_expansion = false;         // widen the coarse angle search on a zero response
+  // The pose graph's frame. false (slam_karto, open_karto): edges between sensor poses and
+  // solved values written back as sensor poses (new nodes start at the robot pose, §7.3).
+  // true (slam_toolbox): edges between robot (base) poses, the match covariances unchanged,
+  // values written back as robot poses. The same when the laser sits at the base origin.
+  bool robot_pose_graph = false;
 
   // --- Laser and map items of §9.2 ---
   // "slam_karto": rangeThreshold = clip(12, min_range, maxRange). "slam_toolbox":

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -64,8 +65,9 @@ TEST_P(RecordingRuns, BagGivesTheCarmenLogsScansAndPoses) {
 }
 
 // The run makes the same decisions — nodes, edges, loop closures and their responses — and its
-// trajectory agrees to 1e-9 m (the inputs differ in the last bits: headings pass through
-// quaternions, the CARMEN laser poses through 12-decimal text; measured 4e-10 m at most).
+// trajectory agrees to 1e-7 m (the inputs differ in the last bits: headings pass through
+// quaternions, the CARMEN laser poses and the offset derived from them through 12-decimal
+// text; measured 1.1e-8 m at most).
 TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
   static const RunResult reference = RunLog(std::make_shared<const io::LaserLog>(WorldLog()), MapperParams::Preset("slam_karto"));
   const RunResult run = RunLog(std::make_shared<const io::LaserLog>(io::ReadLaserLog(kFixtures + GetParam())),
@@ -79,10 +81,16 @@ TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
     EXPECT_NEAR(run.summary.loop_closures[k].coarse_response, reference.summary.loop_closures[k].coarse_response, 1e-12);
   }
   ASSERT_EQ(run.trajectory.size(), reference.trajectory.size());
+  double largest = 0.0;
   for (std::size_t k = 0; k < run.trajectory.size(); ++k) {
-    ASSERT_NEAR(run.trajectory[k].pose.x, reference.trajectory[k].pose.x, 1e-9) << k;
-    ASSERT_NEAR(run.trajectory[k].pose.y, reference.trajectory[k].pose.y, 1e-9) << k;
-    ASSERT_NEAR(run.trajectory[k].pose.theta, reference.trajectory[k].pose.theta, 1e-9) << k;
+    largest = std::max({largest, std::fabs(run.trajectory[k].pose.x - reference.trajectory[k].pose.x),
+                        std::fabs(run.trajectory[k].pose.y - reference.trajectory[k].pose.y)});
+  }
+  RecordProperty("largest_position_difference_m", std::to_string(largest));
+  for (std::size_t k = 0; k < run.trajectory.size(); ++k) {
+    ASSERT_NEAR(run.trajectory[k].pose.x, reference.trajectory[k].pose.x, 1e-7) << k;
+    ASSERT_NEAR(run.trajectory[k].pose.y, reference.trajectory[k].pose.y, 1e-7) << k;
+    ASSERT_NEAR(run.trajectory[k].pose.theta, reference.trajectory[k].pose.theta, 1e-7) << k;
   }
 }
 
