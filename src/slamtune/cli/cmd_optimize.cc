@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "slamtune/cli/command_registry.h"
+#include "slamtune/cli/recommendation_files.h"
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
@@ -113,25 +114,33 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
 
   // Preamble: every input is loaded and validated before any work starts.
   optim::OptimizeSettings settings;
-  settings.space = args.space_file.empty() ? optim::SearchSpace::PaperDefault()
-                                           : optim::SearchSpace::FromYaml(args.space_file);
+  TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
+  if (args.space_file.empty()) {
+    settings.space = optim::SearchSpace::AroundBase(inputs.base.loop_search_maximum_distance,
+                                                    inputs.base.loop_match_minimum_chain_size);
+  } else if (args.space_file == "paper") {
+    settings.space = optim::SearchSpace::PaperDefault();
+  } else {
+    settings.space = optim::SearchSpace::FromYaml(args.space_file);
+  }
   settings.population = args.population;
   settings.generations = args.generations;
   settings.divisions = args.divisions;
   settings.seed = args.seed;
   settings.Validate();
   if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
-  TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
   for (const auto& d : settings.space.dimensions) {
     slam::MapperParams probe = inputs.base;
     slam::SetNumeric(probe, d.name, d.lower);  // InputError for unknown names or bad bounds
     slam::SetNumeric(probe, d.name, d.upper);
   }
   auto context = MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
-  for (const auto& d : settings.space.dimensions) {
-    settings.default_assignment[d.name] = slam::GetNumeric(slam::MapperParams{}, d.name);
+  // The baseline is the base configuration itself: its values of the varied and the fixed parameters.
+  for (const auto& d : settings.space.dimensions) settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);
+  for (const auto& [name, value] : settings.space.fixed) {
+    settings.default_assignment[name] = slam::GetNumeric(inputs.base, name);
   }
-  for (const auto& [name, value] : settings.space.fixed) settings.default_assignment[name] = value;
+  settings.base_label = inputs.base_label;
   settings.log_path = inputs.log_label;
   settings.log_input = inputs.log_input;
   settings.relations_path = inputs.relations_label;
@@ -174,18 +183,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   if (workers) workers->Stop();  // the report's maps are rendered here
 
   const auto* best = result.Find("recommended");
-  slam::MapperParams best_params = context->ParamsFor(best->record.params);
-  {
-    std::ofstream yaml(std::filesystem::path(dir) / "best.yaml");
-    yaml << "# slamtune optimize: recommended loop-closure parameters for " << inputs.log_label << "\n"
-         << slam::ToRosYaml(best_params);
-  }
-  {
-    std::ofstream yaml(std::filesystem::path(dir) / "best_slam_karto.yaml");
-    yaml << "# slamtune optimize: recommended loop-closure parameters for " << inputs.log_label << "\n"
-         << "# slam_karto (ROS 1): rosparam load best_slam_karto.yaml /slam_karto\n"
-         << slam::ToFlatRosYaml(best_params);
-  }
+  const slam::MapperParams best_params = context->ParamsFor(best->record.params);
+  const RecommendationFiles files = WriteRecommendationFiles(dir, inputs, best_params, result);
+  for (const std::string& warning : files.warnings) std::fprintf(stderr, "slamtune: warning: %s\n", warning.c_str());
+  if (result.verdict_kind == optim::VerdictKind::kBetter) result.changes = files.changes;
+  result.how_to_load = HowToLoad(dir);
   const auto summary = report::WriteOptimizeReport(result, dir);
   if (!args.quiet) {
     std::printf("%s\n\n", result.verdict.c_str());
@@ -202,8 +204,18 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                                         .c_str()
                                   : "");
     }
-    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote best.yaml (slam_toolbox), best_slam_karto.yaml and %zu report files (report.html, results.json, tables, maps, figures) to %s\n",
+    if (result.verdict_kind == optim::VerdictKind::kBetter) {
+      std::printf("\nchanges from %s (best_change.yaml):\n", inputs.base_label.c_str());
+      for (const std::string& change : files.changes) std::printf("  %s\n", change.c_str());
+    } else {
+      std::printf("\nno change from %s: best.yaml is that configuration unchanged, best_change.yaml sets nothing\n",
+                  inputs.base_label.c_str());
+    }
+    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote the parameter files (best.yaml, best_change.yaml for "
+                "slam_toolbox; best_slam_karto.yaml, best_slam_karto_change.yaml for slam_karto) and %zu report files "
+                "(report.html, results.json, tables, maps, figures) to %s\n",
                 result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
+    for (const std::string& line : HowToLoad(dir)) std::printf("%s\n", line.c_str());
     if (workers) {
       std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
     }
@@ -218,10 +230,12 @@ const SubcommandRegistrar kRegistrar{{
     40,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<OptimizeArgs>();
-      app.add_option("LOG", args->inputs.log, "CARMEN log (.clf/.log, plain or gzip); none: the built-in world");
+      app.add_option("LOG", args->inputs.log, "CARMEN log (.clf/.log, plain or gzip) or a ROS 2 / ROS 1 recording (.mcap, .db3, bag folder, .bag); none: the built-in world");
       app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)");
       app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder");
-      app.add_option("--space", args->space_file, "search-space YAML (vary: NAME: {min, max, type}; fix: NAME: V)");
+      app.add_option("--space", args->space_file,
+                     "search-space YAML (vary: NAME: {min, max, type}; fix: NAME: V), or 'paper' for the seed "
+                     "paper's (r 2..6, g 6..20, p = 0.7, q = 0.4); default: r and g around the base configuration");
       app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
       app.add_option("--generations", args->generations, "generations (default 60; 8 on the built-in world)");
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")

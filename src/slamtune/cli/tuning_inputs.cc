@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/params_yaml.h"
@@ -18,8 +21,12 @@ void TuningInputOptions::AddTo(CLI::App& app) {
   app.add_option("--world", world, "built-in world to simulate when no LOG is given (see `simulate --list`)")
       ->capture_default_str();
   app.add_option("--world-seed", world_seed, "seed of the simulated world")->capture_default_str();
-  app.add_option("--preset", preset, "base parameters: slam_karto (default), open_karto or slam_toolbox");
-  app.add_option("--params", params_file, "slam_toolbox / slam_karto parameter YAML for the base parameters");
+  app.add_option("--preset", preset,
+                 "base parameters and behaviour: slam_karto (default), open_karto or slam_toolbox (its Karto: "
+                 "Ceres, robot-pose graph, response expansion); with --params, the defaults under the file");
+  app.add_option("--params", params_file,
+                 "your slam_toolbox (ROS 2) or slam_karto (ROS 1) parameter file: the base of every run and the "
+                 "baseline; keys it does not set take that node's own defaults");
   app.add_option("--set", sets, "override one base parameter, NAME=VALUE (repeatable)");
   input.AddTo(app);
 }
@@ -51,12 +58,42 @@ TuningInputOptions TuningInputOptions::FromJson(const nlohmann::json& j) {
   return o;
 }
 
+BaseConfiguration LoadBaseConfiguration(const std::string& params_file, const std::string& preset,
+                                        const std::vector<std::string>& sets) {
+  BaseConfiguration base;
+  if (params_file.empty()) {
+    const std::string name = preset.empty() ? "slam_karto" : preset;
+    base.params = slam::MapperParams::Preset(name);
+    base.node = name == "slam_toolbox" ? slam::RosNode::kSlamToolbox : slam::RosNode::kSlamKarto;
+    base.label = name + "'s defaults";
+  } else {
+    base.file_text = ReadTextFile(params_file);
+    base.node = slam::NodeOfParamsFile(base.file_text, params_file);
+    base.params = preset.empty() ? slam::NodeDefaults(base.node) : slam::MapperParams::Preset(preset);
+    slam::ApplyParamsYaml(base.params, base.file_text, params_file);
+    base.label = "your configuration (" + std::filesystem::path(params_file).filename().string() + ")";
+  }
+  for (const auto& s : sets) slam::ApplyOverride(base.params, s);
+  if (!sets.empty()) base.label += " with --set";
+  base.params.Validate();
+  return base;
+}
+
+namespace {
+
+void LoadBase(const TuningInputOptions& options, TuningInputs* in) {
+  BaseConfiguration base = LoadBaseConfiguration(options.params_file, options.preset, options.sets);
+  in->base = std::move(base.params);
+  in->base_label = std::move(base.label);
+  in->base_file_text = std::move(base.file_text);
+  in->base_node = base.node;
+}
+
+}  // namespace
+
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
   TuningInputs in;
-  in.base = options.preset.empty() ? slam::MapperParams{} : slam::MapperParams::Preset(options.preset);
-  if (!options.params_file.empty()) slam::ApplyParamsYamlFile(in.base, options.params_file);
-  for (const auto& s : options.sets) slam::ApplyOverride(in.base, s);
-  in.base.Validate();
+  LoadBase(options, &in);
 
   if (options.log.empty()) {
     sim::SimulationOptions sim_options;

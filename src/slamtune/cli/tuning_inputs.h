@@ -20,6 +20,7 @@
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/ros_node_files.h"
 
 namespace slamtune::cli {
 
@@ -42,11 +43,27 @@ struct TuningInputOptions {
 struct TuningInputs {
   std::shared_ptr<const io::LaserLog> log;
   std::vector<io::Relation> relations;
-  slam::MapperParams base;
+  slam::MapperParams base;      // the base configuration every run starts from
+  std::string base_label;       // "your configuration (FILE)", "slam_toolbox's defaults", ...
+  std::string base_file_text;   // the user's parameter file, "" without --params
+  slam::RosNode base_node = slam::RosNode::kSlamKarto;  // the node the base is written for
   std::string log_label;        // path, or "built-in world NAME (seed N)"
   std::string relations_label;  // path, "simulated", or empty
   std::vector<std::string> log_input;  // what was read and chosen (io::DescribeLogInput)
 };
+
+// The configuration runs start from: the user's parameter file (`params_file`) over the
+// defaults of the node it is written for (slam::NodeOfParamsFile; `preset` instead when given),
+// else `preset`'s own defaults (slam_karto when empty); then each `sets` NAME=VALUE. The label
+// names it for the report: "your configuration (FILE)" or "<preset>'s defaults".
+struct BaseConfiguration {
+  slam::MapperParams params;
+  std::string label;
+  std::string file_text;  // the user's file, "" without one
+  slam::RosNode node = slam::RosNode::kSlamKarto;  // the node the base is written for
+};
+BaseConfiguration LoadBaseConfiguration(const std::string& params_file, const std::string& preset,
+                                        const std::vector<std::string>& sets);
 
 // Loads and validates everything; throws InputError naming the file and problem.
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet);

@@ -128,10 +128,24 @@ std::size_t Worst(const std::vector<EvaluationRecord>& records) {
   return worst;
 }
 
-std::string Verdict(const EvaluationRecord& rec, const EvaluationRecord& def, const VerdictOptions& options) {
-  if (rec.status != "ok") return "The recommended parameter set failed to evaluate: " + rec.reason;
-  if (def.status != "ok") return "slam_karto's defaults failed to evaluate on this log: " + def.reason;
-  const auto a = rec.Objectives(), b = def.Objectives();
+const char* VerdictKindName(VerdictKind kind) {
+  switch (kind) {
+    case VerdictKind::kBetter: return "better";
+    case VerdictKind::kEquivalent: return "equivalent";
+    case VerdictKind::kWorse: return "worse";
+    case VerdictKind::kMixed: return "mixed";
+    case VerdictKind::kFailed: return "failed";
+  }
+  return "failed";
+}
+
+VerdictSummary Verdict(const EvaluationRecord& rec, const EvaluationRecord& base, const VerdictOptions& options) {
+  const std::string& label = options.base_label;
+  if (rec.status != "ok") return {VerdictKind::kFailed, "The recommended parameter set failed to evaluate: " + rec.reason};
+  if (base.status != "ok") {
+    return {VerdictKind::kFailed, fmt::format("{} failed to evaluate on this log: {}", label, base.reason)};
+  }
+  const auto a = rec.Objectives(), b = base.Objectives();
   static const char* names[] = {"occupied-cell proportion", "corner pixels", "enclosed areas"};
   int better = 0, worse = 0;
   std::string detail;
@@ -143,23 +157,26 @@ std::string Verdict(const EvaluationRecord& rec, const EvaluationRecord& def, co
     detail += fmt::format("{}{} {:.6g} vs {:.6g}", k ? ", " : "", names[k], a[k], b[k]);
   }
   const std::string loops =
-      fmt::format("loop closures {} (recommended) vs {} (defaults)", rec.loop_closures, def.loop_closures);
+      fmt::format("loop closures {} (recommended) vs {} (base)", rec.loop_closures, base.loop_closures);
   if (better == 0 && worse == 0) {
-    return fmt::format(
-        "Equivalent: the recommendation and slam_karto's defaults give maps whose objectives differ by less "
-        "than {:.0f}% ({}; {}). The objectives do not rank working runs this close; keep the defaults unless "
-        "ground truth says otherwise.",
-        100 * options.equivalence_tolerance, detail, loops);
+    return {VerdictKind::kEquivalent,
+            fmt::format("Equivalent: the recommendation and {} give maps whose objectives differ by less than {:.0f}% "
+                        "({}; {}). The objectives do not rank working runs this close; keep {} unless ground truth "
+                        "says otherwise.",
+                        label, 100 * options.equivalence_tolerance, detail, loops, label)};
   }
   if (worse == 0) {
-    return fmt::format("The recommendation gives a cleaner map than slam_karto's defaults ({}; {}).", detail, loops);
+    return {VerdictKind::kBetter,
+            fmt::format("The recommendation gives a cleaner map than {} ({}; {}).", label, detail, loops)};
   }
   if (better == 0) {
-    return fmt::format("slam_karto's defaults score better than the recommendation on this log ({}; {}).", detail,
-                       loops);
+    return {VerdictKind::kWorse,
+            fmt::format("{} score{} better than the recommendation on this log ({}; {}).", label,
+                        label.ends_with("defaults") ? "" : "s", detail, loops)};
   }
-  return fmt::format("Mixed: the recommendation is better on some objectives and worse on others ({}; {}).", detail,
-                     loops);
+  return {VerdictKind::kMixed,
+          fmt::format("Mixed: the recommendation is better on some objectives and worse on others ({}; {}).", detail,
+                      loops)};
 }
 
 }  // namespace slamtune::optim

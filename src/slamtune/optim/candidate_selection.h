@@ -7,7 +7,7 @@
 //   objective is normalised by the front's range (a simple, scale-free knee).
 // * Worst: the evaluated set with the largest sum of normalised objectives (the paper shows it
 //   for contrast).
-// * Verdict: compares the recommendation with slam_karto's defaults in plain words. The
+// * Verdict: compares the recommendation with the base configuration in plain words. The
 //   objectives separate failed loop closure from working runs well but barely rank working
 //   runs, so differences within `equivalence_tolerance` are called equivalent, not a gain.
 #pragma once
@@ -39,10 +39,21 @@ std::size_t Worst(const std::vector<EvaluationRecord>& records);
 
 struct VerdictOptions {
   double equivalence_tolerance = 0.05;  // relative difference per objective treated as no difference
+  std::string base_label = "slam_karto's defaults";  // what the recommendation is compared with
 };
 
-// One paragraph comparing `recommended` with `defaults` (slam_karto's r = 4, g = 10).
-std::string Verdict(const EvaluationRecord& recommended, const EvaluationRecord& defaults,
-                    const VerdictOptions& options = {});
+enum class VerdictKind { kBetter, kEquivalent, kWorse, kMixed, kFailed };
+// "better", "equivalent", "worse", "mixed", "failed".
+const char* VerdictKindName(VerdictKind kind);
+
+struct VerdictSummary {
+  VerdictKind kind = VerdictKind::kFailed;
+  std::string text;  // one paragraph
+  bool better() const { return kind == VerdictKind::kBetter; }
+};
+
+// Compares `recommended` with `base` (the configuration tuned from).
+VerdictSummary Verdict(const EvaluationRecord& recommended, const EvaluationRecord& base,
+                       const VerdictOptions& options = {});
 
 }  // namespace slamtune::optim

@@ -42,12 +42,24 @@ TEST(CandidateSelection, FrontKneeAndWorst) {
 }
 
 TEST(CandidateSelection, VerdictCallsSmallDifferencesEquivalent) {
-  const auto v = Verdict(R("r", 0.0300, 1000, 10), R("d", 0.0301, 1005, 10));
+  const auto v = Verdict(R("r", 0.0300, 1000, 10), R("d", 0.0301, 1005, 10)).text;
   EXPECT_EQ(v.rfind("Equivalent", 0), 0u) << v;
-  EXPECT_NE(Verdict(R("r", 0.02, 800, 8), R("d", 0.03, 1000, 10)).find("cleaner map"), std::string::npos);
-  EXPECT_NE(Verdict(R("r", 0.04, 1200, 10), R("d", 0.03, 1000, 10)).find("defaults score better"),
+  EXPECT_NE(Verdict(R("r", 0.02, 800, 8), R("d", 0.03, 1000, 10)).text.find("cleaner map"), std::string::npos);
+  EXPECT_NE(Verdict(R("r", 0.04, 1200, 10), R("d", 0.03, 1000, 10)).text.find("defaults score better"),
             std::string::npos);
-  EXPECT_NE(Verdict(R("r", 0.02, 1200, 10), R("d", 0.03, 1000, 10)).find("Mixed"), std::string::npos);
+  EXPECT_NE(Verdict(R("r", 0.02, 1200, 10), R("d", 0.03, 1000, 10)).text.find("Mixed"), std::string::npos);
+  EXPECT_EQ(Verdict(R("r", 0.02, 800, 8), R("d", 0.03, 1000, 10)).kind, VerdictKind::kBetter);
+  EXPECT_EQ(Verdict(R("r", 0.0300, 1000, 10), R("d", 0.0301, 1005, 10)).kind, VerdictKind::kEquivalent);
+  EXPECT_EQ(Verdict(R("r", 0.04, 1200, 10), R("d", 0.03, 1000, 10)).kind, VerdictKind::kWorse);
+  EXPECT_EQ(Verdict(R("r", 0.02, 1200, 10), R("d", 0.03, 1000, 10)).kind, VerdictKind::kMixed);
+}
+
+TEST(CandidateSelection, VerdictNamesTheBaseItComparesWith) {
+  VerdictOptions options;
+  options.base_label = "your configuration (robot.yaml)";
+  const VerdictSummary v = Verdict(R("r", 0.04, 1200, 10), R("d", 0.03, 1000, 10), options);
+  EXPECT_EQ(v.text.rfind("your configuration (robot.yaml) scores better", 0), 0u) << v.text;
+  EXPECT_FALSE(v.better());
 }
 
 }  // namespace

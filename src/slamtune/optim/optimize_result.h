@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "slamtune/io/map_image.h"
+#include "slamtune/optim/candidate_selection.h"
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/search_space.h"
 
@@ -38,7 +39,13 @@ struct OptimizeResult {
 
   std::vector<Candidate> candidates;  // recommended, knee, worst, default (in that order)
   int recommended_share = 0;          // individuals of the final population with the recommended set
-  std::string verdict;                // plain words: is the recommendation better than the defaults?
+  std::string verdict;                // plain words: is the recommendation better than the base?
+  VerdictKind verdict_kind = VerdictKind::kFailed;
+  std::string base_label;             // the base configuration ("your configuration (FILE)", ...)
+  // Set by the command that writes the parameter files, for the report: "name: base -> tuned"
+  // (empty when the recommendation is not better) and the commands that load the files.
+  std::vector<std::string> changes;
+  std::vector<std::string> how_to_load;
   std::string lowest_error_label;     // with relations: the candidate with the lowest translational error
 
   std::vector<EvaluationRecord> evaluations;    // every finished evaluation, in order

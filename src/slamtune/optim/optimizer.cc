@@ -204,9 +204,14 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
       {"worst", "the evaluated set with the largest sum of normalised objectives (for contrast)",
        result.evaluations[worst],
        {}},
-      {"default", "slam_karto's defaults for the varied parameters", defaults, {}},
+      {"default", settings.base_label + ": the base configuration's values", defaults, {}},
   };
-  result.verdict = Verdict(final_records[rec.index], defaults);
+  VerdictOptions verdict_options;
+  verdict_options.base_label = settings.base_label;
+  const VerdictSummary verdict = Verdict(final_records[rec.index], defaults, verdict_options);
+  result.verdict = verdict.text;
+  result.verdict_kind = verdict.kind;
+  result.base_label = settings.base_label;
   if (!settings.relations_path.empty()) {
     double best = std::numeric_limits<double>::infinity();
     for (const auto& c : result.candidates) {

@@ -27,7 +27,8 @@ struct OptimizeSettings {
   std::vector<std::string> log_input;  // what was read from the log and chosen, for the report
   std::string relations_path;  // empty without ground truth
   SearchSpace space = SearchSpace::PaperDefault();
-  Assignment default_assignment;  // slam_karto's defaults for the varied parameters (+ fixed)
+  Assignment default_assignment;  // the base configuration's values of the varied (and fixed) parameters
+  std::string base_label = "slam_karto's defaults";  // what the base is: "your configuration (FILE)", ...
   std::size_t divisions = 10;     // Das-Dennis divisions: M = 3, D = 10 -> 66 reference points
   std::size_t population = 66;    // the paper's population
   unsigned generations = 60;      // the paper's generations

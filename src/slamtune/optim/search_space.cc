@@ -34,6 +34,14 @@ SearchSpace SearchSpace::PaperDefault() {
   return s;
 }
 
+SearchSpace SearchSpace::AroundBase(double base_r, int base_g) {
+  SearchSpace s;
+  s.dimensions = {{"loop_search_maximum_distance", std::min(2.0, base_r), std::max(6.0, base_r), false},
+                  {"loop_match_minimum_chain_size", std::min(6.0, static_cast<double>(base_g)),
+                   std::max(20.0, static_cast<double>(base_g)), true}};
+  return s;
+}
+
 SearchSpace SearchSpace::FromYaml(const std::string& path) {
   YAML::Node root;
   try {

@@ -1,8 +1,9 @@
 // The space NSGA-III searches: which mapper parameters vary (by ROS name, with bounds and
-// type) and which are held fixed. Defaults are the seed paper's (Han et al., Sensors 2020,
-// §4): r = loop_search_maximum_distance in [2, 6] m, g = loop_match_minimum_chain_size in
-// [6, 20] (integer), p = loop_match_minimum_response_coarse = 0.7 and
-// q = loop_match_maximum_variance_coarse = 0.4 (ROS units) fixed.
+// type) and which are held fixed. The default searches r = loop_search_maximum_distance and
+// g = loop_match_minimum_chain_size around the base configuration (AroundBase); the seed
+// paper's space (Han et al., Sensors 2020, §4: r in [2, 6] m, g in [6, 20] (integer),
+// p = loop_match_minimum_response_coarse = 0.7 and q = loop_match_maximum_variance_coarse
+// = 0.4 (ROS units) fixed) is PaperDefault.
 //
 // Decision vectors follow pagmo's convention: real genes first, integer genes last (nix), so
 // dimensions are stored reals-then-integers whatever order the YAML lists them in.
@@ -25,7 +26,12 @@ struct SearchSpace {
   std::vector<Dimension> dimensions;     // reals first, then integers
   std::map<std::string, double> fixed;  // held constant (ROS units)
 
+  // The seed paper's space (header comment); `--space paper`.
   static SearchSpace PaperDefault();
+  // The default: r and g over the paper's ranges widened to contain the base configuration's
+  // values (r in [min(2, r0), max(6, r0)] m, g in [min(6, g0), max(20, g0)]); nothing fixed, so
+  // every other parameter keeps the base's value.
+  static SearchSpace AroundBase(double base_r, int base_g);
 
   // Reads a YAML search space:
   //   vary:

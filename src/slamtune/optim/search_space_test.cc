@@ -36,6 +36,23 @@ TEST(SearchSpace, PaperDefaultIsRealThenInteger) {
   EXPECT_DOUBLE_EQ(a.at("loop_match_minimum_response_coarse"), 0.7);
 }
 
+TEST(SearchSpace, AroundBaseContainsTheBaseAndFixesNothing) {
+  const SearchSpace toolbox = SearchSpace::AroundBase(3.0, 10);
+  ASSERT_EQ(toolbox.size(), 2u);
+  EXPECT_TRUE(toolbox.fixed.empty());  // p and q keep the base's values
+  EXPECT_DOUBLE_EQ(toolbox.dimensions[0].lower, 2.0);
+  EXPECT_DOUBLE_EQ(toolbox.dimensions[0].upper, 6.0);
+  EXPECT_DOUBLE_EQ(toolbox.dimensions[1].lower, 6.0);
+  EXPECT_DOUBLE_EQ(toolbox.dimensions[1].upper, 20.0);
+  const SearchSpace wide = SearchSpace::AroundBase(8.5, 3);
+  EXPECT_DOUBLE_EQ(wide.dimensions[0].upper, 8.5);
+  EXPECT_DOUBLE_EQ(wide.dimensions[1].lower, 3.0);
+  const SearchSpace narrow = SearchSpace::AroundBase(1.2, 40);
+  EXPECT_DOUBLE_EQ(narrow.dimensions[0].lower, 1.2);
+  EXPECT_DOUBLE_EQ(narrow.dimensions[1].upper, 40.0);
+  EXPECT_NO_THROW(narrow.Validate("around base"));
+}
+
 TEST(SearchSpace, YamlOrdersIntegersLastAndKeepsFixed) {
   const SearchSpace s = SearchSpace::FromYaml(WriteTemp("ok", R"(
 vary:

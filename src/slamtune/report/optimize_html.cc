@@ -60,6 +60,13 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
   page.Paragraph(r.verdict.empty() ? "No verdict was given." : r.verdict, "verdict");
+  if (!r.how_to_load.empty()) {
+    page.Paragraph(r.changes.empty() ? "Keep " + r.base_label + ": the parameter files repeat it unchanged."
+                                     : "Changes from " + r.base_label + ":");
+    if (!r.changes.empty()) page.List(r.changes);
+    page.Paragraph("To run it on the robot:");
+    page.List(r.how_to_load);
+  }
   if (!r.lowest_error_label.empty()) {
     page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
                    r.lowest_error_label + "\".");

@@ -33,6 +33,10 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   j["cache_hits"] = result.cache_hits;
   j["wall_s"] = result.wall_s;
   j["verdict"] = result.verdict;
+  j["verdict_kind"] = optim::VerdictKindName(result.verdict_kind);
+  j["base"] = result.base_label;
+  j["changes"] = result.changes;
+  j["how_to_load"] = result.how_to_load;
   j["recommended_share"] = result.recommended_share;
   j["lowest_error"] = result.lowest_error_label.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.lowest_error_label);
   j["settings"] = result.settings.is_null() ? nlohmann::json::object() : result.settings;

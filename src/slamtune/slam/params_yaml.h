@@ -1,11 +1,13 @@
-// Mapper parameters from and to ROS YAML files (karto-algorithm.md §9).
+// Mapper parameters from ROS YAML files (karto-algorithm.md §9); the files slamtune writes for
+// the nodes are slam/ros_node_files.h's.
 //
-// Reads the ROS 2 nesting (`<node>: ros__parameters: {...}`, e.g. slam_toolbox's shipped
-// mapper_params_*.yaml), a bare `ros__parameters:` map, and a flat map (slam_karto's
-// config/mapper_params.yaml). Keys of the ROS nodes that do not change the engine (frames,
-// topics, publish periods, ...) are recognised and ignored (listed in the result); any other
+// Reads slam_toolbox's ROS 2 files (its section found as slam/ros_params_section.h says: node
+// name, namespace, `/**`, other nodes beside it) and flat slam_karto files. In a ROS 2 file
+// minimum_time_interval is slam_toolbox's node-level scan filter, not a parameter of its Karto:
+// it is listed as ignored. The nodes' own keys that do not change the engine (frames, topics,
+// publish periods, ...; slam/ros_node_files.h's tables) are ignored and listed; any other
 // unknown key, a wrong type or an out-of-range value throws InputError naming the file, the
-// parameter and the rule.
+// parameter and the rule. The values are checked together, after all are applied.
 #pragma once
 
 #include <string>
@@ -25,14 +27,5 @@ struct ParamsYamlReport {
 ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_text, const std::string& source);
 // Same, reading a file. Throws InputError if it cannot be read.
 ParamsYamlReport ApplyParamsYamlFile(MapperParams& params, const std::string& path);
-
-// The ROS parameters (ParamInfo::ros) in slam_toolbox's nesting, `node_name: ros__parameters:`,
-// plus `solver_plugin`. Values round-trip exactly.
-std::string ToRosYaml(const MapperParams& params, const std::string& node_name = "slam_toolbox");
-// The same ROS parameters as a flat map, the form of slam_karto's config/mapper_params.yaml
-// (ROS 1: `rosparam load FILE /slam_karto`, or <rosparam file=.../> inside the node). slam_karto
-// always solves with SPA, so there is no solver key; a comment says so when `params` use
-// Ceres. Values round-trip exactly (ApplyParamsYaml reads flat maps).
-std::string ToFlatRosYaml(const MapperParams& params);
 
 }  // namespace slamtune::slam

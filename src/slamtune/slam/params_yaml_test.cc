@@ -79,46 +79,5 @@ TEST(ParamsYaml, RejectsUnknownWrongTypeAndOutOfRange) {
   EXPECT_EQ(p, before);  // nothing applied on error
 }
 
-TEST(ParamsYaml, RosYamlRoundTrips) {
-  MapperParams source = MapperParams::Preset("slam_toolbox");
-  source.loop_search_maximum_distance = 2.7182818284590451;
-  source.loop_match_minimum_chain_size = 7;
-  const std::string text = ToRosYaml(source);
-  EXPECT_THAT(text, HasSubstr("slam_toolbox:\n  ros__parameters:\n"));
-  EXPECT_THAT(text, HasSubstr("    loop_match_minimum_chain_size: 7\n"));
-  EXPECT_THAT(text, HasSubstr("    solver_plugin: solver_plugins::CeresSolver\n"));
-  EXPECT_THAT(text, Not(HasSubstr("matcher_threads")));  // engine-only parameters stay out
-  MapperParams read = MapperParams::Preset("slam_toolbox");
-  read.loop_search_maximum_distance = 1.0;
-  read.loop_match_minimum_chain_size = 1;
-  ApplyParamsYaml(read, text, "roundtrip.yaml");
-  EXPECT_EQ(read, source);
-}
-
-TEST(ParamsYaml, FlatRosYamlRoundTripsAndHasNoNesting) {
-  MapperParams source = MapperParams::Preset("slam_karto");
-  source.loop_search_maximum_distance = 3.7738212890625001;
-  source.loop_match_minimum_chain_size = 19;
-  source.loop_match_maximum_variance_coarse = 0.123456789;  // internal (squared) value
-  const std::string text = ToFlatRosYaml(source);
-  EXPECT_THAT(text, StartsWith("use_scan_matching: true\n"));
-  EXPECT_THAT(text, HasSubstr("\nloop_match_minimum_chain_size: 19\n"));
-  EXPECT_THAT(text, Not(HasSubstr("ros__parameters")));
-  EXPECT_THAT(text, Not(HasSubstr("solver_plugin")));
-  EXPECT_THAT(text, Not(HasSubstr("Ceres")));
-  EXPECT_THAT(text, Not(HasSubstr("matcher_threads")));
-  MapperParams read = MapperParams::Preset("slam_karto");
-  ApplyParamsYaml(read, text, "flat.yaml");
-  EXPECT_EQ(read, source);
-
-  MapperParams ceres = MapperParams::Preset("slam_toolbox");
-  ASSERT_EQ(ceres.solver, "ceres");
-  EXPECT_THAT(ToFlatRosYaml(ceres), StartsWith("# these values were found with the Ceres back-end"));
-  MapperParams read_ceres = MapperParams::Preset("slam_toolbox");
-  read_ceres.loop_search_maximum_distance = 1.0;
-  ApplyParamsYaml(read_ceres, ToFlatRosYaml(ceres), "flat_ceres.yaml");
-  EXPECT_EQ(read_ceres, ceres);
-}
-
 }  // namespace
 }  // namespace slamtune::slam
