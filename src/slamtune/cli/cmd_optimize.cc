@@ -129,11 +129,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   settings.seed = args.seed;
   settings.Validate();
   if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
-  for (const auto& d : settings.space.dimensions) {
-    slam::MapperParams probe = inputs.base;
-    slam::SetNumeric(probe, d.name, d.lower);  // InputError for unknown names or bad bounds
-    slam::SetNumeric(probe, d.name, d.upper);
-  }
+  optim::CheckSpaceAgainst(settings.space, inputs.base, args.space_file.empty() ? "--space" : args.space_file);
   auto context = MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
   // The baseline is the base configuration itself: its values of the varied and the fixed parameters.
   for (const auto& d : settings.space.dimensions) settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);

@@ -58,7 +58,7 @@ int RunParams(const ParamsArgs& args) {
     slam::ApplyParamsYaml(base.params, text, args.files[i]);
     checks.push_back({args.files[i], node, slam::CheckNodeFile(node, text)});
   }
-  for (const std::string& s : args.sets) slam::ApplyOverride(base.params, s);
+  slam::ApplyOverrides(base.params, args.sets);
   base.params.Validate();
 
   const slam::MapperParams defaults =

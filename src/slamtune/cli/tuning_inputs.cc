@@ -73,7 +73,7 @@ BaseConfiguration LoadBaseConfiguration(const std::string& params_file, const st
     slam::ApplyParamsYaml(base.params, base.file_text, params_file);
     base.label = "your configuration (" + std::filesystem::path(params_file).filename().string() + ")";
   }
-  for (const auto& s : sets) slam::ApplyOverride(base.params, s);
+  slam::ApplyOverrides(base.params, sets);
   if (!sets.empty()) base.label += " with --set";
   base.params.Validate();
   return base;
@@ -142,7 +142,8 @@ std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const Tuning
   context->relations = inputs.relations;
   context->base = inputs.base;
   ShareWork(*context, no_share, share_mb);
-  for (const auto& [name, value] : fixed) slam::SetNumeric(context->base, name, value);
+  // Checked with the varied values by the command (a fixed value may fit only with them).
+  for (const auto& [name, value] : fixed) slam::AssignNumeric(context->base, name, value);
   return context;
 }
 

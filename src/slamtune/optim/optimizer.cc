@@ -56,6 +56,23 @@ std::vector<EvaluationRecord> RecordsOf(BatchEvaluator& evaluator, const SearchS
   return evaluator.Evaluate(batch);
 }
 
+// Stops with a readable error when no run of `records` succeeded: nothing can be ranked, and
+// every later generation would fail the same way.
+void RequireAnySuccess(const std::vector<EvaluationRecord>& records, const std::string& what) {
+  for (const EvaluationRecord& r : records) {
+    if (r.status == "ok") return;
+  }
+  std::string example;
+  if (!records.empty()) {
+    for (const auto& [name, value] : records.front().params) {
+      example += fmt::format("{}{}={}", example.empty() ? "" : " ", name, value);
+    }
+    example = fmt::format(" (e.g. {}: {})", example, records.front().reason);
+  }
+  throw InputError(fmt::format("every SLAM run of {} failed{}: nothing to compare; check the search space", what,
+                               example));
+}
+
 }  // namespace
 
 void OptimizeSettings::Validate() const {
@@ -148,6 +165,8 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
                                           {pop.get_f().begin(), pop.get_f().end()}, ""));
   }
   current_f.assign(pop.get_f().begin(), pop.get_f().end());
+  RequireAnySuccess(RecordsOf(evaluator, settings.space, {pop.get_x().begin(), pop.get_x().end()}),
+                    done_gens == 0 ? "the initial population" : "the saved population");
   for (unsigned g : snapshot_gens) {  // figures of generations finished before a resume
     if (g > done_gens) continue;
     if (auto saved = store.Generation(static_cast<int>(g))) {
@@ -184,6 +203,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   // Choosing the answer.
   const std::vector<pagmo::vector_double> final_x(pop.get_x().begin(), pop.get_x().end());
   const std::vector<EvaluationRecord> final_records = RecordsOf(evaluator, settings.space, final_x);
+  RequireAnySuccess(final_records, "the final population");
   result.evaluations = store.All();
   const Recommendation rec = RecommendByMajority(final_records);
   result.recommended_share = rec.share;

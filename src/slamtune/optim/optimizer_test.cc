@@ -136,6 +136,21 @@ TEST(Optimizer, ResumeRefusesDifferentSettingsAndEmptyFolders) {
   EXPECT_THROW(RunOptimization(SmallSettings(), ev2, empty, true, {}), InputError);
 }
 
+TEST(Optimizer, StopsWithAReadableErrorWhenEveryRunFails) {
+  const std::string path = FreshStore("all_failed");
+  const EvaluateFn fail = [](const Assignment& a) {
+    return EvaluationRecord::Failed("", a, "mapper parameter x = 1 is out of range");
+  };
+  try {
+    Optimize(path, false, fail);
+    FAIL() << "an optimisation of failed runs returned";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("every SLAM run of the initial population failed"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("out of range"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Optimizer, RejectsBadBudgets) {
   OptimizeSettings s = SmallSettings();
   s.population = 2;

@@ -20,6 +20,18 @@ double ReadNumber(const YAML::Node& node, const std::string& path, const std::st
   }
 }
 
+// The table row of a parameter that can be searched: known and a number.
+const slam::ParamInfo* NumericParam(const std::string& name, const std::string& path, std::size_t line) {
+  const slam::ParamInfo* info = slam::FindParam(name);
+  if (info == nullptr) throw InputError(path, line, slam::UnknownParamMessage(name));
+  if (info->type != slam::ParamType::kInt && info->type != slam::ParamType::kDouble) {
+    throw InputError(path, line,
+                     fmt::format("'{}' is a {} parameter: only numbers can be searched (set it with fix: or --set)",
+                                 name, slam::ParamTypeName(info->type)));
+  }
+  return info;
+}
+
 void SortRealsFirst(std::vector<Dimension>& dims) {
   std::stable_partition(dims.begin(), dims.end(), [](const Dimension& d) { return !d.integer; });
 }
@@ -60,6 +72,10 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
       for (const auto& item : top.second) {
         Dimension d;
         d.name = item.first.as<std::string>();
+        const std::size_t line = item.first.Mark().line + 1;
+        s.lines[d.name] = line;
+        const slam::ParamInfo* info = NumericParam(d.name, path, line);
+        d.integer = info->type == slam::ParamType::kInt;
         const YAML::Node spec = item.second;
         if (!spec.IsMap() || !spec["min"] || !spec["max"]) {
           throw InputError(path, spec.Mark().line + 1,
@@ -80,6 +96,10 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
             throw InputError(path, spec["type"].Mark().line + 1,
                              fmt::format("'{}': type must be int or real, not '{}'", d.name, type));
           }
+          if (d.integer && type == "real") {
+            throw InputError(path, spec["type"].Mark().line + 1,
+                             fmt::format("'{}' is an integer parameter: its type must be int", d.name));
+          }
           d.integer = type == "int";
         }
         s.dimensions.push_back(d);
@@ -88,6 +108,8 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
       if (!top.second.IsMap()) throw InputError(path, top.second.Mark().line + 1, "'fix' must be a map");
       for (const auto& item : top.second) {
         const std::string name = item.first.as<std::string>();
+        s.lines[name] = item.first.Mark().line + 1;
+        if (slam::FindParam(name) == nullptr) throw InputError(path, s.lines[name], slam::UnknownParamMessage(name));
         s.fixed[name] = ReadNumber(item.second, path, name);
       }
     } else {
@@ -100,28 +122,60 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
   return s;
 }
 
+std::size_t SearchSpace::LineOf(const std::string& name) const {
+  const auto it = lines.find(name);
+  return it == lines.end() ? 0 : it->second;
+}
+
+namespace {
+
+// The line of the searched or fixed name an engine message is about ("mapper parameter NAME = ...").
+std::size_t LineOfMessage(const SearchSpace& space, const std::string& message, std::size_t fallback) {
+  for (const auto& [name, line] : space.lines) {
+    if (message.find("parameter " + name + " ") != std::string::npos) return line;
+  }
+  return fallback;
+}
+
+}  // namespace
+
+void CheckSpaceAgainst(const SearchSpace& space, const slam::MapperParams& base, const std::string& source) {
+  for (const Dimension& d : space.dimensions) {
+    for (double bound : {d.lower, d.upper}) {
+      std::map<std::string, double> values = space.fixed;
+      values[d.name] = bound;
+      slam::MapperParams probe = base;
+      try {
+        slam::SetNumerics(probe, values);
+      } catch (const InputError& e) {
+        throw InputError(source, LineOfMessage(space, e.message(), space.LineOf(d.name)), e.message());
+      }
+    }
+  }
+}
+
 void SearchSpace::Validate(const std::string& source) const {
   if (dimensions.empty()) throw InputError(source, 0, "search space is empty: 'vary' names no parameter");
   std::set<std::string> seen;
   for (const Dimension& d : dimensions) {
-    if (!seen.insert(d.name).second) throw InputError(source, 0, fmt::format("'{}' is listed twice", d.name));
-    if (fixed.count(d.name)) throw InputError(source, 0, fmt::format("'{}' is both varied and fixed", d.name));
+    if (!seen.insert(d.name).second) throw InputError(source, LineOf(d.name), fmt::format("'{}' is listed twice", d.name));
+    if (fixed.count(d.name)) throw InputError(source, LineOf(d.name), fmt::format("'{}' is both varied and fixed", d.name));
     if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
-      throw InputError(source, 0, fmt::format("'{}': bounds must be finite", d.name));
+      throw InputError(source, LineOf(d.name), fmt::format("'{}': bounds must be finite", d.name));
     }
     if (!(d.lower < d.upper)) {
-      throw InputError(source, 0,
+      throw InputError(source, LineOf(d.name),
                        fmt::format("'{}': bounds reversed or empty (min {} must be < max {})", d.name, d.lower,
                                    d.upper));
     }
     if (d.integer && (d.lower != std::floor(d.lower) || d.upper != std::floor(d.upper))) {
-      throw InputError(source, 0,
+      throw InputError(source, LineOf(d.name),
                        fmt::format("'{}': an int parameter needs whole-number bounds, got [{}, {}]", d.name,
                                    d.lower, d.upper));
     }
   }
   for (const auto& [name, value] : fixed) {
-    if (!std::isfinite(value)) throw InputError(source, 0, fmt::format("fixed '{}' must be finite", name));
+    if (!std::isfinite(value)) throw InputError(source, LineOf(name), fmt::format("fixed '{}' must be finite", name));
   }
   for (std::size_t i = 1; i < dimensions.size(); ++i) {
     SLAMTUNE_CHECK_MSG(!(dimensions[i - 1].integer && !dimensions[i].integer), "integer genes must come last");

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "slamtune/slam/mapper_params.h"
+
 namespace slamtune::optim {
 
 struct Dimension {
@@ -25,6 +27,7 @@ struct Dimension {
 struct SearchSpace {
   std::vector<Dimension> dimensions;     // reals first, then integers
   std::map<std::string, double> fixed;  // held constant (ROS units)
+  std::map<std::string, std::size_t> lines;  // where each name is in the YAML file (messages only)
 
   // The seed paper's space (header comment); `--space paper`.
   static SearchSpace PaperDefault();
@@ -39,8 +42,10 @@ struct SearchSpace {
   //     loop_match_minimum_chain_size: {min: 6, max: 20, type: int}
   //   fix:
   //     loop_match_minimum_response_coarse: 0.7
-  // Throws InputError naming the file and the problem (empty space, reversed bounds,
-  // non-integer bounds for an int, unknown keys, a name both varied and fixed).
+  // Throws InputError naming the file, the line and the problem (empty space, reversed bounds,
+  // non-integer bounds for an int, unknown keys or parameter names, a parameter that is not a
+  // number — booleans and strings cannot be searched —, an integer parameter declared real, a
+  // name both varied and fixed). An integer parameter without `type` is searched as int.
   static SearchSpace FromYaml(const std::string& path);
 
   // Rejects an empty space, reversed or non-finite bounds, integer dimensions with
@@ -48,6 +53,7 @@ struct SearchSpace {
   void Validate(const std::string& source) const;
 
   std::size_t size() const { return dimensions.size(); }
+  std::size_t LineOf(const std::string& name) const;
   std::size_t integer_count() const;
   // The fixed values plus the decision vector's values, by name. Integer genes are
   // rounded (they already are, after NSGA-III's repair).
@@ -57,5 +63,10 @@ struct SearchSpace {
   // A stable fingerprint of the space (names, bounds, types, fixed values) for --resume checks.
   std::string Fingerprint() const;
 };
+
+// Refuses, before any work, a space whose bounds or fixed values the engine would reject on top
+// of `base` (e.g. g = 0, a negative distance): each bound is tried with the fixed values,
+// validated as one set. InputError names `source`, the line and the rule.
+void CheckSpaceAgainst(const SearchSpace& space, const slam::MapperParams& base, const std::string& source);
 
 }  // namespace slamtune::optim

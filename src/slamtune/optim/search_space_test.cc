@@ -1,5 +1,6 @@
 #include "slamtune/optim/search_space.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -24,6 +25,17 @@ std::string ErrorOf(const std::string& text) {
   }
   return "";
 }
+
+InputError ErrorFrom(const std::string& name, const std::string& text) {
+  try {
+    SearchSpace::FromYaml(WriteTemp(name, text));
+  } catch (const InputError& e) {
+    return e;
+  }
+  return InputError("no error");
+}
+std::string MessageOf(const std::string& name, const std::string& text) { return ErrorFrom(name, text).message(); }
+std::size_t ErrorLine(const std::string& name, const std::string& text) { return ErrorFrom(name, text).line(); }
 
 TEST(SearchSpace, PaperDefaultIsRealThenInteger) {
   const SearchSpace s = SearchSpace::PaperDefault();
@@ -53,6 +65,46 @@ TEST(SearchSpace, AroundBaseContainsTheBaseAndFixesNothing) {
   EXPECT_NO_THROW(narrow.Validate("around base"));
 }
 
+TEST(SearchSpace, RefusesWhatCannotBeSearchedNamingTheLine) {
+  EXPECT_EQ(MessageOf("bool", "vary:\n  do_loop_closing: {min: 0, max: 1}\n"),
+            "'do_loop_closing' is a bool parameter: only numbers can be searched (set it with fix: or --set)");
+  EXPECT_EQ(MessageOf("intreal", "vary:\n  loop_match_minimum_chain_size: {min: 3, max: 12, type: real}\n"),
+            "'loop_match_minimum_chain_size' is an integer parameter: its type must be int");
+  EXPECT_EQ(MessageOf("typo", "vary:\n  loop_search_maximum_distanse: {min: 2, max: 6}\n"),
+            "unknown mapper parameter 'loop_search_maximum_distanse' (did you mean 'loop_search_maximum_distance'?)");
+  EXPECT_EQ(ErrorLine("typo2", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n  minimum_travel: 0.1\n"),
+            4u);
+  // An integer parameter without a type is searched as an integer.
+  const SearchSpace s = SearchSpace::FromYaml(WriteTemp("inttype", "vary:\n  scan_buffer_size: {min: 5, max: 40}\n"));
+  EXPECT_TRUE(s.dimensions[0].integer);
+}
+
+TEST(SearchSpace, CheckAgainstTheBaseNamesTheValueAndLine) {
+  const std::string path = WriteTemp("against", "vary:\n  loop_search_maximum_distance: {min: -1, max: 6}\n");
+  const SearchSpace neg = SearchSpace::FromYaml(path);
+  try {
+    CheckSpaceAgainst(neg, slam::MapperParams{}, path);
+    FAIL() << "a negative r was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_THAT(e.message(), ::testing::HasSubstr("loop_search_maximum_distance = -1 is out of range"));
+  }
+  const std::string g0 = WriteTemp("g0", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n"
+                                         "  loop_match_minimum_chain_size: 0\n");
+  try {
+    CheckSpaceAgainst(SearchSpace::FromYaml(g0), slam::MapperParams{}, g0);
+    FAIL() << "g = 0 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 4u);
+  }
+  // Fixed values that only fit together with the varied one are taken.
+  const std::string matcher = WriteTemp("matcher", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n"
+                                                   "  correlation_search_space_dimension: 0.6\n"
+                                                   "  correlation_search_space_resolution: 0.1\n"
+                                                   "  correlation_search_space_smear_deviation: 0.2\n");
+  EXPECT_NO_THROW(CheckSpaceAgainst(SearchSpace::FromYaml(matcher), slam::MapperParams{}, matcher));
+}
+
 TEST(SearchSpace, YamlOrdersIntegersLastAndKeepsFixed) {
   const SearchSpace s = SearchSpace::FromYaml(WriteTemp("ok", R"(
 vary:
@@ -74,12 +126,12 @@ TEST(SearchSpace, RejectsBadSpacesWithReadableMessages) {
   EXPECT_NE(ErrorOf("vary: {}\n").find("search space is empty"), std::string::npos);
   EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 6, max: 2}\n").find("bounds reversed"),
             std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  g: {min: 1.5, max: 4, type: int}\n").find("whole-number bounds"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  r: {min: 1, max: 4}\nextra: 1\n").find("unknown key 'extra'"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  r: {min: 1, max: 4, step: 1}\n").find("unknown key 'step'"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  r: {min: 1, max: 4}\nfix:\n  r: 2\n").find("both varied and fixed"),
+  EXPECT_NE(ErrorOf("vary:\n  loop_match_minimum_chain_size: {min: 1.5, max: 4, type: int}\n").find("whole-number bounds"), std::string::npos);
+  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nextra: 1\n").find("unknown key 'extra'"), std::string::npos);
+  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4, step: 1}\n").find("unknown key 'step'"), std::string::npos);
+  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nfix:\n  loop_search_maximum_distance: 2\n").find("both varied and fixed"),
             std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  r: {min: a, max: 4}\n").find("r.min must be a number"), std::string::npos);
+  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: a, max: 4}\n").find("loop_search_maximum_distance.min must be a number"), std::string::npos);
 }
 
 TEST(SearchSpace, KeyIsCanonicalAndExact) {

@@ -42,7 +42,7 @@ slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::Mappe
 
 slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment) const {
   slam::MapperParams params = base;
-  for (const auto& [name, value] : assignment) slam::SetNumeric(params, name, value);
+  slam::SetNumerics(params, assignment);
   return params;
 }
 
@@ -89,6 +89,12 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
     record.rot_mean_deg = error.rot_mean_deg;
     record.rot_std_deg = error.rot_std_deg;
     record.relations_used = static_cast<int>(error.relations_used);
+  }
+  if (quality.occupied_cells == 0) {
+    // Nothing to score: an empty map would win every objective.
+    record.status = "failed";
+    record.reason = "the map has no occupied cell (no reading reached it: min_laser_range at or above the range "
+                    "threshold?)";
   }
   record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (run_out != nullptr) *run_out = std::move(run);

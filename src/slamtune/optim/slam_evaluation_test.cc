@@ -188,6 +188,18 @@ std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::si
   return log;
 }
 
+// A map no reading reached would win every objective: it is a failed run, with the reason.
+TEST(SlamEvaluation, AnEmptyMapIsAFailedRun) {
+  SlamEvaluationContext context;
+  context.log = WorldSlice("office", 200);
+  context.base.min_laser_range = 30.0;  // above every reading
+  const EvaluationRecord r = EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}});
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_NE(r.reason.find("no occupied cell"), std::string::npos) << r.reason;
+  context.base.min_laser_range = 0.0;
+  EXPECT_EQ(EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}}).status, "ok");
+}
+
 TEST(SlamEvaluationShared, OfficeWorldResultsIdenticalWithTheCache) {
   CheckSharingChangesNothing(WorldSlice("office", 1200), 6, 11, "office", 3);
 }

@@ -130,9 +130,45 @@ const Row* FindRow(std::string_view name) {
   return nullptr;
 }
 
+std::size_t EditDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string UnknownParamMessage(std::string_view name) {
+  std::string closest;
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  for (const ParamInfo& info : ParamTable()) {
+    const std::size_t d = EditDistance(name, info.name);
+    if (d < best) {
+      best = d;
+      closest = info.name;
+    }
+  }
+  // A suggestion only when it is a plausible typo (a few letters off).
+  if (best <= std::max<std::size_t>(2, name.size() / 5)) {
+    return fmt::format("unknown mapper parameter '{}' (did you mean '{}'?)", name, closest);
+  }
+  return fmt::format("unknown mapper parameter '{}'", name);
+}
+
+namespace {
+
 const Row& RequireRow(std::string_view name) {
   const Row* row = FindRow(name);
-  if (row == nullptr) throw InputError(fmt::format("unknown mapper parameter '{}'", name));
+  if (row == nullptr) throw InputError(UnknownParamMessage(name));
   return *row;
 }
 
@@ -345,9 +381,8 @@ double GetNumeric(const MapperParams& params, std::string_view name) {
   throw InputError(fmt::format("mapper parameter {} is a string, not a number", name));
 }
 
-void SetNumeric(MapperParams& params, std::string_view name, double value) {
+void AssignNumeric(MapperParams& copy, std::string_view name, double value) {
   const Row& row = RequireRow(name);
-  MapperParams copy = params;
   const std::string shown = fmt::format("{}", value);
   std::visit(
       [&](auto ptr) {
@@ -365,14 +400,25 @@ void SetNumeric(MapperParams& params, std::string_view name, double value) {
         }
       },
       row.member);
+}
+
+void SetNumeric(MapperParams& params, std::string_view name, double value) {
+  MapperParams copy = params;
+  AssignNumeric(copy, name, value);
   copy.Validate();
   params = copy;
 }
 
-void SetFromString(MapperParams& params, std::string_view name, std::string_view text) {
+void SetNumerics(MapperParams& params, const std::map<std::string, double>& values) {
+  MapperParams copy = params;
+  for (const auto& [name, value] : values) AssignNumeric(copy, name, value);
+  copy.Validate();
+  params = copy;
+}
+
+void AssignFromString(MapperParams& copy, std::string_view name, std::string_view text) {
   const Row& row = RequireRow(name);
   text = Trim(text);
-  MapperParams copy = params;
   std::visit(
       [&](auto ptr) {
         using T = std::remove_reference_t<decltype(copy.*ptr)>;
@@ -388,20 +434,38 @@ void SetFromString(MapperParams& params, std::string_view name, std::string_view
             throw InputError(fmt::format("mapper parameter {} = '{}' is not a number ({} expected, {})", name, text,
                                          ParamTypeName(row.info.type), row.info.rule));
           }
-          SetNumeric(copy, name, v);
+          AssignNumeric(copy, name, v);
         }
       },
       row.member);
+}
+
+void SetFromString(MapperParams& params, std::string_view name, std::string_view text) {
+  MapperParams copy = params;
+  AssignFromString(copy, name, text);
   copy.Validate();
   params = copy;
 }
 
-void ApplyOverride(MapperParams& params, std::string_view assignment) {
+namespace {
+
+void AssignOverride(MapperParams& copy, std::string_view assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos) {
     throw InputError(fmt::format("parameter override '{}' must have the form name=value", assignment));
   }
-  SetFromString(params, Trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+  AssignFromString(copy, Trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+}
+
+}  // namespace
+
+void ApplyOverride(MapperParams& params, std::string_view assignment) { ApplyOverrides(params, {std::string(assignment)}); }
+
+void ApplyOverrides(MapperParams& params, const std::vector<std::string>& assignments) {
+  MapperParams copy = params;
+  for (const std::string& a : assignments) AssignOverride(copy, a);
+  copy.Validate();
+  params = copy;
 }
 
 }  // namespace slamtune::slam

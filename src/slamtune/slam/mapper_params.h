@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <map>
 #include <vector>
 
 #include "slamtune/slam/scan_matcher.h"
@@ -120,6 +121,8 @@ struct ParamInfo {
 const std::vector<ParamInfo>& ParamTable();
 // nullptr when unknown.
 const ParamInfo* FindParam(std::string_view name);
+// "unknown mapper parameter 'NAME'", with the closest known name when it looks like a typo.
+std::string UnknownParamMessage(std::string_view name);
 
 using ParamValue = std::variant<bool, int, double, std::string>;
 
@@ -137,10 +140,19 @@ double GetNumeric(const MapperParams& params, std::string_view name);
 // Sets a numeric parameter and validates the result; on error `params` is unchanged.
 // Ints must be integral, bools 0 or 1.
 void SetNumeric(MapperParams& params, std::string_view name, double value);
+// Sets several and validates once, after all: a consistent set (e.g. a matcher's dimension,
+// resolution and smear changed together) is taken whatever the order.
+void SetNumerics(MapperParams& params, const std::map<std::string, double>& values);
+// SetNumeric / SetFromString without validating the whole set: for readers that assign many
+// values and call Validate() after the last. Type and format are still checked.
+void AssignNumeric(MapperParams& params, std::string_view name, double value);
+void AssignFromString(MapperParams& params, std::string_view name, std::string_view text);
 // Sets any parameter from text ("true"/"false"/"1"/"0" for bools); validates; on error
 // `params` is unchanged.
 void SetFromString(MapperParams& params, std::string_view name, std::string_view text);
 // "name=value" override, as given to --set.
 void ApplyOverride(MapperParams& params, std::string_view assignment);
+// Several overrides, validated together after the last (see SetNumerics).
+void ApplyOverrides(MapperParams& params, const std::vector<std::string>& assignments);
 
 }  // namespace slamtune::slam

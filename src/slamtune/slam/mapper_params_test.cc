@@ -148,6 +148,38 @@ TEST(MapperParams, OverridesFromText) {
   EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "use_response_expansion=maybe"); }), HasSubstr("maybe"));
 }
 
+// A consistent set is taken whatever the order it is given in: the values are validated
+// together, after the last (one at a time, the first would be checked against the old others).
+TEST(MapperParams, ConsistentSetsAreValidatedTogether) {
+  const std::vector<std::string> sets = {"correlation_search_space_dimension=0.6",
+                                         "correlation_search_space_resolution=0.1",
+                                         "correlation_search_space_smear_deviation=0.2"};
+  MapperParams one_by_one;
+  ApplyOverride(one_by_one, sets[0]);
+  EXPECT_THROW(ApplyOverride(one_by_one, sets[1]), InputError) << "the old smear 0.03 is below 0.5 x 0.1";
+  MapperParams p;
+  ApplyOverrides(p, sets);
+  EXPECT_EQ(p.correlation_search_space_dimension, 0.6);
+  EXPECT_EQ(p.correlation_search_space_resolution, 0.1);
+  EXPECT_EQ(p.correlation_search_space_smear_deviation, 0.2);
+  MapperParams q;
+  SetNumerics(q, {{"correlation_search_space_smear_deviation", 0.2},
+                  {"correlation_search_space_resolution", 0.1},
+                  {"correlation_search_space_dimension", 0.6}});
+  EXPECT_EQ(q, p);
+  // An inconsistent set is still refused, and nothing is changed.
+  MapperParams r;
+  EXPECT_THROW(ApplyOverrides(r, {"correlation_search_space_resolution=0.1"}), InputError);
+  EXPECT_EQ(r, MapperParams{});
+}
+
+TEST(MapperParams, UnknownNamesGetTheClosestKnownOne) {
+  MapperParams p;
+  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "loop_search_maximum_distanse=3"); }),
+              HasSubstr("(did you mean 'loop_search_maximum_distance'?)"));
+  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "frobnicate=3"); }), ::testing::Not(HasSubstr("did you mean")));
+}
+
 TEST(MapperParams, NamedValuesCoverTheTableAndRoundTrip) {
   const MapperParams source = MapperParams::Preset("slam_toolbox");
   const auto values = ToNamedValues(source);

@@ -74,16 +74,16 @@ ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_t
         if (have_resolution) {
           report.ignored.push_back(key);
         } else {
-          SetFromString(copy, "resolution", text);
+          AssignFromString(copy, "resolution", text);
           report.applied.push_back("resolution");
         }
       } else if (FindParam(key) != nullptr) {
-        SetFromString(copy, key, text);
+        AssignFromString(copy, key, text);
         report.applied.push_back(key);
       } else if (IsNodeOnlyKey(key)) {
         report.ignored.push_back(key);
       } else {
-        throw InputError(fmt::format("unknown mapper parameter '{}'", key));
+        throw InputError(UnknownParamMessage(key));
       }
     } catch (const InputError& e) {
       throw InputError(source, line, e.message());

@@ -79,5 +79,15 @@ TEST(ParamsYaml, RejectsUnknownWrongTypeAndOutOfRange) {
   EXPECT_EQ(p, before);  // nothing applied on error
 }
 
+TEST(ParamsYaml, AConsistentMatcherSetIsTakenInAnyOrder) {
+  MapperParams p;
+  ApplyParamsYaml(p,
+                  "correlation_search_space_dimension: 0.6\ncorrelation_search_space_resolution: 0.1\n"
+                  "correlation_search_space_smear_deviation: 0.2\n",
+                  "matcher.yaml");
+  EXPECT_EQ(p.correlation_search_space_dimension, 0.6);
+  EXPECT_EQ(p.correlation_search_space_resolution, 0.1);
+}
+
 }  // namespace
 }  // namespace slamtune::slam

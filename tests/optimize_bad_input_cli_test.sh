@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Bad search spaces and parameter sets for `slamtune optimize`, each one line
+# `slamtune: error: FILE:LINE: what` and exit 2 before any SLAM run; consistent parameter sets
+# accepted whatever their order; runs that produce an empty map never recommended.
+# Usage: optimize_bad_input_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
+set -u
+bin=${1:?usage: optimize_bad_input_cli_test.sh SLAMTUNE_BINARY}
+[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_opt_bad.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+tiny=(--population 4 --generations 1 --divisions 2 --jobs 2 --quiet)
+
+# expect_line EXPECTED_STDERR_LINE CMD...: exit 2, exactly that one line on stderr, no run folder left.
+n=0
+expect_line() {
+  local expected=$1; shift
+  n=$((n + 1))
+  local err; err=$("$@" --out "$work/out$n" "${tiny[@]}" 2>&1 >/dev/null); local rc=$?
+  [[ $rc -eq 2 ]] || fail "exit $rc (want 2): $*"
+  [[ "$err" == "$expected" ]] || fail "$*: got '$err', want '$expected'"
+  [[ ! -e "$work/out$n/run.sqlite" ]] || fail "$*: a run started"
+}
+space() { printf '%b' "$2" > "$work/$1.yaml"; echo "$work/$1.yaml"; }
+
+# Parameters that cannot be searched, and search spaces the engine would refuse.
+s=$(space bool 'vary:\n  do_loop_closing: {min: 0, max: 1}\n')
+expect_line "slamtune: error: $s:2: 'do_loop_closing' is a bool parameter: only numbers can be searched (set it with fix: or --set)" \
+  "$bin" optimize --space "$s"
+s=$(space intreal 'vary:\n  loop_match_minimum_chain_size: {min: 3, max: 12, type: real}\n')
+expect_line "slamtune: error: $s:2: 'loop_match_minimum_chain_size' is an integer parameter: its type must be int" \
+  "$bin" optimize --space "$s"
+s=$(space typo 'vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n  loop_match_minimum_respons_coarse: 0.7\n')
+expect_line "slamtune: error: $s:4: unknown mapper parameter 'loop_match_minimum_respons_coarse' (did you mean 'loop_match_minimum_response_coarse'?)" \
+  "$bin" optimize --space "$s"
+s=$(space negative 'vary:\n  loop_search_maximum_distance: {min: -1, max: 6}\n')
+expect_line "slamtune: error: $s:2: mapper parameter loop_search_maximum_distance = -1 is out of range: must be >= 0.001 (smaller radii make a scan its own loop candidate, spec §6.2 item 3)" \
+  "$bin" optimize --space "$s"
+s=$(space gzero 'vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n  loop_match_minimum_chain_size: 0\n')
+expect_line "slamtune: error: $s:4: mapper parameter loop_match_minimum_chain_size = 0 is out of range: must be an integer >= 1" \
+  "$bin" optimize --space "$s"
+expect_line "slamtune: error: unknown mapper parameter 'loop_search_maximum_distanse' (did you mean 'loop_search_maximum_distance'?)" \
+  "$bin" optimize --set loop_search_maximum_distanse=3
+
+# A consistent set is taken whatever the order, from --set, --params and a space's fix: alike.
+matcher=(correlation_search_space_smear_deviation=0.2 correlation_search_space_resolution=0.1
+         correlation_search_space_dimension=0.6)
+"$bin" optimize --out "$work/set" "${tiny[@]}" --set "${matcher[0]}" --set "${matcher[1]}" --set "${matcher[2]}" \
+  >/dev/null 2>"$work/set.err" || fail "--set of a consistent matcher set refused: $(cat "$work/set.err")"
+printf '%s\n' "${matcher[@]}" | sed 's/=/: /' > "$work/matcher.yaml"
+"$bin" optimize --out "$work/params" "${tiny[@]}" --params "$work/matcher.yaml" >/dev/null 2>"$work/params.err" ||
+  fail "--params of a consistent matcher set refused: $(cat "$work/params.err")"
+{ printf 'vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n'; printf '  %s\n' "${matcher[@]}" | sed 's/=/: /'; } \
+  > "$work/fix.yaml"
+"$bin" optimize --out "$work/fix" "${tiny[@]}" --space "$work/fix.yaml" >/dev/null 2>"$work/fix.err" ||
+  fail "fix: of a consistent matcher set refused: $(cat "$work/fix.err")"
+
+# Readings all filtered out give an empty map: such runs fail, and one is never recommended.
+s=$(space minrange 'vary:\n  min_laser_range: {min: 0, max: 37}\n')
+"$bin" optimize --space "$s" --out "$work/minrange" --population 8 --generations 2 --divisions 3 --jobs 2 --quiet \
+  >/dev/null 2>"$work/minrange.err" || fail "optimize over min_laser_range failed: $(cat "$work/minrange.err")"
+grep -q ',failed,the map has no occupied cell' "$work/minrange/evaluations.csv" ||
+  fail "no run with an empty map was marked failed"
+rec=$(sed -n '/"recommended": {/,/"status"/p' "$work/minrange/results.json" | grep '"status"')
+[[ "$rec" == *'"ok"'* ]] || fail "an empty map was recommended: $rec"
+
+if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
+echo "optimize bad input: all checks passed"
