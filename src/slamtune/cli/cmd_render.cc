@@ -1,6 +1,7 @@
 // `slamtune render LOG --poses TRAJECTORY|odometry --out DIR`: the occupancy map of a log drawn
 // from given poses (a simulated world's truth.txt, another system's trajectory, or raw
 // odometry), with its map metrics — e.g. to check that the metrics prefer the true map.
+// map.pgm, map.yaml and map.png are written whole or not at all (io/map_image.h).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -9,6 +10,8 @@
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/common/error.h"
+#include "slamtune/common/output_dir.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/cli/log_input.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
@@ -27,16 +30,14 @@ struct RenderArgs {
 
 int RunRender(const RenderArgs& args) {
   slam::MapperParams params = args.preset.empty() ? slam::MapperParams{} : slam::MapperParams::Preset(args.preset);
-  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
+  if (!args.params_file.empty()) slam::ApplyParamsYaml(params, ReadTextFile(args.params_file), args.params_file);
   for (const auto& s : args.sets) slam::ApplyOverride(params, s);
+  EnsureOutputDir(args.out);  // before the work
   const io::LaserLog log = ReadLog(args.log, args.input);
   for (const std::string& line : io::DescribeLogInput(log)) std::fprintf(stderr, "%s\n", line.c_str());
   const auto poses = args.poses == "odometry" ? slam::OdometryTrajectory(log) : io::ReadTrajectory(args.poses);
   slam::PoseMapSummary summary;
   const io::MapImage map = slam::MapFromPoses(log, poses, params, &summary);
-  std::error_code ec;
-  std::filesystem::create_directories(args.out, ec);
-  if (ec) throw InputError(args.out, 0, "cannot create output folder: " + ec.message());
   io::WriteMapServer(map, (std::filesystem::path(args.out) / "map.yaml").string());
   io::WritePng(map, (std::filesystem::path(args.out) / "map.png").string());
   const metrics::MapQuality q = metrics::ComputeMapQuality(map);

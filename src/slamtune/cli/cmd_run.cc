@@ -1,7 +1,8 @@
 // `slamtune run LOG --out DIR`: one Karto SLAM run on a CARMEN log (slam/log_runner.h) with
 // the map (map.pgm + map.yaml as map_saver writes them, map.png), the trajectory of every log
 // scan, the loop closures, and run.json (counts, timing, parameters, map metrics and, with
-// --relations, the Freiburg relation error).
+// --relations, the Freiburg relation error). The output folder is checked before the run and
+// every file is written whole or not at all (atomic_file.h).
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
@@ -10,15 +11,17 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/log_input.h"
+#include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
+#include "slamtune/common/output_dir.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/relations.h"
@@ -61,21 +64,20 @@ double PeakMemoryMb() {
 }
 
 void WriteLoopClosuresCsv(const std::string& path, const slam::RunSummary& s) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, 0, "cannot write");
-  out << "log_index,node,chain_first,chain_last,linked_to,coarse_response,fine_response,coarse_var_xx,"
-         "coarse_var_xy,coarse_var_yy\n";
+  std::string csv =
+      "log_index,node,chain_first,chain_last,linked_to,coarse_response,fine_response,coarse_var_xx,"
+      "coarse_var_xy,coarse_var_yy\n";
   for (const slam::LoopClosureRecord& l : s.loop_closures) {
-    out << fmt::format("{},{},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", l.log_index, l.node, l.chain_first,
+    csv += fmt::format("{},{},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", l.log_index, l.node, l.chain_first,
                        l.chain_last, l.linked_to, l.coarse_response, l.fine_response, l.coarse_var_xx, l.coarse_var_xy,
                        l.coarse_var_yy);
   }
-  if (!out) throw InputError(path, 0, "write failed");
+  WriteFileAtomically(path, csv);
 }
 
 slam::MapperParams ResolveParams(const RunArgs& args) {
   slam::MapperParams params = slam::MapperParams::Preset(args.preset);
-  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
+  if (!args.params_file.empty()) slam::ApplyParamsYaml(params, ReadTextFile(args.params_file), args.params_file);
   for (const std::string& s : args.sets) slam::ApplyOverride(params, s);
   if (args.no_loop_closure) params.do_loop_closing = false;
   params.Validate();
@@ -86,7 +88,7 @@ int Run(const RunArgs& args) {
   const slam::MapperParams params = ResolveParams(args);
   std::vector<io::Relation> relations;
   if (!args.relations.empty()) relations = io::ReadRelations(args.relations);  // fail before the long run
-  std::filesystem::create_directories(args.out);
+  EnsureOutputDir(args.out);
   const auto file = [&](const char* name) { return (std::filesystem::path(args.out) / name).string(); };
 
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto, 10.0);
@@ -186,9 +188,7 @@ int Run(const RunArgs& args) {
                           e.trans_std_m, e.rot_mean_deg, e.rot_std_deg, e.relations_used);
   }
   run["peak_memory_mb"] = PeakMemoryMb();
-  std::ofstream json_out(file("run.json"));
-  if (!json_out) throw InputError(file("run.json"), 0, "cannot write");
-  json_out << run.dump(2) << "\n";
+  WriteFileAtomically(file("run.json"), run.dump(2) + "\n");
 
   progress.Finish();
   const std::string dropped =

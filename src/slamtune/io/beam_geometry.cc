@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "slamtune/common/error.h"
 
 namespace slamtune::io {
@@ -34,6 +36,22 @@ std::vector<BeamReport::Seen> DistinctGeometries(const LaserLog& log) {
 }
 
 }  // namespace
+
+std::string BeamAnglesProblem(double first, double increment, std::size_t n) {
+  constexpr const char* kHint = "angles must be radians (written in degrees?)";
+  const double span = n > 1 ? increment * static_cast<double>(n - 1) : 0.0;
+  if (!(std::fabs(first) <= kMaxBeamAngle)) {
+    return fmt::format("first beam at {} rad is beyond +-2pi: {}", first, kHint);
+  }
+  if (!(std::fabs(span) <= kMaxBeamAngle)) {
+    return fmt::format("{} beams {} rad apart span {} rad ({:.0f} deg), more than a full turn: {}", n, increment, span,
+                       RadToDeg(span), kHint);
+  }
+  if (!(std::fabs(first + span) <= kMaxBeamAngle)) {
+    return fmt::format("last beam at {} rad is beyond +-2pi: {}", first + span, kHint);
+  }
+  return "";
+}
 
 const char* BeamPolicyName(BeamPolicy policy) {
   switch (policy) {

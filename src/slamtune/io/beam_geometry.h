@@ -24,11 +24,27 @@
 #include <string>
 #include <vector>
 
+#include "slamtune/common/karto_math.h"
 #include "slamtune/io/laser_log.h"
 
 namespace slamtune::io {
 
 inline constexpr double kSameAngleTolerance = 1e-6;  // rad
+
+// The beam angles a laser can mean (rad): every beam within +-kMaxBeamAngle and a field of view
+// of at most kMaxBeamAngle, a full turn plus kFullTurnTolerance (6-decimal and float32 rounding,
+// a driver's extra step closing the circle). Beyond that the values are degrees written where
+// radians belong, or corrupt: the CARMEN and recording readers refuse them, naming the record,
+// rather than draw a starburst map.
+inline constexpr double kFullTurnTolerance = 0.01;
+inline constexpr double kMaxBeamAngle = kTwoPi + kFullTurnTolerance;
+// A CARMEN fov may be (n - 1) or n angular steps; beyond kFovTolerance plus 1 % of the beams'
+// span on either side it contradicts the steps (carmen_records.cc).
+inline constexpr double kFovTolerance = 0.01;  // rad
+
+// Empty when beams first, first + increment, ..., first + (n - 1) * increment are angles a laser
+// can mean (above); otherwise what is wrong, e.g. "first beam at -90 rad is beyond +-2pi".
+std::string BeamAnglesProblem(double first, double increment, std::size_t n);
 
 const char* BeamPolicyName(BeamPolicy policy);  // "resample", "strict"
 // "resample" / "strict"; InputError naming the option otherwise.

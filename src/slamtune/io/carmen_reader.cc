@@ -1,5 +1,7 @@
 #include "slamtune/io/carmen_reader.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -138,6 +140,8 @@ Pose2 InterpolateOdometry(const std::vector<OdomRecord>& by_time, double t) {
                NormalizeAngle(a.pose.theta + s * NormalizeAngle(b.pose.theta - a.pose.theta))};
 }
 
+// Poses RAWLASER scans from the ODOM records; scans outside the records' time span are left
+// out and counted (LaserLog::scans_without_odometry) rather than clamped to the nearest record.
 void PlaceRawLaserScans(ReadState* st) {
   LaserLog& log = st->log;
   if (st->latest_raw_time == -std::numeric_limits<double>::infinity()) return;
@@ -148,15 +152,34 @@ void PlaceRawLaserScans(ReadState* st) {
   std::vector<OdomRecord> by_time = log.odometry;
   std::stable_sort(by_time.begin(), by_time.end(),
                    [](const OdomRecord& a, const OdomRecord& b) { return a.ipc_time < b.ipc_time; });
+  const double first_odom = by_time.front().ipc_time, last_odom = by_time.back().ipc_time;
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    if (st->raw_digit[i] == 0) continue;
-    const std::string prefix = RawLaserParamPrefix(st->raw_digit[i]);
-    const Pose2 offset{ParamNumber(log, prefix + "_offset"), ParamNumber(log, prefix + "_side_offset"),
-                       ParamNumber(log, prefix + "_angular_offset")};
     LaserScanRecord& scan = log.scans[i];
-    scan.robot_pose = InterpolateOdometry(by_time, scan.ipc_time);
-    scan.laser_offset = offset;
-    scan.laser_pose = Compose(scan.robot_pose, offset);
+    if (st->raw_digit[i] != 0) {
+      if (scan.ipc_time < first_odom || scan.ipc_time > last_odom) {
+        if (log.scans_without_odometry++ == 0) {
+          log.first_scan_without_odometry = fmt::format("line {} at {} s; ODOM {} .. {} s", scan.line, scan.ipc_time,
+                                                        first_odom, last_odom);
+        }
+        continue;
+      }
+      const std::string prefix = RawLaserParamPrefix(st->raw_digit[i]);
+      const Pose2 offset{ParamNumber(log, prefix + "_offset"), ParamNumber(log, prefix + "_side_offset"),
+                         ParamNumber(log, prefix + "_angular_offset")};
+      scan.robot_pose = InterpolateOdometry(by_time, scan.ipc_time);
+      scan.laser_offset = offset;
+      scan.laser_pose = Compose(scan.robot_pose, offset);
+    }
+    if (kept != i) log.scans[kept] = std::move(scan);
+    ++kept;
+  }
+  log.scans.resize(kept);
+  if (log.scans.empty()) {
+    throw InputError(log.path, 0,
+                     fmt::format("none of the {} RAWLASER scans lies within the time span of the ODOM records, so "
+                                 "none can be posed (first: {})",
+                                 log.scans_without_odometry, log.first_scan_without_odometry));
   }
 }
 

@@ -15,10 +15,14 @@
 //       n r1..rn m rem1..remm laser_x laser_y laser_theta robot_x robot_y robot_theta tv rv
 //       forward_safety_dist side_safety_dist turn_axis ipc host logger
 //       Beam i at start_angle + i * angular_res; per-scan max_range from the record.
+//       Angles are radians: a start_angle or fov beyond a full turn, beams spanning more, or a
+//       fov that contradicts n readings at angular_res (it must be (n - 1) or n steps, within
+//       beam_geometry.h's tolerance) is a malformed record, e.g. degrees written as radians.
 //   RAWLASER1..4 as ROBOTLASER1 up to the remissions, then ipc host logger: no pose. The robot
 //       pose is interpolated linearly in ipc time between the ODOM records that bracket the
-//       scan (clamped to the first / last ODOM outside their span; heading interpolated along
-//       the shorter arc); laser pose = robot (+) offset, the offset taken from the PARAMs
+//       scan (heading along the shorter arc). Scans before the first or after the last ODOM
+//       have no pose: they are left out and counted (LaserLog::scans_without_odometry, printed
+//       with the log's input description), never clamped; laser pose = robot (+) offset, the offset taken from the PARAMs
 //       robot_<L>_offset, robot_<L>_side_offset, robot_<L>_angular_offset (m, m, rad; zero when
 //       absent) with L = frontlaser, rearlaser, laser3, laser4 for RAWLASER1..4. A log with
 //       RAWLASER scans and no ODOM record is an error.
@@ -53,7 +57,8 @@
 // e.g. "intel.clf:812: FLASER declares 180 readings but has 179 numbers before the pose".
 // With LogReadOptions::lenient such records are skipped and counted (skipped_records, the first
 // reasons in skipped_reasons). Always fatal: unreadable path, truncated or corrupt gzip data,
-// an empty file, a file without laser scans, RAWLASER scans without ODOM.
+// an empty file, a file without laser scans, RAWLASER scans without ODOM or none within its span.
+// A UTF-8 byte-order mark at the start of the file is ignored (line_reader.h).
 #pragma once
 
 #include <istream>

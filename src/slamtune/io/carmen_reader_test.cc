@@ -137,9 +137,10 @@ TEST(CarmenReaderTest, RawLaserPoseInterpolatedFromOdometryWithParamOffset) {
       "ODOM 0 0 0 0 0 0 10.0 nohost 10.0\n"
       "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 10.5 nohost 10.5\n"
       "ODOM 2 4 1.0 0 0 0 11.0 nohost 11.0\n"
-      "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 12.0 nohost 12.0\n";
+      "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 10.75 nohost 10.75\n";
   const LaserLog log = ReadText(text);
   ASSERT_EQ(log.scans.size(), 2u);
+  EXPECT_EQ(log.scans_without_odometry, 0u);
   EXPECT_EQ(log.scans[0].kind, RecordKind::kRawLaser);
   const Pose2 robot = log.scans[0].robot_pose;
   EXPECT_NEAR(robot.x, 1.0, 1e-12);
@@ -150,8 +151,6 @@ TEST(CarmenReaderTest, RawLaserPoseInterpolatedFromOdometryWithParamOffset) {
   EXPECT_NEAR(laser.x, 1.0 + 0.2 * std::cos(0.5), 1e-12);
   EXPECT_NEAR(laser.y, 2.0 + 0.2 * std::sin(0.5), 1e-12);
   EXPECT_NEAR(laser.theta, 0.6, 1e-12);
-  // After the last ODOM: clamped to it.
-  EXPECT_EQ(log.scans[1].robot_pose, (Pose2{2, 4, 1.0}));
   EXPECT_EQ(log.no_return_rule, "RAWLASER1 max_range");
   EXPECT_EQ(log.record_counts.at("RAWLASER1"), 2u);
 }
@@ -166,8 +165,67 @@ TEST(CarmenReaderTest, RawLaserHeadingInterpolatesAcrossPi) {
 }
 
 TEST(CarmenReaderTest, RawLaserWithoutOdometryIsAnError) {
-  EXPECT_EQ(ErrorOf("RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 2 1 2 0 10.5 nohost 10.5\n"),
+  EXPECT_EQ(ErrorOf("RAWLASER1 0 -1.5 1.0 1.0 20.0 0.01 0 2 1 2 0 10.5 nohost 10.5\n"),
             "mem.clf: RAWLASER scans carry no pose and the log has no ODOM record to interpolate one from");
+}
+
+TEST(CarmenReaderTest, RawLaserScansOutsideTheOdometrySpanAreCountedNotClamped) {
+  const std::string raw = "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 ";
+  std::string text = raw + "9.5 h 9.5\nODOM 0 0 0 0 0 0 10.0 h 10\n" + raw + "10.5 h 10.5\nODOM 1 0 0 0 0 0 11.0 h 11\n";
+  for (int k = 0; k < 297; ++k) text += raw + std::to_string(12 + k) + " h 1\n";  // the log's ODOM stopped
+  const LaserLog log = ReadText(text);
+  ASSERT_EQ(log.scans.size(), 1u);
+  EXPECT_EQ(log.scans[0].ipc_time, 10.5);
+  EXPECT_EQ(log.scans_without_odometry, 298u);
+  EXPECT_EQ(log.first_scan_without_odometry, "line 1 at 9.5 s; ODOM 10 .. 11 s");
+  EXPECT_EQ(log.record_counts.at("RAWLASER1"), 299u);
+}
+
+TEST(CarmenReaderTest, NoRawLaserScanWithinTheOdometrySpanIsAnError) {
+  const std::string raw = "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 ";
+  EXPECT_EQ(ErrorOf("ODOM 0 0 0 0 0 0 10.0 h 10\n" + raw + "12 h 12\n" + raw + "13 h 13\n"),
+            "mem.clf: none of the 2 RAWLASER scans lies within the time span of the ODOM records, so none can be "
+            "posed (first: line 2 at 12 s; ODOM 10 .. 10 s)");
+}
+
+TEST(CarmenReaderTest, ByteOrderMarkDoesNotDropTheFirstScan) {
+  const LaserLog log = ReadText("\xEF\xBB\xBF" + Flaser(1.0) + Flaser(2.0));
+  EXPECT_EQ(log.scans.size(), 2u);
+  EXPECT_EQ(log.record_counts.at("FLASER"), 2u);
+  EXPECT_EQ(log.unknown_records, 0u);
+}
+
+// ROBOTLASER1 with 181 readings: "ROBOTLASER1 0 START FOV RES 30 0.01 0 181 r.. 0 poses..".
+std::string RobotLaser181(const std::string& start, const std::string& fov, const std::string& res) {
+  std::string line = "ROBOTLASER1 0 " + start + " " + fov + " " + res + " 30 0.01 0 181";
+  for (int i = 0; i < 181; ++i) line += " 2.5";
+  return line + " 0 0 0 0 0 0 0 0 0 0 0 0 1.5 h 1.5\n";
+}
+
+TEST(CarmenReaderTest, RobotLaserAnglesInDegreesAreRefusedNamingTheField) {
+  EXPECT_EQ(ErrorOf(RobotLaser181("-90", "180", "1")),
+            "mem.clf:1: ROBOTLASER1 start_angle (field 3) -90 is beyond +-2pi: angles must be radians (written in "
+            "degrees?)");
+  EXPECT_EQ(ErrorOf("# header\n" + RobotLaser181("-1.570796", "100", "0.017453")),
+            "mem.clf:2: ROBOTLASER1 fov (field 4) 100 (5730 deg) is more than a full turn: angles must be radians "
+            "(written in degrees?)");
+  EXPECT_EQ(ErrorOf(RobotLaser181("-1.570796", "3.141593", "1")),
+            "mem.clf:1: ROBOTLASER1 angular_res (field 5): 181 beams 1 rad apart span 180 rad (10313 deg), more "
+            "than a full turn: angles must be radians (written in degrees?)");
+}
+
+TEST(CarmenReaderTest, RobotLaserFovThatContradictsTheStepsIsRefused) {
+  EXPECT_EQ(ErrorOf(RobotLaser181("-1.570796", "3.141593", "0.008727")),
+            "mem.clf:1: ROBOTLASER1 fov (field 4) 3.141593 rad contradicts 181 readings at angular_res 0.008727 rad "
+            "(they span 1.570860 rad)");
+  // (n - 1) and n steps both match a fov of pi: 181 and 180 readings at 1 degree.
+  EXPECT_EQ(ReadText(RobotLaser181("-1.570796", "3.141593", "0.017453")).scans.size(), 1u);
+  LogReadOptions lenient;
+  lenient.lenient = true;
+  const LaserLog log = ReadText(RobotLaser181("-1.570796", "3.141593", "0.017453") + RobotLaser181("-90", "180", "1"),
+                                lenient);
+  EXPECT_EQ(log.scans.size(), 1u);
+  EXPECT_EQ(log.skipped_records, 1u);
 }
 
 TEST(CarmenReaderTest, MaxScansStillReadsTheOdometryThatPlacesRawScans) {

@@ -1,7 +1,12 @@
 #include "slamtune/io/carmen_records.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
+
+#include "slamtune/common/karto_math.h"
+#include "slamtune/io/beam_geometry.h"
 
 #include "slamtune/io/carmen_reader.h"
 #include "slamtune/io/line_reader.h"
@@ -58,6 +63,30 @@ Pose2 ParsePose(const Fields& f, std::size_t i, std::string_view prefix) {
   return Pose2{Finite(f, i, p + "x"), Finite(f, i + 1, p + "y"), Finite(f, i + 2, p + "theta")};
 }
 
+// Refuses what no laser can mean (beam_geometry.h): start_angle or fov beyond a full turn, beams
+// spanning more, or a fov that contradicts n readings at angular_res (CARMEN loggers write
+// fov = (n - 1) * angular_res, some n * angular_res).
+void CheckGeometry(const Fields& f, double fov, std::size_t n, const LaserScanRecord& scan) {
+  constexpr const char* kHint = "angles must be radians (written in degrees?)";
+  if (std::fabs(scan.angle_min) > kMaxBeamAngle) {
+    throw CarmenRecordError(Where(f, 2, "start_angle") + " " + std::string(f[2]) + " is beyond +-2pi: " + kHint);
+  }
+  if (std::fabs(fov) > kMaxBeamAngle) {
+    throw CarmenRecordError(fmt::format("{} {} ({:.0f} deg) is more than a full turn: {}", Where(f, 3, "fov"), f[3],
+                                        RadToDeg(fov), kHint));
+  }
+  if (const std::string problem = BeamAnglesProblem(scan.angle_min, scan.angle_increment, n); !problem.empty()) {
+    throw CarmenRecordError(Where(f, 4, "angular_res") + ": " + problem);
+  }
+  if (n < 2) return;
+  const double steps = scan.angle_increment * static_cast<double>(n - 1);
+  const double tolerance = kFovTolerance + 0.01 * steps;
+  if (fov < steps - tolerance || fov > steps + scan.angle_increment + tolerance) {
+    throw CarmenRecordError(fmt::format("{} {} rad contradicts {} readings at angular_res {} rad (they span {:.6f} rad)",
+                                        Where(f, 3, "fov"), f[3], n, f[4], steps));
+  }
+}
+
 // Shared head of ROBOTLASER1 and RAWLASER1..4 up to the remissions. `tail` is the number of
 // fields after the remissions. Returns the index of the first field after the remissions.
 std::size_t ParseLaserHead(const Fields& f, std::size_t tail, LaserScanRecord* scan) {
@@ -69,7 +98,7 @@ std::size_t ParseLaserHead(const Fields& f, std::size_t tail, LaserScanRecord* s
   }
   Number(f, 1, "laser_type");
   scan->angle_min = Finite(f, 2, "start_angle");
-  Finite(f, 3, "fov");
+  const double fov = Finite(f, 3, "fov");
   scan->angle_increment = Finite(f, 4, "angular_res");
   scan->max_range = Finite(f, 5, "max_range");
   if (scan->max_range <= 0) throw CarmenRecordError(Where(f, 5, "max_range") + " must be positive: " + std::string(f[5]));
@@ -81,6 +110,7 @@ std::size_t ParseLaserHead(const Fields& f, std::size_t tail, LaserScanRecord* s
     throw CarmenRecordError(Where(f, 4, "angular_res") + " must be positive for " + std::to_string(n) +
                             " readings: " + std::string(f[4]));
   }
+  CheckGeometry(f, fov, n, *scan);
   if (f.size() < 10 + n) {
     throw CarmenRecordError(name + " declares " + std::to_string(n) + " readings but the line ends after " +
                             std::to_string(f.size() - 9) + " more fields");

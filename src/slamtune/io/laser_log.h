@@ -126,6 +126,11 @@ struct LaserLog {
   std::size_t unknown_records = 0;  // lines of unknown type, skipped
   std::size_t skipped_records = 0;  // malformed records skipped under --lenient
   std::vector<std::string> skipped_reasons;  // "LINE: reason" for the first few skipped
+  // RAWLASER scans outside the time span of the ODOM records: no pose to interpolate, so they
+  // are left out of `scans` (never posed by clamping) and counted here; the first one in
+  // words, e.g. "line 12 at 130.5 s; ODOM 100 .. 120 s".
+  std::size_t scans_without_odometry = 0;
+  std::string first_scan_without_odometry;
   // The no-return value assumed for the log (m) and how it was found ("--no-return",
   // "PARAM <name>", "<RECORD> max_range" e.g. "ROBOTLASER1 max_range", "maximum reading
   // cluster", "none"); the precedence is documented in carmen_reader.h.

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/text_file.h"
 
 namespace slamtune::io {
 namespace {
@@ -69,6 +70,7 @@ bool LineReader::Next(std::string_view* line) {
     if (length > 0 && start[length - 1] == '\r') --length;
     ++line_number_;
     *line = std::string_view(start, length);
+    if (line_number_ == 1) *line = StripUtf8Bom(*line);  // a Windows editor's byte-order mark
     return true;
   }
 }

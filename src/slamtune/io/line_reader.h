@@ -2,8 +2,10 @@
 // (see gzip_reader.h), plus the field splitting and number parsing they share.
 //
 // Lines are returned as views into an internal buffer (valid until the next call), without the
-// '\n' and without a trailing '\r'. Numbers are parsed with std::from_chars: locale-free, exact
-// (round-trip) and fast, which matters because the optimiser re-reads logs often.
+// '\n' and without a trailing '\r'. A UTF-8 byte-order mark before the first line (Windows
+// editors write one) is dropped, so the first record reads like the others. Numbers are parsed
+// with std::from_chars: locale-free, exact (round-trip) and fast, which matters because the
+// optimiser re-reads logs often.
 #pragma once
 
 #include <cstddef>

@@ -94,6 +94,18 @@ TEST(LineReaderTest, CrLfEmptyLinesAndALineLongerThanTheBuffer) {
   EXPECT_EQ(lines[3], "end");
 }
 
+TEST(LineReaderTest, ByteOrderMarkBeforeTheFirstLineIsDroppedPlainAndGzip) {
+  const std::string text = "\xEF\xBB\xBF" "FLASER 1 2\n\xEF\xBB\xBF" "kept\n";
+  for (const std::string& bytes : {text, Gzip(text)}) {
+    std::istringstream in(bytes);
+    LineReader reader(&in, "bom");
+    const auto lines = AllLines(reader);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "FLASER 1 2");
+    EXPECT_EQ(lines[1], "\xEF\xBB\xBF" "kept");  // only the file's start carries a mark
+  }
+}
+
 TEST(LineReaderTest, TruncatedGzipNamesTheLineBeingRead) {
   const std::string gz = Gzip(ManyLines(4000));
   std::istringstream in(gz.substr(0, gz.size() / 2));

@@ -138,6 +138,11 @@ std::vector<std::string> DescribeLogInput(const LaserLog& log) {
                                 b.scans_resampled, b.geometries[0].geometry.ToString(), b.readings_outside));
     }
   }
+  if (log.scans_without_odometry > 0) {
+    out.push_back(fmt::format("not used: {} RAWLASER scans outside the time span of the ODOM records, no pose to "
+                              "interpolate (first: {})",
+                              log.scans_without_odometry, log.first_scan_without_odometry));
+  }
   if (log.skipped_records > 0) {
     out.push_back(fmt::format("not used: {} malformed records, --lenient (first: {})", log.skipped_records,
                               log.skipped_reasons.empty() ? "-" : log.skipped_reasons.front()));

@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
+#include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
+#include "slamtune/common/text_file.h"
+#include "slamtune/io/image_codec.h"
 
 namespace slamtune::io {
 namespace {
@@ -37,17 +39,6 @@ cv::Mat PixelView(const MapImage& map) {
   return cv::Mat(map.height, map.width, CV_8UC1, const_cast<std::uint8_t*>(map.pixels.data()));
 }
 
-void WriteImage(const MapImage& map, const std::string& path, const std::vector<int>& params) {
-  bool ok = false;
-  std::string why = "cannot write the file (missing folder or no permission?)";
-  try {
-    ok = cv::imwrite(path, PixelView(map), params);
-  } catch (const cv::Exception& e) {
-    why = "cannot write the image: " + e.msg;
-  }
-  if (!ok) throw InputError(path, 0, why);
-}
-
 // Shortest text that reads back as the same double (fmt's round-trip formatting).
 std::string Number(double v) { return fmt::format("{}", v); }
 
@@ -62,44 +53,16 @@ void RequireReadableFile(const std::string& path, const std::string& role) {
   if (!probe) throw InputError(path, 0, "cannot open " + role + ": permission denied or unreadable");
 }
 
-std::string DepthName(int depth) {
-  switch (depth) {
-    case CV_8U: case CV_8S: return "8-bit";
-    case CV_16U: case CV_16S: return "16-bit";
-    case CV_32S: return "32-bit integer";
-    case CV_32F: return "32-bit float";
-    case CV_64F: return "64-bit float";
-    default: return "unusual-depth";
-  }
-}
-
-// Loads an 8-bit single-channel image or throws InputError naming the file. `suffix` is
-// appended to each message (e.g. which YAML named the image).
-cv::Mat LoadGrey8(const std::string& path, const std::string& suffix) {
+// Loads an 8-bit single-channel image or throws InputError naming the file (image_codec.h).
+// `suffix` is appended to each message (e.g. which YAML named the image).
+GreyImage LoadGrey8(const std::string& path, const std::string& suffix) {
   RequireReadableFile(path, "map image" + suffix);
-  if (!cv::haveImageReader(path)) {
-    throw InputError(path, 0, "not an image: no known image format signature (PGM or PNG expected)" + suffix);
-  }
-  cv::Mat image;
-  try {
-    image = cv::imread(path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    throw InputError(path, 0, "cannot decode the image: " + e.msg + suffix);
-  }
-  if (image.empty()) {
-    throw InputError(path, 0, "cannot decode the image: truncated, corrupt or empty (0 x 0)" + suffix);
-  }
-  if (image.depth() != CV_8U || image.channels() != 1) {
-    throw InputError(path, 0,
-                     fmt::format("is a {}-channel {} image; maps must be 8-bit greyscale with one channel "
-                                 "(convert it first, e.g. `convert IN -colorspace Gray -depth 8 OUT.pgm`){}",
-                                 image.channels(), DepthName(image.depth()), suffix));
-  }
-  return image;
+  return DecodeGreyImage(ReadWholeFile(path), path, suffix);
 }
 
 // map_server's rule applied to every pixel through a 256-entry lookup table.
-MapImage Classify(const cv::Mat& grey, bool negate, double occupied_thresh, double free_thresh) {
+MapImage Classify(const GreyImage& image, bool negate, double occupied_thresh, double free_thresh) {
+  const cv::Mat grey(image.height, image.width, CV_8UC1, const_cast<std::uint8_t*>(image.pixels.data()));
   cv::Mat lut(1, 256, CV_8UC1);
   for (int v = 0; v < 256; ++v) {
     switch (ClassifyGrey(static_cast<std::uint8_t>(v), negate, occupied_thresh, free_thresh)) {
@@ -109,8 +72,8 @@ MapImage Classify(const cv::Mat& grey, bool negate, double occupied_thresh, doub
     }
   }
   MapImage map;
-  map.width = grey.cols;
-  map.height = grey.rows;
+  map.width = image.width;
+  map.height = image.height;
   map.pixels.resize(static_cast<std::size_t>(map.width) * map.height);
   cv::Mat out = PixelView(map);
   cv::LUT(grey, lut, out);
@@ -155,7 +118,7 @@ MapImage ReadYaml(const std::string& path) {
   RequireReadableFile(path, "map YAML");
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
+    root = YAML::Load(ReadTextFile(path));
   } catch (const YAML::Exception& e) {
     throw InputError(path, static_cast<std::size_t>(e.mark.line + 1), "invalid YAML: " + e.msg);
   }
@@ -196,7 +159,7 @@ MapImage ReadYaml(const std::string& path) {
 
   fs::path image_path(image_name);
   if (image_path.is_relative()) image_path = fs::path(path).parent_path() / image_path;
-  const cv::Mat grey = LoadGrey8(image_path.string(), " (named by " + path + ")");
+  const GreyImage grey = LoadGrey8(image_path.string(), " (named by " + path + ")");
   MapImage map = Classify(grey, negate, occupied, free);
   map.resolution = resolution;
   map.origin = Pose2{AsNumber(origin[0], "origin[0]", path), AsNumber(origin[1], "origin[1]", path),
@@ -258,23 +221,20 @@ void WriteMapServer(const MapImage& map, const std::string& yaml_path) {
   out << YAML::EndMap;
   SLAMTUNE_CHECK_MSG(out.good(), out.GetLastError());
 
-  WriteImage(map, pgm_path.string(), {cv::IMWRITE_PXM_BINARY, 1});
-  std::ofstream file(yaml_path);
-  file << out.c_str() << "\n";
-  file.close();
-  if (!file) throw InputError(yaml_path, 0, "cannot write the file (missing folder or no permission?)");
+  // The PGM first: the YAML that names it appears only once the PGM is whole.
+  WriteFileAtomically(pgm_path.string(), EncodePgm(map.width, map.height, map.pixels.data()));
+  WriteFileAtomically(yaml_path, std::string(out.c_str()) + "\n");
 }
 
 void WritePng(const MapImage& map, const std::string& png_path) {
   if (LowerExtension(png_path) != ".png") throw InputError(png_path, 0, "PNG output must end in .png");
   ValidateMapImage(map, png_path);
-  WriteImage(map, png_path, {});
+  WriteFileAtomically(png_path, EncodeGreyPng(map.width, map.height, map.pixels.data()));
 }
 
 MapImage ReadMap(const std::string& path) {
   if (IsYamlPath(path)) return ReadYaml(path);
-  const cv::Mat grey = LoadGrey8(path, "");
-  return Classify(grey, false, kDefaultOccupiedThresh, kDefaultFreeThresh);
+  return Classify(LoadGrey8(path, ""), false, kDefaultOccupiedThresh, kDefaultFreeThresh);
 }
 
 }  // namespace slamtune::io

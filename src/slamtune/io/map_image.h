@@ -61,11 +61,13 @@ void ValidateMapImage(const MapImage& map, const std::string& what);
 // Writes `yaml_path` and the PGM (P5) beside it: same folder and stem, extension .pgm. The
 // YAML names the PGM by its bare file name (relative), with the map's resolution, origin
 // [x, y, yaw], negate and thresholds written so that ReadMap gives back the same pixels,
-// resolution and origin. Pixels are written as stored. Throws InputError on an invalid map
-// or an unwritable path.
+// resolution and origin. Pixels are written as stored. Each file is written whole or not at all
+// (atomic_file.h), the PGM before the YAML that names it. Throws InputError on an invalid map,
+// or naming the file that could not be written (unwritable path, full disk).
 void WriteMapServer(const MapImage& map, const std::string& yaml_path);
 
-// Writes the pixels as an 8-bit grey PNG (lossless; resolution and origin are not stored).
+// Writes the pixels as an 8-bit grey PNG (lossless; resolution and origin are not stored),
+// whole or not at all, as WriteMapServer does.
 void WritePng(const MapImage& map, const std::string& png_path);
 
 // Reads a map:
@@ -77,7 +79,8 @@ void WritePng(const MapImage& map, const std::string& png_path);
 //   0.05 m and origin (0, 0, 0).
 // Pixels are classified by ClassifyGrey and stored as 0 / 254 / 205. Throws InputError
 // naming the file and the problem (unreadable, not an image, not 8-bit grey, missing or bad
-// YAML key, missing image, empty map).
+// YAML key, missing image, empty map); images are decoded by image_codec.h, so nothing but that
+// one error is printed.
 MapImage ReadMap(const std::string& path);
 
 }  // namespace slamtune::io

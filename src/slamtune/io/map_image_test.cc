@@ -2,7 +2,10 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -218,6 +221,71 @@ TEST_F(MapImageFileTest, WritersRejectEmptyMapsAndBadPaths) {
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("map has 23 pixels but width x height = 6 x 4 = 24"));
   }
+}
+
+// Runs `write` with files limited to `bytes` (SIGXFSZ ignored, so a write past it fails with
+// EFBIG as on a full disk) and returns the error it threw, "" if none.
+template <typename Write>
+std::string ErrorWithFileLimit(rlim_t bytes, Write write) {
+  rlimit old{};
+  getrlimit(RLIMIT_FSIZE, &old);
+  rlimit limited = old;
+  limited.rlim_cur = bytes;
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  setrlimit(RLIMIT_FSIZE, &limited);
+  std::string what;
+  try {
+    write();
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  return what;
+}
+
+TEST_F(MapImageFileTest, AFullDiskNamesTheMapFileAndLeavesNoPartOfIt) {
+  MapImage map = SmallMap();
+  map.width = 200;
+  map.height = 100;
+  map.pixels.assign(20000, kMapFree);
+  EXPECT_EQ(ErrorWithFileLimit(4096, [&] { WriteMapServer(map, Path("map.yaml")); }),
+            Path("map.pgm") + ": cannot write (File too large)");
+  EXPECT_FALSE(fs::exists(Path("map.pgm")));
+  EXPECT_FALSE(fs::exists(Path("map.pgm.partial")));
+  EXPECT_FALSE(fs::exists(Path("map.yaml")));  // never names a PGM that is not there
+  cv::Mat noise(300, 300, CV_8UC1);
+  cv::randu(noise, 0, 255);
+  map.width = map.height = 300;
+  map.pixels.assign(noise.data, noise.data + 90000);
+  EXPECT_EQ(ErrorWithFileLimit(4096, [&] { WritePng(map, Path("map.png")); }),
+            Path("map.png") + ": cannot write (File too large)");
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(MapImageFileTest, TruncatedImagesAreOneErrorWithNothingPrinted) {
+  WriteMapServer(SmallMap(), Path("map.yaml"));
+  WritePng(SmallMap(), Path("map.png"));
+  for (const std::string name : {"map.pgm", "map.png"}) {
+    std::ifstream in(Path(name), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    WriteText("cut_" + name, bytes.substr(0, bytes.size() - 10));
+    testing::internal::CaptureStderr();
+    const std::string error = ReadError(Path("cut_" + name));
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << name;
+    EXPECT_THAT(error, HasSubstr(Path("cut_" + name) + ": ")) << name;
+  }
+  EXPECT_EQ(ReadError(WriteText("huge.pgm", "P5\n70000 70000\n255\n\x01")),
+            Path("huge.pgm") + ": declares 70000 x 70000 pixels, more than the 1073741824 an image may have");
+}
+
+TEST_F(MapImageFileTest, MapYamlWithAByteOrderMarkAndADirectoryAsImage) {
+  WriteMapServer(SmallMap(), Path("map.yaml"));
+  std::ifstream in(Path("map.yaml"));
+  const std::string yaml((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(ReadMap(WriteText("bom.yaml", "\xEF\xBB\xBF" + yaml)).pixels, SmallMap().pixels);
+  fs::create_directories(Path("d.yaml"));
+  EXPECT_THAT(ReadError(Path("d.yaml")), HasSubstr("d.yaml: cannot open map YAML: is a directory"));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/io/beam_geometry.h"
 
 namespace slamtune::io {
 namespace {
@@ -196,6 +197,12 @@ std::string GeometryProblem(const LaserScanMessage& m) {
   const std::size_t n = m.ranges.size();
   const std::size_t beams = BeamsOfAngles(m, &closes_circle);
   if (n == 0) return "LaserScan has no ranges";
+  const double first = m.angle_min, last = m.angle_max;
+  if (std::fabs(first) > kMaxBeamAngle || std::fabs(last) > kMaxBeamAngle || std::fabs(last - first) > kMaxBeamAngle) {
+    return fmt::format("LaserScan angles {} .. {} rad (step {}) go beyond a full turn: angles must be radians "
+                       "(written in degrees?)",
+                       m.angle_min, m.angle_max, m.angle_increment);
+  }
   if (beams == 0) {
     return fmt::format("LaserScan angles {} .. {} step {} rad describe no beams", m.angle_min, m.angle_max,
                        m.angle_increment);

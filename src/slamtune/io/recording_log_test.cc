@@ -186,6 +186,39 @@ TEST(RecordingToLog, A360LaserWhoseLastAngleClosesTheCircleIsAccepted) {
   EXPECT_EQ(log.scans.front().ranges.size(), 360u);
 }
 
+std::string GeometryErrorOf(const RecordingContents& c) {
+  try {
+    RecordingToLog(c, {});
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(RecordingToLog, AnglesInDegreesAreAnErrorNamingTheMessage) {
+  RecordingContents c = Drive();
+  LaserScanMessage& m = c.scans["/scan"][2].message;  // 181 beams from -90 to 90 "rad", step 1
+  m.ranges.assign(181, 2.0f);
+  m.angle_min = -90.0f;
+  m.angle_max = 90.0f;
+  m.angle_increment = 1.0f;
+  c.scans["/scan"][2].location = "byte 4096";
+  EXPECT_EQ(GeometryErrorOf(c),
+            "drive.mcap: byte 4096: /scan: LaserScan angles -90 .. 90 rad (step 1) go beyond a full turn: angles "
+            "must be radians (written in degrees?)");
+}
+
+TEST(RecordingToLog, AFieldOfViewOfMoreThanAFullTurnIsAnError) {
+  RecordingContents c = Drive();
+  LaserScanMessage& m = c.scans["/scan"][0].message;  // 100 rad = 5729 deg over 5 beams
+  m.angle_min = -3.0f;
+  m.angle_max = 97.0f;
+  m.angle_increment = 25.0f;
+  EXPECT_EQ(GeometryErrorOf(c),
+            "drive.mcap: byte 0: /scan: LaserScan angles -3 .. 97 rad (step 25) go beyond a full turn: angles must "
+            "be radians (written in degrees?)");
+}
+
 TEST(RecordingToLog, OdometryTopicIsInterpolatedLikeTf) {
   RecordingContents c = Drive();
   c.container.topics.push_back({"/odom", "nav_msgs/msg/Odometry", MessageSerialization::kCdr, false, 0});

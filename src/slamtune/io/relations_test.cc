@@ -47,6 +47,13 @@ TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
   EXPECT_EQ(relations[1].line, 4u);
 }
 
+TEST(RelationsTest, ByteOrderMarkDoesNotHideTheFirstRelation) {
+  const auto relations = ReadRelations(WriteText("bom", "\xEF\xBB\xBF" "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
+  ASSERT_EQ(relations.size(), 2u);
+  EXPECT_EQ(relations[0].delta.x, 0.5);
+  EXPECT_EQ(relations[0].line, 1u);
+}
+
 TEST(RelationsTest, RoundTripIsExact) {
   std::vector<Relation> relations = {{1134864643.12418, 1134864650.5, {0.1 + 0.2, -1.0 / 3.0, 2.0 / 7.0}, 0},
                                      {5.0, 6.0, {1e-17, 123456.789, -kPi}, 0}};

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/io/container_sink.h"
 #include "slamtune/io/mapped_file.h"
 #include "slamtune/io/ros_recording.h"
@@ -71,7 +72,7 @@ Rosbag2Metadata ReadRosbag2Metadata(const std::string& folder) {
   const std::string path = (fs::path(folder) / kRosbag2MetadataFile).string();
   CheckReadable(path);
   try {
-    return ParseMetadata(YAML::LoadFile(path), path);
+    return ParseMetadata(YAML::Load(ReadTextFile(path)), path);  // a byte-order mark is stripped
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.is_null() ? 0 : static_cast<std::size_t>(e.mark.line) + 1, e.msg);
   }

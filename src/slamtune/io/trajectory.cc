@@ -1,9 +1,12 @@
 #include "slamtune/io/trajectory.h"
 
-#include <cerrno>
+#include <algorithm>
 #include <cstdio>
-#include <cstring>
+#include <unordered_map>
 
+#include <fmt/format.h>
+
+#include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
 #include "slamtune/io/line_reader.h"
 
@@ -20,6 +23,7 @@ std::vector<TimedPose> ReadTrajectory(const std::string& path) {
   std::vector<TimedPose> poses;
   std::vector<std::string_view> fields;
   std::string_view line;
+  std::unordered_map<double, std::pair<std::size_t, std::size_t>> first_at_time;  // time -> pose index, line
   while (reader.Next(&line)) {
     if (IsBlankOrComment(line)) continue;
     SplitFields(line, &fields);
@@ -30,20 +34,30 @@ std::vector<TimedPose> ReadTrajectory(const std::string& path) {
     }
     double v[kNumColumns];
     for (std::size_t i = 0; i < kNumColumns; ++i) v[i] = RequireFinite(reader, fields[i], i + 1, kColumns[i]);
-    poses.push_back(TimedPose{v[0], Pose2{v[1], v[2], v[3]}});
+    const TimedPose pose{v[0], Pose2{v[1], v[2], v[3]}};
+    const auto [it, first] = first_at_time.try_emplace(pose.time, poses.size(), reader.line_number());
+    if (!first) {
+      const Pose2& earlier = poses[it->second.first].pose;
+      if (earlier == pose.pose) continue;  // the same pose written twice: nothing is ambiguous
+      throw InputError(path, reader.line_number(),
+                       fmt::format("second pose for timestamp {} (line {} has {} {} {}, this line {} {} {}): a "
+                                   "trajectory needs one pose per timestamp",
+                                   fields[0], it->second.second, earlier.x, earlier.y, earlier.theta, pose.pose.x,
+                                   pose.pose.y, pose.pose.theta));
+    }
+    poses.push_back(pose);
   }
   return poses;
 }
 
 void WriteTrajectory(const std::string& path, const std::vector<TimedPose>& poses) {
-  std::FILE* file = std::fopen(path.c_str(), "w");
-  if (file == nullptr) throw InputError(path, 0, std::string("cannot write: ") + std::strerror(errno));
-  std::fprintf(file, "# timestamp x y theta (s, m, m, rad)\n");
+  std::string text = "# timestamp x y theta (s, m, m, rad)\n";
+  char line[128];
   for (const TimedPose& p : poses) {
-    std::fprintf(file, "%.6f %.9g %.9g %.9g\n", p.time, p.pose.x, p.pose.y, p.pose.theta);
+    const int n = std::snprintf(line, sizeof(line), "%.6f %.9g %.9g %.9g\n", p.time, p.pose.x, p.pose.y, p.pose.theta);
+    text.append(line, static_cast<std::size_t>(std::clamp(n, 0, static_cast<int>(sizeof(line)) - 1)));
   }
-  const bool failed = std::ferror(file) != 0;
-  if (std::fclose(file) != 0 || failed) throw InputError(path, 0, "cannot write: error while writing the file");
+  WriteFileAtomically(path, text);
 }
 
 }  // namespace slamtune::io

@@ -69,6 +69,27 @@ TEST(TrajectoryTest, ErrorsNameFileLineAndProblem) {
   EXPECT_THAT(ErrorOf("/nonexistent/t.txt"), HasSubstr("/nonexistent/t.txt: cannot open"));
 }
 
+TEST(TrajectoryTest, TwoDifferentPosesWithOneTimestampNameTheSecondLine) {
+  const std::string two = WriteText("two", "# t x y theta\n10.5 1 2 0.5\n11 0 0 0\n10.5 1 2.5 0.5\n");
+  EXPECT_EQ(ErrorOf(two), two + ":4: second pose for timestamp 10.5 (line 2 has 1 2 0.5, this line 1 2.5 0.5): a "
+                                "trajectory needs one pose per timestamp");
+  const std::string spelled = WriteText("spelled", "7.000000 0 0 0\n7 0 0 0.25\n");  // same time, other text
+  EXPECT_EQ(ErrorOf(spelled), spelled + ":2: second pose for timestamp 7 (line 1 has 0 0 0, this line 0 0 0.25): a "
+                                        "trajectory needs one pose per timestamp");
+}
+
+TEST(TrajectoryTest, AnExactlyRepeatedPoseIsReadOnce) {
+  const auto poses = ReadTrajectory(WriteText("repeat", "1 0 0 0\n2 1 0 0\n2 1 0 0\n3 2 0 0\n"));
+  ASSERT_EQ(poses.size(), 3u);
+  EXPECT_EQ(poses[2].time, 3.0);
+}
+
+TEST(TrajectoryTest, ByteOrderMarkDoesNotHideTheFirstPose) {
+  const auto poses = ReadTrajectory(WriteText("bom", "\xEF\xBB\xBF" "1 0.5 0 0\n2 1 0 0\n"));
+  ASSERT_EQ(poses.size(), 2u);
+  EXPECT_EQ(poses[0].pose.x, 0.5);
+}
+
 TEST(TrajectoryTest, EmptyFileIsEmptyTrajectory) { EXPECT_TRUE(ReadTrajectory(WriteText("empty", "# only\n")).empty()); }
 
 TEST(TrajectoryTest, UnwritablePathThrows) {

@@ -1,0 +1,84 @@
+#include "slamtune/io/image_codec.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Error text of decoding `bytes`, and what was printed on stderr meanwhile.
+std::string ErrorOf(const std::string& bytes, std::string* printed = nullptr) {
+  std::string what = "no error";
+  testing::internal::CaptureStderr();
+  try {
+    DecodeGreyImage(bytes, "m.img", "");
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  const std::string err = testing::internal::GetCapturedStderr();
+  if (printed != nullptr) *printed = err;
+  return what;
+}
+
+const std::uint8_t kPixels[6] = {0, 254, 205, 205, 0, 254};
+
+TEST(ImageCodec, PgmAndPngRoundTrip) {
+  for (const std::string& bytes : {EncodePgm(3, 2, kPixels), EncodeGreyPng(3, 2, kPixels)}) {
+    const GreyImage image = DecodeGreyImage(bytes, "m", "");
+    EXPECT_EQ(image.width, 3);
+    EXPECT_EQ(image.height, 2);
+    EXPECT_EQ(image.pixels, std::vector<std::uint8_t>(kPixels, kPixels + 6));
+  }
+  EXPECT_EQ(EncodePgm(3, 2, kPixels).substr(0, 11), "P5\n3 2\n255\n");
+}
+
+TEST(ImageCodec, PgmCommentsTextFormAndASmallerMaxvalAreRead) {
+  const GreyImage text = DecodeGreyImage("P2\n# made by hand\n3 1\n# levels\n100\n0 50 100\n", "m", "");
+  EXPECT_EQ(text.pixels, (std::vector<std::uint8_t>{0, 128, 255}));  // scaled to 0..255 as SDL_image does
+}
+
+TEST(ImageCodec, TruncatedOrHugePgmIsOneErrorAndNothingPrinted) {
+  std::string printed;
+  EXPECT_EQ(ErrorOf(EncodePgm(3, 2, kPixels).substr(0, 14), &printed),
+            "m.img: truncated: the header declares 3 x 2 = 6 pixels, the file holds 3");
+  EXPECT_EQ(printed, "");
+  EXPECT_EQ(ErrorOf("P5\n100000 100000\n255\n\x01\x02", &printed),
+            "m.img: declares 100000 x 100000 pixels, more than the 1073741824 an image may have");
+  EXPECT_EQ(printed, "");
+  EXPECT_EQ(ErrorOf("P5\n3 2\n65535\n"), "m.img: is a 1-channel 16-bit image; maps must be 8-bit greyscale with one "
+                                         "channel (convert it first, e.g. `convert IN -colorspace Gray -depth 8 "
+                                         "OUT.pgm`)");
+  EXPECT_EQ(ErrorOf("P5\n3"), "m.img: cannot decode the image: the PGM header (width, height, maxval) is truncated or "
+                              "not numbers");
+}
+
+TEST(ImageCodec, TruncatedOrHugePngIsOneErrorAndNothingPrinted) {
+  const std::string png = EncodeGreyPng(3, 2, kPixels);
+  std::string printed;
+  EXPECT_THAT(ErrorOf(png.substr(0, png.size() - 20), &printed),
+              HasSubstr("m.img: cannot decode the image: truncated or corrupt PNG ("));
+  EXPECT_EQ(printed, "");
+  std::string huge = png;  // IHDR width and height 0x00ffffff: 2.8e14 pixels
+  huge.replace(16, 8, std::string("\x00\xff\xff\xff\x00\xff\xff\xff", 8));
+  EXPECT_EQ(ErrorOf(huge, &printed), "m.img: declares 16777215 x 16777215 pixels, more than the 1073741824 an image "
+                                     "may have");
+  EXPECT_EQ(printed, "");
+  std::string corrupt = png;  // a flipped byte inside the IDAT data: CRC mismatch
+  corrupt[corrupt.size() - 16] ^= 0x55;
+  EXPECT_THAT(ErrorOf(corrupt, &printed), HasSubstr("truncated or corrupt PNG"));
+  EXPECT_EQ(printed, "");
+}
+
+TEST(ImageCodec, OtherFormatsAreNamed) {
+  EXPECT_EQ(ErrorOf("hello"), "m.img: not an image: no known image format signature (PGM or PNG expected)");
+  EXPECT_THAT(ErrorOf("P6\n1 1\n255\nabc"), HasSubstr("m.img: is a 3-channel 8-bit image (PPM); maps must be"));
+}
+
+}  // namespace
+}  // namespace slamtune::io
