@@ -120,6 +120,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                                                     inputs.base.loop_match_minimum_chain_size);
   } else if (args.space_file == "paper") {
     settings.space = optim::SearchSpace::PaperDefault();
+  } else if (args.space_file == "front-end") {
+    settings.space = optim::SearchSpace::FrontEnd(inputs.base);
   } else {
     settings.space = optim::SearchSpace::FromYaml(args.space_file);
   }
@@ -230,8 +232,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)");
       app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder");
       app.add_option("--space", args->space_file,
-                     "search-space YAML (vary: NAME: {min, max, type}; fix: NAME: V), or 'paper' for the seed "
-                     "paper's (r 2..6, g 6..20, p = 0.7, q = 0.4); default: r and g around the base configuration");
+                     "search-space YAML (vary: NAME: {min, max, step, type}; fix: NAME: V); 'paper' for the seed "
+                     "paper's (r 2..6, g 6..20, p = 0.7, q = 0.4); 'front-end' for sequential matching and node "
+                     "spacing plus r, g, p, q (maps that break before any loop closes); default: r and g around "
+                     "the base configuration");
       app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
       app.add_option("--generations", args->generations, "generations (default 60; 8 on the built-in world)");
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")

@@ -29,7 +29,11 @@ void to_json(nlohmann::json& j, const EvaluationRecord& r) {
                      {"second",
                       {{"occupied_ratio_known", r.occupied_ratio_known},
                        {"corners", r.corners},
-                       {"contours", r.contours}}},
+                       {"contours", r.contours},
+                       {"occupied_cells", r.occupied_cells},
+                       {"hits", r.hits},
+                       {"hits_in_free_cells", r.hits_in_free_cells},
+                       {"hits_in_unknown_cells", r.hits_in_unknown_cells}}},
                      {"nodes", r.nodes},
                      {"loop_closures", r.loop_closures},
                      {"loop_scans", r.loop_scans},
@@ -56,6 +60,11 @@ void from_json(const nlohmann::json& j, EvaluationRecord& r) {
   r.occupied_ratio_known = s.at("occupied_ratio_known").get<double>();
   r.corners = s.at("corners").get<double>();
   r.contours = s.at("contours").get<double>();
+  // Absent from records stored before these figures existed.
+  r.occupied_cells = s.value("occupied_cells", 0.0);
+  r.hits = s.value("hits", 0.0);
+  r.hits_in_free_cells = s.value("hits_in_free_cells", 0.0);
+  r.hits_in_unknown_cells = s.value("hits_in_unknown_cells", 0.0);
   r.nodes = j.at("nodes").get<int>();
   r.loop_closures = j.at("loop_closures").get<int>();
   r.loop_scans = j.at("loop_scans").get<std::vector<int>>();

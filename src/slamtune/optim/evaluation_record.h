@@ -25,6 +25,10 @@ struct EvaluationRecord {
   double occupied_ratio_known = 0.0;  // occupied / (occupied + free)
   double corners = 0.0;               // 8-connected corner clusters
   double contours = 0.0;              // all contours
+  double occupied_cells = 0.0;        // wall cells of the map
+  double hits = 0.0;                  // scan end points counted in the map (slam/occupancy_grid.h)
+  double hits_in_free_cells = 0.0;    // ... of them in cells the map ends up calling free
+  double hits_in_unknown_cells = 0.0; // ... and in cells it leaves unknown
 
   int nodes = 0;
   int loop_closures = 0;

@@ -38,6 +38,7 @@ namespace slamtune::optim {
 
 struct MapScores {
   metrics::MapQuality quality;
+  slam::OccupancyGridSummary grid;  // the counts behind the map (hits the map does not back)
   metrics::GtError error;  // default (relations_used 0) without relations
 };
 

@@ -38,6 +38,16 @@ void SortRealsFirst(std::vector<Dimension>& dims) {
 
 }  // namespace
 
+double Dimension::ValueOf(double x) const {
+  if (step > 0.0) {
+    const double steps = std::floor((upper - lower) / step + 1e-9);
+    const double k = std::clamp(std::round((x - lower) / step), 0.0, steps);
+    // Nine decimals: 0.3 + 3 x 0.02 is 0.36, not 0.36000000000000004, so keys and files read as written.
+    return std::round((lower + k * step) * 1e9) / 1e9;
+  }
+  return integer ? std::round(x) : x;
+}
+
 SearchSpace SearchSpace::PaperDefault() {
   SearchSpace s;
   s.dimensions = {{"loop_search_maximum_distance", 2.0, 6.0, false},
@@ -51,6 +61,43 @@ SearchSpace SearchSpace::AroundBase(double base_r, int base_g) {
   s.dimensions = {{"loop_search_maximum_distance", std::min(2.0, base_r), std::max(6.0, base_r), false},
                   {"loop_match_minimum_chain_size", std::min(6.0, static_cast<double>(base_g)),
                    std::max(20.0, static_cast<double>(base_g)), true}};
+  return s;
+}
+
+namespace {
+
+// A range on a lattice through the base's value, reaching as close to [low, high] as the
+// lattice allows and always holding the base: the baseline is a point of the space.
+Dimension Around(const char* name, double base, double low, double high, double step, bool integer = false) {
+  const auto round9 = [](double v) { return std::round(v * 1e9) / 1e9; };
+  const double down = base > low ? std::floor((base - low) / step + 1e-9) : 0.0;
+  const double up = base < high ? std::floor((high - base) / step + 1e-9) : 0.0;
+  return Dimension{name, round9(base - down * step), round9(base + up * step), integer, step};
+}
+
+}  // namespace
+
+SearchSpace SearchSpace::FrontEnd(const slam::MapperParams& base) {
+  // The sequential search window must be an even number of cells (karto-algorithm.md §4.1):
+  // its lattice is 2 x resolution through the base's (valid) window. 1.6 m at 1 cm is 161^2
+  // cells per angle, ~28x the work of slam_karto's 0.3 m (31^2); docs/search-spaces.md.
+  const double resolution = base.correlation_search_space_resolution;
+  SearchSpace s;
+  s.dimensions = {
+      Around("correlation_search_space_dimension", base.correlation_search_space_dimension, 0.2, 1.6,
+             2.0 * resolution),
+      // Karto accepts smearing in [0.5, 10] x resolution (§4.1).
+      Around("correlation_search_space_smear_deviation", base.correlation_search_space_smear_deviation,
+             3.0 * resolution, 10.0 * resolution, resolution / 2.0),
+      Around("minimum_travel_distance", base.minimum_travel_distance, 0.1, 1.0, 0.01),
+      Around("minimum_travel_heading", base.minimum_travel_heading, 0.1, 1.0, 0.01),
+      Around("link_match_minimum_response_fine", base.link_match_minimum_response_fine, 0.05, 0.6, 0.01),
+      Around("loop_search_maximum_distance", base.loop_search_maximum_distance, 2.0, 6.0, 0.01),
+      Around("loop_match_minimum_response_coarse", base.loop_match_minimum_response_coarse, 0.3, 0.9, 0.01),
+      Around("loop_match_maximum_variance_coarse", base.loop_match_maximum_variance_coarse, 0.1, 3.0, 0.01),
+      Around("scan_buffer_size", base.scan_buffer_size, 5, 70, 1.0, true),
+      Around("loop_match_minimum_chain_size", base.loop_match_minimum_chain_size, 6, 20, 1.0, true),
+  };
   return s;
 }
 
@@ -83,13 +130,14 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
         }
         for (const auto& field : spec) {
           const std::string f = field.first.as<std::string>();
-          if (f != "min" && f != "max" && f != "type") {
+          if (f != "min" && f != "max" && f != "type" && f != "step") {
             throw InputError(path, field.first.Mark().line + 1,
-                             fmt::format("'{}': unknown key '{}' (allowed: min, max, type)", d.name, f));
+                             fmt::format("'{}': unknown key '{}' (allowed: min, max, step, type)", d.name, f));
           }
         }
         d.lower = ReadNumber(spec["min"], path, d.name + ".min");
         d.upper = ReadNumber(spec["max"], path, d.name + ".max");
+        if (spec["step"]) d.step = ReadNumber(spec["step"], path, d.name + ".step");
         if (spec["type"]) {
           const std::string type = spec["type"].as<std::string>();
           if (type != "int" && type != "real") {
@@ -168,6 +216,15 @@ void SearchSpace::Validate(const std::string& source) const {
                        fmt::format("'{}': bounds reversed or empty (min {} must be < max {})", d.name, d.lower,
                                    d.upper));
     }
+    if (!std::isfinite(d.step) || d.step < 0.0 || (d.step > 0.0 && d.step > d.upper - d.lower)) {
+      throw InputError(source, LineOf(d.name),
+                       fmt::format("'{}': step {} must be > 0 and at most max - min = {}", d.name, d.step,
+                                   d.upper - d.lower));
+    }
+    if (d.integer && d.step != std::floor(d.step)) {
+      throw InputError(source, LineOf(d.name),
+                       fmt::format("'{}': an int parameter needs a whole-number step, got {}", d.name, d.step));
+    }
     if (d.integer && (d.lower != std::floor(d.lower) || d.upper != std::floor(d.upper))) {
       throw InputError(source, LineOf(d.name),
                        fmt::format("'{}': an int parameter needs whole-number bounds, got [{}, {}]", d.name,
@@ -191,7 +248,7 @@ std::map<std::string, double> SearchSpace::Assign(const std::vector<double>& dec
   SLAMTUNE_CHECK(decision.size() == dimensions.size());
   std::map<std::string, double> out = fixed;
   for (std::size_t i = 0; i < dimensions.size(); ++i) {
-    out[dimensions[i].name] = dimensions[i].integer ? std::round(decision[i]) : decision[i];
+    out[dimensions[i].name] = dimensions[i].ValueOf(decision[i]);
   }
   return out;
 }
@@ -205,7 +262,9 @@ std::string SearchSpace::Key(const std::map<std::string, double>& assignment) {
 std::string SearchSpace::Fingerprint() const {
   std::string f = "vary:";
   for (const Dimension& d : dimensions) {
-    f += fmt::format("{}[{:.17g},{:.17g}]{};", d.name, d.lower, d.upper, d.integer ? "int" : "real");
+    f += fmt::format("{}[{:.17g},{:.17g}]{}", d.name, d.lower, d.upper, d.integer ? "int" : "real");
+    if (d.step > 0.0) f += fmt::format("/{:.17g}", d.step);  // spaces without steps keep their old fingerprint
+    f += ";";
   }
   f += "fix:" + Key(fixed);
   return f;

@@ -22,6 +22,14 @@ struct Dimension {
   double lower = 0.0;
   double upper = 0.0;
   bool integer = false;
+  // 0: any value in [lower, upper]. > 0: only lower + k step (k = 0, 1, ... up to upper), as
+  // Optuna's `step`: offspring that differ by less than a step become the same parameter set,
+  // served again by the run database, and values that must sit on a lattice (a search window
+  // of an even number of cells) are never drawn off it.
+  double step = 0.0;
+
+  // The value `x` stands for: rounded to the step (or to a whole number) and kept in bounds.
+  double ValueOf(double x) const;
 };
 
 struct SearchSpace {
@@ -35,11 +43,19 @@ struct SearchSpace {
   // values (r in [min(2, r0), max(6, r0)] m, g in [min(6, g0), max(20, g0)]); nothing fixed, so
   // every other parameter keeps the base's value.
   static SearchSpace AroundBase(double base_r, int base_g);
+  // `--space front-end`: what governs sequential matching and node density, plus r, g, p, q, for
+  // maps that break before any loop closes (the sequential match snaps to a wrong pose and no
+  // loop-closure setting can mend it). Each range contains the base's value; the search window
+  // is on its lattice (steps of 2 x correlation_search_space_resolution) and bounded so one
+  // run stays within ~30x the default's matching work; the ranges and costs are in
+  // docs/search-spaces.md.
+  static SearchSpace FrontEnd(const slam::MapperParams& base);
 
   // Reads a YAML search space:
   //   vary:
   //     loop_search_maximum_distance: {min: 2.0, max: 6.0}
   //     loop_match_minimum_chain_size: {min: 6, max: 20, type: int}
+  //     correlation_search_space_dimension: {min: 0.3, max: 1.6, step: 0.02}
   //   fix:
   //     loop_match_minimum_response_coarse: 0.7
   // Throws InputError naming the file, the line and the problem (empty space, reversed bounds,

@@ -5,6 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
+#include <algorithm>
+#include <cmath>
 
 #include "slamtune/common/error.h"
 
@@ -128,10 +131,78 @@ TEST(SearchSpace, RejectsBadSpacesWithReadableMessages) {
             std::string::npos);
   EXPECT_NE(ErrorOf("vary:\n  loop_match_minimum_chain_size: {min: 1.5, max: 4, type: int}\n").find("whole-number bounds"), std::string::npos);
   EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nextra: 1\n").find("unknown key 'extra'"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4, step: 1}\n").find("unknown key 'step'"), std::string::npos);
+  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4, stride: 1}\n").find("unknown key 'stride'"), std::string::npos);
+  EXPECT_EQ(MessageOf("step", "vary:\n  loop_search_maximum_distance: {min: 1, max: 4, step: 5}\n"),
+            "'loop_search_maximum_distance': step 5 must be > 0 and at most max - min = 3");
+  EXPECT_EQ(MessageOf("intstep", "vary:\n  scan_buffer_size: {min: 5, max: 40, step: 2.5}\n"),
+            "'scan_buffer_size': an int parameter needs a whole-number step, got 2.5");
   EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nfix:\n  loop_search_maximum_distance: 2\n").find("both varied and fixed"),
             std::string::npos);
   EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: a, max: 4}\n").find("loop_search_maximum_distance.min must be a number"), std::string::npos);
+}
+
+TEST(SearchSpace, StepsPutEveryValueOnTheLatticeWithinBounds) {
+  const SearchSpace s = SearchSpace::FromYaml(WriteTemp("steps", R"(
+vary:
+  correlation_search_space_dimension: {min: 0.3, max: 1.61, step: 0.02}
+  scan_buffer_size: {min: 5, max: 40, step: 5}
+)"));
+  const Dimension& window = s.dimensions[0];
+  EXPECT_DOUBLE_EQ(window.step, 0.02);
+  EXPECT_EQ(window.ValueOf(0.3), 0.3);
+  EXPECT_EQ(window.ValueOf(0.3509), 0.36);  // nearest step, written as the decimal
+  EXPECT_EQ(window.ValueOf(0.3489), 0.34);
+  EXPECT_EQ(window.ValueOf(1.61), 1.6);  // the last step below the bound
+  EXPECT_EQ(window.ValueOf(-3.0), 0.3);
+  // Every value is an even number of 1 cm cells, as the engine requires of the window.
+  for (double x = 0.3; x <= 1.61; x += 0.0037) {
+    const double cells = window.ValueOf(x) / 0.01;
+    EXPECT_NEAR(cells, 2.0 * std::round(cells / 2.0), 1e-9) << x;
+  }
+  const auto a = s.Assign({0.777, 17.4});
+  EXPECT_EQ(a.at("correlation_search_space_dimension"), 0.78);
+  EXPECT_EQ(a.at("scan_buffer_size"), 15.0);
+  // Offspring closer than a step are the same parameter set, hence one database key.
+  EXPECT_EQ(SearchSpace::Key(s.Assign({0.771, 16.0})), SearchSpace::Key(s.Assign({0.789, 14.0})));
+  // A step is part of the fingerprint; a space without steps keeps the fingerprint it had.
+  SearchSpace no_step = s;
+  for (Dimension& d : no_step.dimensions) d.step = 0.0;
+  EXPECT_NE(s.Fingerprint(), no_step.Fingerprint());
+  EXPECT_EQ(no_step.Fingerprint(),
+            "vary:correlation_search_space_dimension[0.29999999999999999,1.6100000000000001]real;"
+            "scan_buffer_size[5,40]int;fix:");
+}
+
+TEST(SearchSpace, FrontEndHoldsTheBaseAndEveryBoundIsAValidConfiguration) {
+  for (const char* preset : {"slam_karto", "slam_toolbox"}) {
+    const slam::MapperParams base = slam::MapperParams::Preset(preset);
+    const SearchSpace s = SearchSpace::FrontEnd(base);
+    EXPECT_NO_THROW(s.Validate("front-end")) << preset;
+    EXPECT_NO_THROW(CheckSpaceAgainst(s, base, "front-end")) << preset;
+    EXPECT_TRUE(s.fixed.empty());
+    for (const char* name : {"correlation_search_space_dimension", "minimum_travel_distance", "minimum_travel_heading",
+                             "correlation_search_space_smear_deviation", "scan_buffer_size",
+                             "link_match_minimum_response_fine", "loop_search_maximum_distance",
+                             "loop_match_minimum_chain_size", "loop_match_minimum_response_coarse",
+                             "loop_match_maximum_variance_coarse"}) {
+      const auto d = std::find_if(s.dimensions.begin(), s.dimensions.end(),
+                                  [&](const Dimension& x) { return x.name == name; });
+      ASSERT_NE(d, s.dimensions.end()) << name;
+      const double value = slam::GetNumeric(base, name);
+      EXPECT_LE(d->lower, value) << preset << " " << name;
+      EXPECT_GE(d->upper, value) << preset << " " << name;
+      EXPECT_GT(d->step, 0.0) << name;
+      EXPECT_EQ(d->ValueOf(value), value) << preset << " " << name << ": the base is on the lattice";
+    }
+    // Random points of the space are configurations the engine accepts.
+    std::mt19937 rng(7);
+    for (int trial = 0; trial < 200; ++trial) {
+      std::vector<double> x;
+      for (const Dimension& d : s.dimensions) x.push_back(std::uniform_real_distribution<>(d.lower, d.upper)(rng));
+      slam::MapperParams probe = base;
+      EXPECT_NO_THROW(slam::SetNumerics(probe, s.Assign(x))) << preset << " trial " << trial;
+    }
+  }
 }
 
 TEST(SearchSpace, KeyIsCanonicalAndExact) {

@@ -23,10 +23,9 @@ slam::OccupancyGridOptions GridOptions(const slam::MapperParams& params) {
   return grid;
 }
 
-io::MapImage MapOf(const slam::LogRunner& runner, const slam::MapperParams& params) {
+slam::OccupancyGrid GridOf(const slam::LogRunner& runner, const slam::MapperParams& params) {
   return slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()),
-                                        GridOptions(params))
-      .ToMapImage();
+                                        GridOptions(params));
 }
 
 slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
@@ -62,8 +61,10 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
     scores = context.map_scores->Find(key);
   }
   if (!scores) {
-    run.map = MapOf(runner, params);
+    const slam::OccupancyGrid grid = GridOf(runner, params);
+    run.map = grid.ToMapImage();
     scores.emplace();
+    scores->grid = grid.summary();
     scores->quality = metrics::ComputeMapQuality(run.map, context.metrics);
     if (!context.relations.empty()) scores->error = metrics::ComputeGtError(run.trajectory, context.relations);
     if (use_cache) context.map_scores->Insert(std::move(key), *scores);
@@ -78,6 +79,10 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   record.occupied_ratio_known = quality.occupied_ratio_known;
   record.corners = quality.corners;
   record.contours = quality.contours;
+  record.occupied_cells = static_cast<double>(quality.occupied_cells);
+  record.hits = static_cast<double>(scores->grid.hits);
+  record.hits_in_free_cells = static_cast<double>(scores->grid.hits_in_free_cells);
+  record.hits_in_unknown_cells = static_cast<double>(scores->grid.hits_in_unknown_cells);
   record.nodes = run.summary.nodes;
   record.loop_closures = static_cast<int>(run.summary.loop_closures.size());
   for (const auto& loop : run.summary.loop_closures) record.loop_scans.push_back(loop.log_index);
@@ -103,7 +108,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
 
 io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {
   const slam::MapperParams params = context.ParamsFor(assignment);
-  return MapOf(RunToEnd(context, params), params);
+  return GridOf(RunToEnd(context, params), params).ToMapImage();
 }
 
 void ShareWork(SlamEvaluationContext& context, std::size_t share_mb) {

@@ -114,7 +114,8 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
   t.header = {"index"};
   t.header.insert(t.header.end(), params.begin(), params.end());
   for (const char* h : {"status", "reason", "occupied_ratio", "corner_pixels", "enclosed_areas", "occupied_ratio_known",
-                        "corners", "contours", "nodes", "loop_closures", "wall_s", "trans_mean_m", "trans_std_m",
+                        "corners", "contours", "occupied_cells", "hits", "hits_in_free_cells", "hits_in_unknown_cells",
+                        "nodes", "loop_closures", "wall_s", "trans_mean_m", "trans_std_m",
                         "rot_mean_deg", "rot_std_deg", "relations_used"}) {
     t.header.push_back(h);
   }
@@ -124,7 +125,9 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
     for (const auto& p : params) row.push_back(Param(r.params, p));
     row.insert(row.end(), {r.status, r.reason, Metric(r, r.occupied_ratio), Metric(r, r.corner_pixels),
                            Metric(r, r.enclosed_areas), Metric(r, r.occupied_ratio_known), Metric(r, r.corners),
-                           Metric(r, r.contours), Ok(r) ? std::to_string(r.nodes) : "",
+                           Metric(r, r.contours), Metric(r, r.occupied_cells), Metric(r, r.hits),
+                           Metric(r, r.hits_in_free_cells), Metric(r, r.hits_in_unknown_cells),
+                           Ok(r) ? std::to_string(r.nodes) : "",
                            Ok(r) ? std::to_string(r.loop_closures) : "", FormatNumber(r.wall_s)});
     for (auto& cell : ErrorCells(r)) row.push_back(std::move(cell));
     t.AddRow(std::move(row));

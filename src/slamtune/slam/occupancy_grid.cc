@@ -144,9 +144,11 @@ void OccupancyGrid::UpdateStates(const OccupancyGridOptions& options) {
       } else {
         states_[i] = CellState::kFree;
         ++summary_.free_cells;
+        summary_.hits_in_free_cells += hit_[i];
       }
     } else {
       ++summary_.unknown_cells;
+      summary_.hits_in_unknown_cells += hit_[i];
     }
   }
 }

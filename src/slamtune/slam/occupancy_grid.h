@@ -51,6 +51,12 @@ struct OccupancyGridSummary {
   std::int64_t occupied_cells = 0;
   std::int64_t free_cells = 0;
   std::int64_t unknown_cells = 0;
+  // End points the map contradicts: hits counted in cells that end free (more beams passed
+  // through them than the occupancy threshold allows a wall) or unknown. In a consistent map
+  // almost every hit lands on a wall; where a broken trajectory draws one wall into the free
+  // space another pass saw, its hits are overruled, whatever the map's extent.
+  std::int64_t hits_in_free_cells = 0;
+  std::int64_t hits_in_unknown_cells = 0;
 };
 
 // Visits the cells of Karto's line tracing between two grid cells (§8.1): if |dy| > |dx| the

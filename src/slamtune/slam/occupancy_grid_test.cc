@@ -136,6 +136,25 @@ TEST(OccupancyGrid, ThreeViewsMakeTheHitCellOccupiedWithAStrictThreshold) {
   EXPECT_EQ(OccupancyGrid::FromScans(one, lenient).state(7, 7), CellState::kOccupied);
 }
 
+TEST(OccupancyGrid, CountsTheHitsTheMapDoesNotBack) {
+  const LaserScan scan = Fan();
+  const LaserScan* one[] = {&scan};
+  const OccupancyGridSummary seen_once = OccupancyGrid::FromScans(one, {}).summary();
+  EXPECT_EQ(seen_once.hits, 1);
+  EXPECT_EQ(seen_once.hits_in_unknown_cells, 1);  // 2 passes: not known yet
+  EXPECT_EQ(seen_once.hits_in_free_cells, 0);
+  const LaserScan* three[] = {&scan, &scan, &scan};
+  const OccupancyGridSummary wall = OccupancyGrid::FromScans(three, {}).summary();
+  EXPECT_EQ(wall.hits, 3);
+  EXPECT_EQ(wall.hits_in_unknown_cells, 0);
+  EXPECT_EQ(wall.hits_in_free_cells, 0);
+  OccupancyGridOptions strict;
+  strict.occupancy_threshold = 0.5;  // 3 hits / 6 passes: the cell ends free, its hits overruled
+  const OccupancyGridSummary overruled = OccupancyGrid::FromScans(three, strict).summary();
+  EXPECT_EQ(overruled.hits_in_free_cells, 3);
+  EXPECT_EQ(overruled.hits_in_unknown_cells, 0);
+}
+
 TEST(OccupancyGrid, SkipRulesAndTruncationAtTheRangeThreshold) {
   const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
   // min_range 0.1, max_range 20, threshold 12; beams 10 degrees apart.
