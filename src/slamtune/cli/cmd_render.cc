@@ -11,7 +11,6 @@
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
-#include "slamtune/common/text_file.h"
 #include "slamtune/cli/log_input.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
@@ -30,7 +29,7 @@ struct RenderArgs {
 
 int RunRender(const RenderArgs& args) {
   slam::MapperParams params = args.preset.empty() ? slam::MapperParams{} : slam::MapperParams::Preset(args.preset);
-  if (!args.params_file.empty()) slam::ApplyParamsYaml(params, ReadTextFile(args.params_file), args.params_file);
+  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
   for (const auto& s : args.sets) slam::ApplyOverride(params, s);
   EnsureOutputDir(args.out);  // before the work
   const io::LaserLog log = ReadLog(args.log, args.input);

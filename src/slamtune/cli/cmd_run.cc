@@ -21,7 +21,6 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
 #include "slamtune/common/progress.h"
-#include "slamtune/common/text_file.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/relations.h"
@@ -77,7 +76,7 @@ void WriteLoopClosuresCsv(const std::string& path, const slam::RunSummary& s) {
 
 slam::MapperParams ResolveParams(const RunArgs& args) {
   slam::MapperParams params = slam::MapperParams::Preset(args.preset);
-  if (!args.params_file.empty()) slam::ApplyParamsYaml(params, ReadTextFile(args.params_file), args.params_file);
+  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
   for (const std::string& s : args.sets) slam::ApplyOverride(params, s);
   if (args.no_loop_closure) params.do_loop_closing = false;
   params.Validate();

@@ -1,7 +1,6 @@
 #include "slamtune/io/trajectory.h"
 
-#include <algorithm>
-#include <cstdio>
+#include <iterator>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -52,10 +51,8 @@ std::vector<TimedPose> ReadTrajectory(const std::string& path) {
 
 void WriteTrajectory(const std::string& path, const std::vector<TimedPose>& poses) {
   std::string text = "# timestamp x y theta (s, m, m, rad)\n";
-  char line[128];
   for (const TimedPose& p : poses) {
-    const int n = std::snprintf(line, sizeof(line), "%.6f %.9g %.9g %.9g\n", p.time, p.pose.x, p.pose.y, p.pose.theta);
-    text.append(line, static_cast<std::size_t>(std::clamp(n, 0, static_cast<int>(sizeof(line)) - 1)));
+    fmt::format_to(std::back_inserter(text), "{:.6f} {:.9g} {:.9g} {:.9g}\n", p.time, p.pose.x, p.pose.y, p.pose.theta);
   }
   WriteFileAtomically(path, text);
 }
