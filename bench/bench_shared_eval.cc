@@ -60,7 +60,9 @@ struct Digest {
 
 std::uint64_t DigestOf(const slamtune::optim::EvaluationRecord& r, const slamtune::optim::SlamRun& run) {
   Digest d;
-  for (double f : r.Objectives()) d.Add(f);
+  for (slamtune::optim::Objective o : slamtune::optim::AllObjectives()) {
+    d.Add(r.status == "ok" ? slamtune::optim::ValueOf(r, o) : slamtune::optim::InfoOf(o).failure_score);
+  }
   d.Add(r.occupied_ratio_known);
   d.Add(static_cast<std::uint64_t>(r.nodes));
   for (const auto& l : run.summary.loop_closures) {
@@ -266,7 +268,7 @@ int Run(int argc, char** argv) {
   // The problem is only asked for its bounds here; its evaluator is never called.
   auto unused = std::make_shared<slamtune::optim::BatchEvaluator>(
       [](const Assignment&) -> slamtune::optim::EvaluationRecord { throw std::logic_error("not used"); }, nullptr, 1);
-  const pagmo::problem problem{slamtune::optim::TuningProblem(space, unused)};
+  const pagmo::problem problem{slamtune::optim::TuningProblem(space, slamtune::optim::ObjectiveSet(), unused)};
   pagmo::detail::random_engine_type rng(seed);
   std::vector<Assignment> batch;
   for (int i = 0; i < sets; ++i) batch.push_back(space.Assign(pagmo::random_decision_vector(problem, rng)));

@@ -24,6 +24,10 @@ expect_line() {
 }
 space() { printf '%b' "$2" > "$work/$1.yaml"; echo "$work/$1.yaml"; }
 
+# An objective set that does not exist.
+expect_line "slamtune: error: --objectives: unknown objective set 'eta' (known: consistency, paper)" \
+  "$bin" optimize --objectives eta
+
 # Parameters that cannot be searched, and search spaces the engine would refuse.
 s=$(space bool 'vary:\n  do_loop_closing: {min: 0, max: 1}\n')
 expect_line "slamtune: error: $s:2: 'do_loop_closing' is a bool parameter: only numbers can be searched (set it with fix: or --set)" \

@@ -61,9 +61,9 @@ for case in toolbox:slam_toolbox_online_async.yaml:best.yaml:best_change.yaml \
   # Round trip: the next run's baseline is the recommendation.
   "$bin" optimize --params "$out/$full" --out "$out-again" "${short[@]}" >"$out-again.txt" 2>&1 ||
     fail "$name: optimize --params $full failed: $(tail -3 "$out-again.txt")"
-  grep -A40 '"default"' "$out-again/results.json" | sed -n '/"params"/,/}/p' >"$out.again.params"
+  grep -A400 '"default"' "$out-again/results.json" | sed -n '/"params"/,/}/{p;/}/q}' >"$out.again.params"
   if grep -q '"verdict_kind": "better"' "$out/results.json"; then
-    grep -A40 '"recommended": {' "$out/results.json" | sed -n '/"params"/,/}/p' >"$out.first.params"
+    grep -A400 '"recommended": {' "$out/results.json" | sed -n '/"params"/,/}/{p;/}/q}' >"$out.first.params"
     diff -q "$out.first.params" "$out.again.params" >/dev/null ||
       fail "$name: --params $full does not start from the recommendation: $(diff "$out.first.params" "$out.again.params")"
   fi

@@ -29,6 +29,7 @@ struct OptimizeArgs {
   std::string out;
   std::string resume;
   std::string space_file;
+  std::string objectives = optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kConsistency);
   std::size_t population = 66;
   unsigned generations = 60;
   std::size_t divisions = 10;
@@ -57,7 +58,8 @@ void EnsureWritableDir(const std::string& dir) {
 
 nlohmann::json InvocationJson(const OptimizeArgs& a) {
   return {{"inputs", a.inputs.ToJson()}, {"space", a.space_file},   {"population", a.population},
-          {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed}};
+          {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed},
+          {"objectives", a.objectives}};
 }
 
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
@@ -101,6 +103,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       args.generations = inv->at("generations");
       args.divisions = inv->at("divisions");
       args.seed = inv->at("seed");
+      // Folders written before objective sets existed were optimised on the paper's.
+      args.objectives = inv->value("objectives", optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kPaper));
     }
   } else if (std::filesystem::exists(db_path)) {
     throw InputError(dir, 0, "already holds an optimisation; use --resume DIR or a new --out");
@@ -125,6 +129,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   } else {
     settings.space = optim::SearchSpace::FromYaml(args.space_file);
   }
+  settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
   settings.population = args.population;
   settings.generations = args.generations;
   settings.divisions = args.divisions;
@@ -194,8 +199,12 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       for (const auto& d : settings.space.dimensions) {
         params += fmt::format("{}{}={:.4g}", params.empty() ? "" : " ", d.name, c.record.params.at(d.name));
       }
-      std::printf("%-12s %s | eta %.5f corner px %.0f enclosed %.0f | loops %d%s\n", c.label.c_str(),
-                  params.c_str(), c.record.occupied_ratio, c.record.corner_pixels, c.record.enclosed_areas,
+      std::string objectives;
+      for (optim::Objective o : result.objectives.objectives()) {
+        objectives += fmt::format("{}{} {:.4g}", objectives.empty() ? "" : " ", optim::InfoOf(o).short_name,
+                                  optim::ValueOf(c.record, o));
+      }
+      std::printf("%-12s %s | %s | loops %d%s\n", c.label.c_str(), params.c_str(), objectives.c_str(),
                   c.record.loop_closures,
                   c.record.has_gt ? fmt::format(" | trans {:.4f} m rot {:.3f} deg", c.record.trans_mean_m,
                                                 c.record.rot_mean_deg)
@@ -236,6 +245,11 @@ const SubcommandRegistrar kRegistrar{{
                      "paper's (r 2..6, g 6..20, p = 0.7, q = 0.4); 'front-end' for sequential matching and node "
                      "spacing plus r, g, p, q (maps that break before any loop closes); default: r and g around "
                      "the base configuration");
+      app.add_option("--objectives", args->objectives,
+                     "what the map is judged by: 'consistency' (default: unbacked hits u_h, corner pixels n_c, "
+                     "enclosed areas n_e; does not reward a map for breaking apart) or 'paper' (the seed paper's "
+                     "eta, n_c, n_e)")
+          ->capture_default_str();
       app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
       app.add_option("--generations", args->generations, "generations (default 60; 8 on the built-in world)");
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")

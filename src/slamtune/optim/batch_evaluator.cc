@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "slamtune/common/error.h"
+#include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/search_space.h"
 
 namespace slamtune::optim {
@@ -17,8 +18,8 @@ EvaluationRecord RunGuarded(const EvaluateFn& evaluate, const Assignment& assign
     record = evaluate(assignment);
     record.key = key;
     record.params = assignment;
-    for (double v : record.Objectives()) {
-      if (!std::isfinite(v)) {
+    for (Objective objective : AllObjectives()) {
+      if (record.status == "ok" && !std::isfinite(ValueOf(record, objective))) {
         record = EvaluationRecord::Failed(key, assignment, "non-finite objective value");
         break;
       }

@@ -1,4 +1,5 @@
 #include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/objective_set.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +45,7 @@ TEST(BatchEvaluator, FailuresAreRecordedAndScoredWorst) {
   EXPECT_EQ(out[0].reason, "negative radius");
   EXPECT_EQ(out[1].status, "failed");
   EXPECT_EQ(out[1].reason, "non-finite objective value");
-  EXPECT_EQ(out[0].Objectives()[1], 1e9);
+  EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kPaper).Score(out[0])[1], 1e9);
   EXPECT_EQ(out[2].status, "ok");
   EXPECT_EQ(eval.stats().failed, 2u);
 }
@@ -84,7 +85,7 @@ TEST(BatchEvaluator, ParallelEqualsSerial) {
   for (int i = 0; i < 20; ++i) batch.push_back({{"r", 0.1 * i}});
   BatchEvaluator serial(Fake, nullptr, 1), parallel(Fake, nullptr, 4);
   const auto a = serial.Evaluate(batch), b = parallel.Evaluate(batch);
-  for (std::size_t i = 0; i < batch.size(); ++i) EXPECT_EQ(a[i].Objectives(), b[i].Objectives());
+  for (std::size_t i = 0; i < batch.size(); ++i) EXPECT_EQ(ObjectiveSet().Score(a[i]), ObjectiveSet().Score(b[i]));
 }
 
 // Remote slots served in this process, through the record's JSON as the MPI workers send it.
@@ -129,7 +130,7 @@ TEST(BatchEvaluator, RemoteSlotsGiveTheLocalResults) {
     EXPECT_EQ(a[i].params, b[i].params);
     EXPECT_EQ(a[i].status, b[i].status);
     EXPECT_EQ(a[i].reason, b[i].reason);
-    EXPECT_EQ(a[i].Objectives(), b[i].Objectives());  // bit-exact through JSON
+    EXPECT_EQ(ObjectiveSet().Score(a[i]), ObjectiveSet().Score(b[i]));  // bit-exact through JSON
   }
   EXPECT_GT(remote.served, 0);
   EXPECT_EQ(mixed.stats().remote, static_cast<std::size_t>(remote.served));

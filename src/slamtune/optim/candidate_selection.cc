@@ -22,12 +22,12 @@ bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 // Sum over objectives of (f - min) / (max - min) over the given records (zero ranges -> 0).
-std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records,
-                                   const std::vector<std::size_t>& among) {
-  const std::size_t m = 3;
+std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records, const std::vector<std::size_t>& among,
+                                   const ObjectiveSet& objectives) {
+  const std::size_t m = objectives.size();
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
   for (std::size_t i : among) {
-    const auto f = records[i].Objectives();
+    const auto f = objectives.Score(records[i]);
     for (std::size_t k = 0; k < m; ++k) {
       lo[k] = std::min(lo[k], f[k]);
       hi[k] = std::max(hi[k], f[k]);
@@ -35,7 +35,7 @@ std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records,
   }
   std::vector<double> sums(records.size(), 0.0);
   for (std::size_t i : among) {
-    const auto f = records[i].Objectives();
+    const auto f = objectives.Score(records[i]);
     for (std::size_t k = 0; k < m; ++k) sums[i] += hi[k] > lo[k] ? (f[k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
   }
   return sums;
@@ -50,13 +50,13 @@ std::vector<std::size_t> OkIndices(const std::vector<EvaluationRecord>& records)
 
 }  // namespace
 
-Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population) {
+Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population, const ObjectiveSet& objectives) {
   SLAMTUNE_CHECK(!population.empty());
   std::map<std::string, int> count;
   for (const auto& r : population) ++count[r.key];
   std::vector<std::size_t> all(population.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  const auto sums = NormalisedSums(population, all);
+  const auto sums = NormalisedSums(population, all, objectives);
   Recommendation best;
   best.share = -1;
   for (std::size_t i = 0; i < population.size(); ++i) {
@@ -71,14 +71,15 @@ Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& populati
   return best;
 }
 
-std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records) {
+std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
   const auto ok = OkIndices(records);
+  std::vector<std::vector<double>> scores(records.size());
+  for (std::size_t i : ok) scores[i] = objectives.Score(records[i]);
   std::vector<std::size_t> front;
   for (std::size_t i : ok) {
-    const auto fi = records[i].Objectives();
     bool dominated = false;
     for (std::size_t j : ok) {
-      if (j != i && Dominates(records[j].Objectives(), fi)) {
+      if (j != i && Dominates(scores[j], scores[i])) {
         dominated = true;
         break;
       }
@@ -88,13 +89,13 @@ std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& recor
   return front;
 }
 
-std::size_t Knee(const std::vector<EvaluationRecord>& records) {
-  const auto front = NonDominated(records);
+std::size_t Knee(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
+  const auto front = NonDominated(records, objectives);
   SLAMTUNE_CHECK(!front.empty());
-  const std::size_t m = 3;
+  const std::size_t m = objectives.size();
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
   for (std::size_t i : front) {
-    const auto f = records[i].Objectives();
+    const auto f = objectives.Score(records[i]);
     for (std::size_t k = 0; k < m; ++k) {
       lo[k] = std::min(lo[k], f[k]);
       hi[k] = std::max(hi[k], f[k]);
@@ -103,7 +104,7 @@ std::size_t Knee(const std::vector<EvaluationRecord>& records) {
   std::size_t best = front.front();
   double best_d = std::numeric_limits<double>::infinity();
   for (std::size_t i : front) {
-    const auto f = records[i].Objectives();
+    const auto f = objectives.Score(records[i]);
     double d = 0.0;
     for (std::size_t k = 0; k < m; ++k) {
       const double z = hi[k] > lo[k] ? (f[k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
@@ -117,11 +118,11 @@ std::size_t Knee(const std::vector<EvaluationRecord>& records) {
   return best;
 }
 
-std::size_t Worst(const std::vector<EvaluationRecord>& records) {
+std::size_t Worst(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
   SLAMTUNE_CHECK(!records.empty());
   const auto ok = OkIndices(records);
   if (ok.empty()) return 0;
-  const auto sums = NormalisedSums(records, ok);
+  const auto sums = NormalisedSums(records, ok, objectives);
   std::size_t worst = ok.front();
   for (std::size_t i : ok)
     if (sums[i] > sums[worst]) worst = i;
@@ -145,16 +146,16 @@ VerdictSummary Verdict(const EvaluationRecord& rec, const EvaluationRecord& base
   if (base.status != "ok") {
     return {VerdictKind::kFailed, fmt::format("{} failed to evaluate on this log: {}", label, base.reason)};
   }
-  const auto a = rec.Objectives(), b = base.Objectives();
-  static const char* names[] = {"occupied-cell proportion", "corner pixels", "enclosed areas"};
+  const auto a = options.objectives.Score(rec), b = options.objectives.Score(base);
   int better = 0, worse = 0;
   std::string detail;
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < a.size(); ++k) {
     const double scale = std::max({std::fabs(a[k]), std::fabs(b[k]), 1e-12});
     const double rel = (a[k] - b[k]) / scale;
     if (rel < -options.equivalence_tolerance) ++better;
     if (rel > options.equivalence_tolerance) ++worse;
-    detail += fmt::format("{}{} {:.6g} vs {:.6g}", k ? ", " : "", names[k], a[k], b[k]);
+    detail += fmt::format("{}{} {:.4g} vs {:.4g}", k ? ", " : "", InfoOf(options.objectives.objectives()[k]).title, a[k],
+                          b[k]);
   }
   const std::string loops =
       fmt::format("loop closures {} (recommended) vs {} (base)", rec.loop_closures, base.loop_closures);

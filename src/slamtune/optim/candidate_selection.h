@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "slamtune/optim/evaluation_record.h"
+#include "slamtune/optim/objective_set.h"
 
 namespace slamtune::optim {
 
@@ -24,20 +25,23 @@ struct Recommendation {
   int share = 0;          // individuals with the same parameter set
 };
 
+// Every function below ranks records by `objectives` (objective_set.h).
+
 // `population`: the final population's records (one per individual). Must not be empty.
-Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population);
+Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population, const ObjectiveSet& objectives);
 
 // Indices of the non-dominated records (status ok) of `records`, in input order.
-std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records);
+std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives);
 
 // Index of the knee of `records`' non-dominated front. Must contain an ok record.
-std::size_t Knee(const std::vector<EvaluationRecord>& records);
+std::size_t Knee(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives);
 
 // Index of the worst ok record (largest sum of objectives normalised over all ok records);
 // a failed record only when none is ok.
-std::size_t Worst(const std::vector<EvaluationRecord>& records);
+std::size_t Worst(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives);
 
 struct VerdictOptions {
+  ObjectiveSet objectives;              // what is compared
   double equivalence_tolerance = 0.05;  // relative difference per objective treated as no difference
   std::string base_label = "slam_karto's defaults";  // what the recommendation is compared with
 };

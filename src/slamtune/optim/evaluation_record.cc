@@ -2,11 +2,6 @@
 
 namespace slamtune::optim {
 
-std::vector<double> EvaluationRecord::Objectives() const {
-  if (status != "ok") return {1.0, 1e9, 1e9};
-  return {occupied_ratio, corner_pixels, enclosed_areas};
-}
-
 EvaluationRecord EvaluationRecord::Failed(const std::string& key, const std::map<std::string, double>& params,
                                           const std::string& reason) {
   EvaluationRecord r;

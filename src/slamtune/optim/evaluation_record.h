@@ -1,6 +1,7 @@
-// What one evaluation of a parameter set produced: the three objectives of the seed paper
-// (Han et al. 2020: eta, corner pixels, enclosed areas) with their second figures, the SLAM
-// run's outcome, and ground-truth errors when relations were given. Stored one row per
+// What one evaluation of a parameter set produced: the map figures the objectives are read
+// from (objective_set.h: the seed paper's eta, corner pixels and enclosed areas, and the
+// unbacked-hit share), the SLAM run's outcome, and ground-truth errors when relations were
+// given. Stored one row per
 // evaluation in the run's SQLite database, so it converts to and from JSON.
 #pragma once
 
@@ -18,7 +19,8 @@ struct EvaluationRecord {
   std::string status = "ok";              // "ok" or "failed"
   std::string reason;                     // why it failed (exception text, NaN, ...)
 
-  // Objectives (minimised) and second figures (metrics/map_quality.h).
+  // Map figures (metrics/map_quality.h, slam/occupancy_grid.h); objective_set.h picks the
+  // objectives among them.
   double occupied_ratio = 0.0;        // eta
   double corner_pixels = 0.0;         // n_c (objective)
   double enclosed_areas = 0.0;        // n_e
@@ -39,9 +41,6 @@ struct EvaluationRecord {
   double trans_mean_m = 0.0, trans_std_m = 0.0, rot_mean_deg = 0.0, rot_std_deg = 0.0;
   int relations_used = 0;
 
-  // The objective vector handed to NSGA-III. A failed evaluation is scored worst on every
-  // objective (eta 1, and 1e9 corner pixels and enclosed areas), so the run goes on.
-  std::vector<double> Objectives() const;
   static EvaluationRecord Failed(const std::string& key, const std::map<std::string, double>& params,
                                  const std::string& reason);
 };

@@ -13,6 +13,7 @@
 #include "slamtune/io/map_image.h"
 #include "slamtune/optim/candidate_selection.h"
 #include "slamtune/optim/evaluation_record.h"
+#include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/search_space.h"
 
 namespace slamtune::optim {
@@ -27,7 +28,7 @@ struct Candidate {
 struct GenerationSnapshot {
   int generation = 0;  // 1-based, as in the paper's Figure 13
   std::vector<std::vector<double>> decisions;   // per individual, SearchSpace order
-  std::vector<std::vector<double>> objectives;  // per individual: eta, corner pixels, enclosed areas
+  std::vector<std::vector<double>> objectives;  // per individual, in OptimizeResult::objectives order
 };
 
 struct OptimizeResult {
@@ -35,6 +36,7 @@ struct OptimizeResult {
   std::vector<std::string> log_input;  // what was read and chosen (recording topics, offset, beams)
   std::string relations_path;  // empty without --relations
   SearchSpace space;
+  ObjectiveSet objectives;     // what was minimised; snapshots' objective vectors follow its order
   nlohmann::json settings;     // population, generations, seed, jobs, ...
 
   std::vector<Candidate> candidates;  // recommended, knee, worst, default (in that order)

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <random>
 
 #include "slamtune/common/error.h"
@@ -85,15 +86,42 @@ void OptimizeSettings::Validate() const {
 nlohmann::json OptimizeSettings::ToJson() const {
   return {{"log", log_path},           {"relations", relations_path}, {"space", space.Fingerprint()},
           {"default", default_assignment}, {"divisions", divisions},  {"population", population},
-          {"generations", generations},  {"seed", seed},              {"engine", engine}};
+          {"generations", generations},  {"seed", seed},              {"engine", engine},
+          {"objectives", objectives.name()}};
 }
+
+namespace {
+
+// Stored settings as today's ToJson writes them: folders written before objective sets
+// existed were optimised on the paper's objectives.
+nlohmann::json UpgradedSettings(nlohmann::json stored) {
+  if (stored.is_object() && !stored.contains("objectives")) {
+    stored["objectives"] = ObjectiveSet::NameOf(ObjectiveSetKind::kPaper);
+  }
+  return stored;
+}
+
+// "best u_h 0.0123 n_c 4512 n_e 3" over the latest population.
+std::string BestObjectives(const ObjectiveSet& objectives, const std::vector<std::vector<double>>& population) {
+  std::string out = "best";
+  for (std::size_t k = 0; k < objectives.size(); ++k) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& f : population) best = std::min(best, f[k]);
+    out += fmt::format(" {} {:.4g}", InfoOf(objectives.objectives()[k]).short_name, best);
+  }
+  return out;
+}
+
+}  // namespace
 
 OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
                                bool resume, const OptimizeHooks& hooks) {
   // Preamble: validate everything before any work.
   settings.Validate();
   const nlohmann::json settings_json = settings.ToJson();
-  const auto stored = store.Settings();
+  const auto stored_raw = store.Settings();
+  const std::optional<nlohmann::json> stored =
+      stored_raw ? std::optional<nlohmann::json>(UpgradedSettings(*stored_raw)) : std::nullopt;
   if (resume) {
     if (!stored) throw InputError(store.path(), 0, "--resume: this folder holds no slamtune optimisation");
     if (*stored != settings_json) {
@@ -112,13 +140,14 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
 
   const auto start = Clock::now();
   auto shared = std::shared_ptr<BatchEvaluator>(&evaluator, [](BatchEvaluator*) {});
-  pagmo::problem problem{TuningProblem(settings.space, shared)};
+  pagmo::problem problem{TuningProblem(settings.space, settings.objectives, shared)};
 
   OptimizeResult result;
   result.log_path = settings.log_path;
   result.log_input = settings.log_input;
   result.relations_path = settings.relations_path;
   result.space = settings.space;
+  result.objectives = settings.objectives;
   result.settings = settings_json;
 
   const unsigned total_gens = settings.generations;
@@ -135,14 +164,9 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     const double rate = elapsed > 0 ? st.evaluated / elapsed * 60.0 : 0.0;
     const std::size_t done = std::min(total_requests, st.requested);
     const double left = done > 0 ? elapsed / static_cast<double>(done) * (total_requests - done) : -1;
-    double best[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                      std::numeric_limits<double>::infinity()};
-    for (const auto& f : current_f)
-      for (int k = 0; k < 3; ++k) best[k] = std::min(best[k], f[k]);
-    hooks.progress(fmt::format("gen {}/{} | evaluations {}/{} | cache hits {} | {:.1f} runs/min | "
-                               "best eta {:.4g} corner px {:.0f} enclosed {:.0f} | left {}",
-                               gen, total_gens, done, total_requests, st.cache_hits, rate, best[0], best[1], best[2],
-                               FormatDuration(left)),
+    hooks.progress(fmt::format("gen {}/{} | evaluations {}/{} | cache hits {} | {:.1f} runs/min | {} | left {}", gen,
+                               total_gens, done, total_requests, st.cache_hits, rate,
+                               BestObjectives(settings.objectives, current_f), FormatDuration(left)),
                    force);
   };
 
@@ -205,12 +229,12 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   const std::vector<EvaluationRecord> final_records = RecordsOf(evaluator, settings.space, final_x);
   RequireAnySuccess(final_records, "the final population");
   result.evaluations = store.All();
-  const Recommendation rec = RecommendByMajority(final_records);
+  const Recommendation rec = RecommendByMajority(final_records, settings.objectives);
   result.recommended_share = rec.share;
   const EvaluationRecord defaults = evaluator.Evaluate({settings.default_assignment}).front();
-  const std::size_t knee = Knee(final_records);
+  const std::size_t knee = Knee(final_records, settings.objectives);
   result.evaluations = store.All();
-  const std::size_t worst = Worst(result.evaluations);
+  const std::size_t worst = Worst(result.evaluations, settings.objectives);
 
   result.candidates = {
       {"recommended",
@@ -228,6 +252,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   };
   VerdictOptions verdict_options;
   verdict_options.base_label = settings.base_label;
+  verdict_options.objectives = settings.objectives;
   const VerdictSummary verdict = Verdict(final_records[rec.index], defaults, verdict_options);
   result.verdict = verdict.text;
   result.verdict_kind = verdict.kind;

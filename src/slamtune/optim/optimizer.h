@@ -17,6 +17,7 @@
 #include "slamtune/io/map_image.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_store.h"
+#include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/optim/search_space.h"
 
@@ -27,6 +28,7 @@ struct OptimizeSettings {
   std::vector<std::string> log_input;  // what was read from the log and chosen, for the report
   std::string relations_path;  // empty without ground truth
   SearchSpace space = SearchSpace::PaperDefault();
+  ObjectiveSet objectives;  // what NSGA-III minimises and the candidates are ranked by
   Assignment default_assignment;  // the base configuration's values of the varied (and fixed) parameters
   std::string base_label = "slam_karto's defaults";  // what the base is: "your configuration (FILE)", ...
   std::size_t divisions = 10;     // Das-Dennis divisions: M = 3, D = 10 -> 66 reference points

@@ -19,6 +19,9 @@ EvaluationRecord FakeSlam(const Assignment& a) {
   rec.occupied_ratio = 0.03 + 0.002 * std::pow(r - 4.5, 2) + 0.0001 * g;
   rec.corner_pixels = std::round(1000 + 30 * std::pow(g - 12, 2) + 5 * r);
   rec.enclosed_areas = std::round(5 + std::fabs(r - 3) + std::fabs(g - 15) / 3);
+  rec.hits = 10000;
+  // The unbacked-hit share runs against eta here, so the two objective sets disagree.
+  rec.hits_in_free_cells = std::round(rec.hits * (0.5 - rec.occupied_ratio));
   rec.loop_closures = static_cast<int>(r);
   rec.nodes = 100;
   return rec;
@@ -45,10 +48,11 @@ OptimizeSettings SmallSettings() {
   return s;
 }
 
-OptimizeResult Optimize(const std::string& store_path, bool resume, EvaluateFn fn, int jobs = 2) {
+OptimizeResult Optimize(const std::string& store_path, bool resume, EvaluateFn fn, int jobs = 2,
+                        OptimizeSettings settings = SmallSettings()) {
   EvaluationStore store(store_path);
   BatchEvaluator evaluator(std::move(fn), &store, jobs);
-  return RunOptimization(SmallSettings(), evaluator, store, resume, {});
+  return RunOptimization(settings, evaluator, store, resume, {});
 }
 
 std::vector<std::vector<double>> FinalPopulation(const std::string& store_path) {
@@ -134,6 +138,49 @@ TEST(Optimizer, ResumeRefusesDifferentSettingsAndEmptyFolders) {
   EvaluationStore empty(FreshStore("empty"));
   BatchEvaluator ev2(FakeSlam, &empty, 1);
   EXPECT_THROW(RunOptimization(SmallSettings(), ev2, empty, true, {}), InputError);
+}
+
+TEST(Optimizer, FoldersWrittenBeforeObjectiveSetsResumeOnThePaperObjectives) {
+  OptimizeSettings paper = SmallSettings();
+  paper.objectives = ObjectiveSet(ObjectiveSetKind::kPaper);
+  paper.generations = 2;
+  const std::string path = FreshStore("old_folder");
+  const OptimizeResult first = Optimize(path, false, FakeSlam, 1, paper);
+  {
+    EvaluationStore store(path);
+    nlohmann::json settings = *store.Settings();
+    settings.erase("objectives");  // as such a folder was written
+    store.SetSettings(settings);
+  }
+  const OptimizeResult resumed = Optimize(path, true, FakeSlam, 1, paper);
+  EXPECT_EQ(resumed.candidates[0].record.key, first.candidates[0].record.key);
+  EXPECT_EQ(resumed.objectives.kind(), ObjectiveSetKind::kPaper);
+  OptimizeSettings consistency = paper;
+  consistency.objectives = ObjectiveSet(ObjectiveSetKind::kConsistency);
+  try {
+    Optimize(path, true, FakeSlam, 1, consistency);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different settings (objectives)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Optimizer, TheObjectiveSetDecidesWhatIsMinimised) {
+  OptimizeSettings settings = SmallSettings();
+  settings.generations = 1;
+  const OptimizeResult consistency = Optimize(FreshStore("set_consistency"), false, FakeSlam, 1, settings);
+  EXPECT_EQ(consistency.objectives.kind(), ObjectiveSetKind::kConsistency);
+  ASSERT_FALSE(consistency.snapshots.empty());
+  const GenerationSnapshot& snapshot = consistency.snapshots.front();
+  for (std::size_t i = 0; i < snapshot.decisions.size(); ++i) {
+    const EvaluationRecord rec = FakeSlam(settings.space.Assign(snapshot.decisions[i]));
+    EXPECT_EQ(snapshot.objectives[i], (std::vector<double>{ValueOf(rec, Objective::kUnbackedHits), rec.corner_pixels,
+                                                           rec.enclosed_areas}));
+  }
+  settings.objectives = ObjectiveSet(ObjectiveSetKind::kPaper);
+  const OptimizeResult paper = Optimize(FreshStore("set_paper"), false, FakeSlam, 1, settings);
+  EXPECT_EQ(paper.snapshots.front().objectives.front()[0],
+            FakeSlam(settings.space.Assign(paper.snapshots.front().decisions.front())).occupied_ratio);
 }
 
 TEST(Optimizer, StopsWithAReadableErrorWhenEveryRunFails) {

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "slamtune/io/carmen_reader.h"
+#include "slamtune/optim/objective_set.h"
 #include "slamtune/sim/simulation.h"
 
 namespace slamtune::optim {
@@ -57,8 +58,10 @@ std::vector<Evaluated> EvaluateAll(const SlamEvaluationContext& context, const s
 
 void ExpectIdentical(const Evaluated& a, const Evaluated& b, const std::string& label) {
   SCOPED_TRACE(label);
-  const std::vector<double> fa = a.record.Objectives();
-  const std::vector<double> fb = b.record.Objectives();
+  const std::vector<double> fa = ObjectiveSet(ObjectiveSetKind::kPaper).Score(a.record);
+  const std::vector<double> fb = ObjectiveSet(ObjectiveSetKind::kPaper).Score(b.record);
+  EXPECT_EQ(Bits(a.record.hits_in_free_cells), Bits(b.record.hits_in_free_cells));
+  EXPECT_EQ(Bits(a.record.hits_in_unknown_cells), Bits(b.record.hits_in_unknown_cells));
   ASSERT_EQ(fa.size(), fb.size());
   for (std::size_t k = 0; k < fa.size(); ++k) EXPECT_EQ(Bits(fa[k]), Bits(fb[k])) << "objective " << k;
   EXPECT_EQ(Bits(a.record.occupied_ratio_known), Bits(b.record.occupied_ratio_known));
@@ -99,7 +102,8 @@ void ExpectIdentical(const Evaluated& a, const Evaluated& b, const std::string& 
 
 void ExpectSameRecord(const EvaluationRecord& a, const EvaluationRecord& b, const std::string& label) {
   SCOPED_TRACE(label);
-  const std::vector<double> fa = a.Objectives(), fb = b.Objectives();
+  const std::vector<double> fa = ObjectiveSet(ObjectiveSetKind::kPaper).Score(a),
+                            fb = ObjectiveSet(ObjectiveSetKind::kPaper).Score(b);
   for (std::size_t k = 0; k < fa.size(); ++k) EXPECT_EQ(Bits(fa[k]), Bits(fb[k])) << "objective " << k;
   EXPECT_EQ(Bits(a.occupied_ratio_known), Bits(b.occupied_ratio_known));
   EXPECT_EQ(Bits(a.corners), Bits(b.corners));

@@ -4,15 +4,15 @@
 
 namespace slamtune::optim {
 
-TuningProblem::TuningProblem(SearchSpace space, std::shared_ptr<BatchEvaluator> evaluator)
-    : space_(std::move(space)), evaluator_(std::move(evaluator)) {
+TuningProblem::TuningProblem(SearchSpace space, ObjectiveSet objectives, std::shared_ptr<BatchEvaluator> evaluator)
+    : space_(std::move(space)), objectives_(std::move(objectives)), evaluator_(std::move(evaluator)) {
   space_.Validate("search space");
   SLAMTUNE_CHECK(evaluator_ != nullptr);
 }
 
 pagmo::vector_double TuningProblem::fitness(const pagmo::vector_double& x) const {
   SLAMTUNE_CHECK(evaluator_ != nullptr);
-  return evaluator_->Evaluate({space_.Assign(x)}).front().Objectives();
+  return objectives_.Score(evaluator_->Evaluate({space_.Assign(x)}).front());
 }
 
 pagmo::vector_double TuningProblem::batch_fitness(const pagmo::vector_double& xs) const {
@@ -25,9 +25,9 @@ pagmo::vector_double TuningProblem::batch_fitness(const pagmo::vector_double& xs
                                                        xs.begin() + static_cast<long>(i + n))));
   }
   pagmo::vector_double out;
-  out.reserve(batch.size() * 3);
+  out.reserve(batch.size() * objectives_.size());
   for (const auto& record : evaluator_->Evaluate(batch)) {
-    const auto f = record.Objectives();
+    const auto f = objectives_.Score(record);
     out.insert(out.end(), f.begin(), f.end());
   }
   return out;

@@ -67,7 +67,7 @@ std::string Evidence(const std::vector<ObjectiveErrorCorrelation>& objectives) {
   for (const auto& [tracking, phrase] : groups) {
     std::vector<std::string> names;
     for (std::size_t k = 0; k < objectives.size(); ++k) {
-      if (objectives[k].tracking == tracking) names.push_back(kObjectives[k].short_name);
+      if (objectives[k].tracking == tracking) names.push_back(objectives[k].short_name);
     }
     if (names.empty()) continue;
     // Verb agreement: "eta tracks", "eta and n_c track"; "does"/"do"; "runs"/"run".
@@ -102,6 +102,7 @@ std::vector<optim::EvaluationRecord> GroundTruthRuns(const std::vector<optim::Ev
 }
 
 ErrorCorrelationSummary CorrelateObjectivesWithError(const std::vector<optim::EvaluationRecord>& evaluations,
+                                                     const std::vector<optim::Objective>& objectives,
                                                      const CorrelationReadingOptions& options) {
   options.Validate();
   const std::vector<optim::EvaluationRecord> runs = GroundTruthRuns(evaluations);
@@ -109,14 +110,16 @@ ErrorCorrelationSummary CorrelateObjectivesWithError(const std::vector<optim::Ev
   out.parameter_sets = static_cast<int>(runs.size());
   std::vector<double> error;
   for (const auto& r : runs) error.push_back(r.trans_mean_m);
-  for (std::size_t k = 0; k < kObjectives.size(); ++k) {
+  for (optim::Objective objective : objectives) {
+    const optim::ObjectiveInfo& info = optim::InfoOf(objective);
     std::vector<double> values;
-    for (const auto& r : runs) values.push_back(ObjectiveValues(r)[k]);
+    for (const auto& r : runs) values.push_back(optim::ValueOf(r, objective));
     ObjectiveErrorCorrelation c;
-    c.objective = kObjectives[k].key;
+    c.objective = info.key;
+    c.short_name = info.short_name;
     c.spearman = SpearmanCorrelation(values, error);
     c.tracking = Classify(c.spearman, options);
-    c.reading = Reading(kObjectives[k].title, c.spearman, c.tracking);
+    c.reading = Reading(info.title, c.spearman, c.tracking);
     out.objectives.push_back(std::move(c));
   }
   out.statement = fmt::format(

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "slamtune/optim/evaluation_record.h"
+#include "slamtune/optim/objective_set.h"
 #include "slamtune/report/rank_correlation.h"
 
 namespace slamtune::report {
@@ -28,7 +29,8 @@ struct CorrelationReadingOptions {
 enum class Tracking { kTracks, kWeakly, kNot, kAgainst, kUndecided };
 
 struct ObjectiveErrorCorrelation {
-  std::string objective;     // kObjectives key
+  std::string objective;     // ObjectiveInfo key, e.g. "unbacked_hits"
+  std::string short_name;    // ObjectiveInfo short name, e.g. "u_h"
   RankCorrelation spearman;  // objective vs translational mean error
   Tracking tracking = Tracking::kUndecided;
   std::string reading;       // one sentence in plain words
@@ -36,7 +38,7 @@ struct ObjectiveErrorCorrelation {
 
 struct ErrorCorrelationSummary {
   int parameter_sets = 0;  // distinct parameter sets that ran and have ground truth
-  std::vector<ObjectiveErrorCorrelation> objectives;  // in kObjectives order
+  std::vector<ObjectiveErrorCorrelation> objectives;  // in the order asked for
   std::string statement;   // a paragraph for the report: the evidence, grouped, and its caveat
 };
 
@@ -44,7 +46,9 @@ struct ErrorCorrelationSummary {
 // has ground-truth errors, in evaluation order.
 std::vector<optim::EvaluationRecord> GroundTruthRuns(const std::vector<optim::EvaluationRecord>& evaluations);
 
+// Each of `objectives` against the translational error of GroundTruthRuns(evaluations).
 ErrorCorrelationSummary CorrelateObjectivesWithError(const std::vector<optim::EvaluationRecord>& evaluations,
+                                                     const std::vector<optim::Objective>& objectives,
                                                      const CorrelationReadingOptions& options = {});
 
 }  // namespace slamtune::report

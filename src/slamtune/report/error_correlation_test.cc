@@ -11,6 +11,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
+const std::vector<optim::Objective> kPaper = optim::ObjectiveSet(optim::ObjectiveSetKind::kPaper).objectives();
+
 TEST(GroundTruthRuns, KeepsDistinctSuccessfulRunsWithErrors) {
   const auto result = testing::FakeOptimizeResult(true);
   // 12 distinct sets, one repeated, one failed.
@@ -20,7 +22,7 @@ TEST(GroundTruthRuns, KeepsDistinctSuccessfulRunsWithErrors) {
 }
 
 TEST(CorrelateObjectivesWithError, ClassifiesAndStatesTheEvidence) {
-  const auto summary = CorrelateObjectivesWithError(testing::FakeOptimizeResult(true).evaluations);
+  const auto summary = CorrelateObjectivesWithError(testing::FakeOptimizeResult(true).evaluations, kPaper);
   EXPECT_EQ(summary.parameter_sets, 12);
   ASSERT_EQ(summary.objectives.size(), 3u);
   EXPECT_EQ(summary.objectives[0].objective, "occupied_ratio");
@@ -36,11 +38,11 @@ TEST(CorrelateObjectivesWithError, ClassifiesAndStatesTheEvidence) {
 TEST(CorrelateObjectivesWithError, TooFewSetsCannotBeJudged) {
   auto evaluations = testing::FakeOptimizeResult(true).evaluations;
   evaluations.resize(3);
-  const auto summary = CorrelateObjectivesWithError(evaluations);
+  const auto summary = CorrelateObjectivesWithError(evaluations, kPaper);
   EXPECT_EQ(summary.objectives[0].tracking, Tracking::kUndecided);
   EXPECT_THAT(summary.objectives[0].reading, HasSubstr("too few parameter sets"));
   EXPECT_THAT(summary.statement, HasSubstr("eta, n_c and n_e cannot be judged"));
-  const auto none = CorrelateObjectivesWithError({});
+  const auto none = CorrelateObjectivesWithError({}, kPaper);
   EXPECT_EQ(none.parameter_sets, 0);
   EXPECT_THAT(none.objectives[1].reading, HasSubstr("no correlation"));
 }

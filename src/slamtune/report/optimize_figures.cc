@@ -13,7 +13,7 @@
 namespace slamtune::report {
 namespace {
 
-// The three projections of the objective space, as index pairs into kObjectives.
+// The three projections of the objective space, as index pairs into the result's objectives.
 constexpr std::array<std::pair<int, int>, 3> kProjections = {{{0, 1}, {0, 2}, {1, 2}}};
 
 PlotOptions PanelOptions(const FigureOptions& f) {
@@ -30,9 +30,8 @@ std::vector<std::pair<const optim::Candidate*, std::vector<double>>> PlottableCa
   std::vector<std::pair<const optim::Candidate*, std::vector<double>>> out;
   for (const auto* c : CandidatesInReportOrder(result)) {
     if (c->record.status != "ok") continue;
-    const auto v = ObjectiveValues(c->record);
-    std::vector<double> objectives(v.begin(), v.end());
-    if (!IsFailureScore(objectives)) out.emplace_back(c, objectives);
+    std::vector<double> objectives = result.objectives.Values(c->record);
+    if (!result.objectives.IsFailureScore(objectives)) out.emplace_back(c, objectives);
   }
   return out;
 }
@@ -63,9 +62,9 @@ cv::Mat ProjectionPanels(const std::vector<std::pair<std::string, std::vector<st
     PlotOptions o = PanelOptions(options);
     o.x_limits = limits[ix];
     o.y_limits = limits[iy];
-    o.x_label = kObjectives[ix].title;
-    o.y_label = kObjectives[iy].title;
-    o.title = fmt::format("{} vs {}", kObjectives[iy].short_name, kObjectives[ix].short_name);
+    o.x_label = ObjectiveAt(result, ix).title;
+    o.y_label = ObjectiveAt(result, iy).title;
+    o.title = fmt::format("{} vs {}", ObjectiveAt(result, iy).short_name, ObjectiveAt(result, ix).short_name);
     o.legend = panels.empty();  // one legend is enough for the row
     panels.push_back(RenderPlot(series, o).image);
   }
@@ -76,11 +75,12 @@ cv::Mat ProjectionPanels(const std::vector<std::pair<std::string, std::vector<st
 }
 
 // Valid individuals of a snapshot, and how many were left out.
-std::pair<std::vector<std::vector<double>>, int> ValidIndividuals(const optim::GenerationSnapshot& snapshot) {
+std::pair<std::vector<std::vector<double>>, int> ValidIndividuals(const optim::GenerationSnapshot& snapshot,
+                                                                   const optim::ObjectiveSet& objectives) {
   std::vector<std::vector<double>> valid;
   int failed = 0;
   for (const auto& v : snapshot.objectives) {
-    if (IsFailureScore(v)) ++failed;
+    if (objectives.IsFailureScore(v)) ++failed;
     else valid.push_back(v);
   }
   return {valid, failed};
@@ -131,22 +131,21 @@ Series CandidateSeries(const optim::Candidate& candidate, double x, double y) {
   return s;
 }
 
-std::array<std::optional<AxisLimits>, 3> ObjectiveLimits(const optim::OptimizeResult& result) {
-  std::array<double, 3> lo, hi;
-  lo.fill(std::numeric_limits<double>::infinity());
-  hi.fill(-std::numeric_limits<double>::infinity());
+std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResult& result) {
+  const std::size_t m = result.objectives.size();
+  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -std::numeric_limits<double>::infinity());
   auto include = [&](const std::vector<double>& v) {
-    for (std::size_t k = 0; k < 3; ++k) {
+    for (std::size_t k = 0; k < m; ++k) {
       lo[k] = std::min(lo[k], v[k]);
       hi[k] = std::max(hi[k], v[k]);
     }
   };
   for (const auto& snapshot : result.snapshots) {
-    for (const auto& v : ValidIndividuals(snapshot).first) include(v);
+    for (const auto& v : ValidIndividuals(snapshot, result.objectives).first) include(v);
   }
   for (const auto& [c, v] : PlottableCandidates(result)) include(v);
-  std::array<std::optional<AxisLimits>, 3> out;
-  for (std::size_t k = 0; k < 3; ++k) {
+  std::vector<std::optional<AxisLimits>> out(m);
+  for (std::size_t k = 0; k < m; ++k) {
     if (lo[k] > hi[k]) continue;
     const AxisTicks t = MakeNiceTicks(lo[k], hi[k], 6);
     const double range = hi[k] - lo[k];
@@ -179,7 +178,7 @@ cv::Mat MapsSideBySide(const optim::OptimizeResult& result, const FigureOptions&
 cv::Mat PopulationFigure(const optim::GenerationSnapshot& snapshot, const optim::OptimizeResult& result,
                          const FigureOptions& options) {
   options.Validate();
-  const auto [valid, failed] = ValidIndividuals(snapshot);
+  const auto [valid, failed] = ValidIndividuals(snapshot, result.objectives);
   const std::string name = fmt::format("population ({})", valid.size());
   return ProjectionPanels({{name, valid}}, result, true, options,
                           fmt::format("Generation {}: population in objective space{}", snapshot.generation,
@@ -191,7 +190,7 @@ cv::Mat PopulationEvolutionFigure(const optim::OptimizeResult& result, const Fig
   std::vector<std::pair<std::string, std::vector<std::vector<double>>>> groups;
   int failed = 0;
   for (const auto& snapshot : result.snapshots) {
-    auto [valid, f] = ValidIndividuals(snapshot);
+    auto [valid, f] = ValidIndividuals(snapshot, result.objectives);
     failed += f;
     groups.emplace_back(fmt::format("generation {}", snapshot.generation), std::move(valid));
   }
@@ -205,27 +204,29 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
                                const FigureOptions& options) {
   options.Validate();
   std::vector<cv::Mat> panels;
-  for (std::size_t k = 0; k < kObjectives.size(); ++k) {
+  for (std::size_t k = 0; k < result.objectives.size(); ++k) {
     Series all = MakeSeries(fmt::format("parameter sets ({})", runs.size()), {}, {});
     all.colour = PaletteColour(0);
     all.marker = Marker::kCircle;
     all.marker_size = 7;
     for (const auto& r : runs) {
-      all.x.push_back(ObjectiveValues(r)[k]);
+      all.x.push_back(optim::ValueOf(r, result.objectives.objectives()[k]));
       all.y.push_back(r.trans_mean_m);
     }
     std::vector<Series> series = {all};
     for (const auto* c : CandidatesInReportOrder(result)) {
       if (c->record.status == "ok" && c->record.has_gt) {
-        series.push_back(CandidateSeries(*c, ObjectiveValues(c->record)[k], c->record.trans_mean_m));
+        series.push_back(CandidateSeries(*c, optim::ValueOf(c->record, result.objectives.objectives()[k]),
+                                         c->record.trans_mean_m));
       }
     }
     PlotOptions o = PanelOptions(options);
-    o.x_label = kObjectives[k].title;
+    o.x_label = ObjectiveAt(result, k).title;
     o.y_label = "mean translational error (m)";
     const RankCorrelation* s = k < correlation.objectives.size() ? &correlation.objectives[k].spearman : nullptr;
-    o.title = s && s->defined ? fmt::format("{}: Spearman rho = {:.2f}", kObjectives[k].short_name, s->rho)
-                              : fmt::format("{}: rho undefined", kObjectives[k].short_name);
+    const char* name = ObjectiveAt(result, k).short_name;
+    o.title = s && s->defined ? fmt::format("{}: Spearman rho = {:.2f}", name, s->rho)
+                              : fmt::format("{}: rho undefined", name);
     o.legend = k == 0;
     panels.push_back(RenderPlot(series, o).image);
   }

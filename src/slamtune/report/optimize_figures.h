@@ -1,13 +1,13 @@
 // The figures of `slamtune optimize`:
 // * the candidates' maps side by side (map_panels.h);
-// * the population in objective space for one generation, as three 2D projections
-//   (eta-n_c, eta-n_e, n_c-n_e) in one 1 x 3 image, with the candidates marked (the seed
+// * the population in objective space for one generation, as the three 2D projections of
+//   the result's three objectives (e.g. u_h-n_c, u_h-n_e, n_c-n_e) in one 1 x 3 image, with the candidates marked (the seed
 //   paper's Figure 13 shows the population moving towards the front over generations);
 // * all snapshots overlaid, on the same axes;
 // * each objective against the translational error, one panel per objective, with Spearman's
 //   rho in the panel title (error_correlation.h).
 // The population figures share axis limits across generations so they can be compared side by
-// side. Failure-scored individuals (report_text.h IsFailureScore) are left out and counted in
+// side. Failure-scored individuals (ObjectiveSet::IsFailureScore) are left out and counted in
 // the figure title.
 #pragma once
 
@@ -33,10 +33,10 @@ struct FigureOptions {
   void Validate() const;
 };
 
-// Axis limits per objective (kObjectives order) covering every valid individual of every
+// Axis limits per objective (the result's objectives order) covering every valid individual of every
 // snapshot and every successful candidate, widened to nice ticks; nullopt for an objective
 // with no valid value.
-std::array<std::optional<AxisLimits>, 3> ObjectiveLimits(const optim::OptimizeResult& result);
+std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResult& result);
 
 // The candidates' maps, labelled, scaled to a common height, left to right in report order.
 // Requires at least one candidate.

@@ -15,9 +15,10 @@
 namespace slamtune::report {
 
 const char* const kObjectivesCaveat =
-    "The three objectives are computed from the map alone, without ground truth. "
-    "Measured with a reference Karto on real logs, they separate runs whose loop closure failed (doubled walls, "
-    "smeared corridors: more occupied cells, more corners, more enclosed areas) from working runs very reliably. "
+    "The objectives are computed from the map alone, without ground truth. "
+    "Measured on real logs, they separate runs whose map broke (doubled walls, smeared corridors, a wing turned "
+    "against the rest: more corners, more enclosed areas, more scan end points the map overrules) from working runs "
+    "very reliably. "
     "They barely rank working runs that differ by a millimetre or two of trajectory error: among parameter sets "
     "that all close their loops, a lower objective is not evidence of a more accurate map. Read the "
     "recommendation as \"closes the loops of this log robustly\", and use ground-truth relations when a finer "
@@ -75,20 +76,17 @@ void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
 
 void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) {
   page.Heading(2, "Candidates");
-  std::vector<std::string> header = {"label", "how it was chosen", "parameters", "status", "eta", "n_c", "n_e",
-                                     "loop closures"};
+  std::vector<std::string> header = {"label", "how it was chosen", "parameters", "status"};
+  for (std::size_t k = 0; k < r.objectives.size(); ++k) header.push_back(ObjectiveAt(r, k).short_name);
+  header.push_back("loop closures");
   if (gt) header.insert(header.end(), {"trans. error (m)", "rot. error (deg)", "relations"});
   std::vector<std::vector<std::string>> rows;
   for (const auto* c : CandidatesInReportOrder(r)) {
     const auto& e = c->record;
     std::vector<std::string> row = {c->label, c->description, ParamSummary(e.params, r.space),
                                     Ok(e) ? "ok" : "failed: " + e.reason};
-    if (Ok(e)) {
-      row.insert(row.end(), {Short(e.occupied_ratio), Short(e.corner_pixels), Short(e.enclosed_areas),
-                             std::to_string(e.loop_closures)});
-    } else {
-      row.insert(row.end(), {"", "", "", ""});
-    }
+    for (double v : r.objectives.Values(e)) row.push_back(Ok(e) ? Short(v) : "");
+    row.push_back(Ok(e) ? std::to_string(e.loop_closures) : "");
     if (gt) {
       if (e.has_gt) {
         row.insert(row.end(), {FormatMeanStd(e.trans_mean_m, e.trans_std_m), FormatMeanStd(e.rot_mean_deg, e.rot_std_deg),
@@ -100,7 +98,7 @@ void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) 
     rows.push_back(std::move(row));
   }
   page.Table(header, rows);
-  page.Paragraph("eta = occupied ratio, n_c = corner pixels, n_e = enclosed areas (all minimised). Parameters: " +
+  page.Paragraph(ObjectiveLegend(r.objectives) + " (all minimised). Parameters: " +
                      std::string("r = loop_search_maximum_distance (m), g = loop_match_minimum_chain_size."),
                  "note");
 

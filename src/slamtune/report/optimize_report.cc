@@ -81,7 +81,7 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   std::vector<optim::EvaluationRecord> gt_runs;
   if (gt) {
     gt_runs = GroundTruthRuns(result.evaluations);
-    summary.correlation = CorrelateObjectivesWithError(result.evaluations);
+    summary.correlation = CorrelateObjectivesWithError(result.evaluations, result.objectives.objectives());
   }
   out.Text(ResultsJson(result, summary.correlation).dump(2) + "\n", "results.json");
 

@@ -3,20 +3,27 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "slamtune/common/error.h"
 #include "slamtune/report/tables.h"
 
 namespace slamtune::report {
 
-std::array<double, 3> ObjectiveValues(const optim::EvaluationRecord& record) {
-  return {record.occupied_ratio, record.corner_pixels, record.enclosed_areas};
+const optim::ObjectiveInfo& ObjectiveAt(const optim::OptimizeResult& result, std::size_t k) {
+  SLAMTUNE_CHECK(k < result.objectives.size());
+  return optim::InfoOf(result.objectives.objectives()[k]);
 }
 
-bool IsFailureScore(const std::vector<double>& objectives) {
-  if (objectives.size() != kObjectives.size()) return true;
-  for (double v : objectives)
-    if (!std::isfinite(v)) return true;
-  // EvaluationRecord::Objectives() scores a failed run {1, 1e9, 1e9}.
-  return objectives[1] >= 1e9 || objectives[2] >= 1e9;
+std::string ObjectiveLegend(const optim::ObjectiveSet& objectives) {
+  std::string out;
+  for (optim::Objective o : objectives.objectives()) {
+    const optim::ObjectiveInfo& info = optim::InfoOf(o);
+    std::string title = info.title;
+    title = title.substr(0, title.find(" ("));
+    out += fmt::format("{}{} = {}", out.empty() ? "" : ", ", info.short_name, title);
+  }
+  return out;
 }
 
 std::vector<const optim::Candidate*> CandidatesInReportOrder(const optim::OptimizeResult& result) {

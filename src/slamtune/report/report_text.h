@@ -1,6 +1,5 @@
-// Names and short texts shared by the report's tables, figures and HTML: the three
-// objectives of the seed paper (Han et al., Sensors 2020, §3: eta = occupied ratio, n_c =
-// corner pixels, n_e = enclosed areas), the order in which candidates are listed (the
+// Names and short texts shared by the report's tables, figures and HTML: the objectives of
+// a result (optim/objective_set.h), the order in which candidates are listed (the
 // paper's Tables 3-10 give the best before the worst; the defaults sit in between), and
 // compact renderings of parameter sets.
 #pragma once
@@ -16,25 +15,11 @@
 
 namespace slamtune::report {
 
-struct ObjectiveName {
-  const char* key;    // JSON/CSV name, as in EvaluationRecord's JSON
-  const char* short_name;  // in figures: "eta", "n_c", "n_e"
-  const char* title;  // in prose
-};
-inline constexpr std::array<ObjectiveName, 3> kObjectives = {{
-    {"occupied_ratio", "eta", "occupied ratio (eta)"},
-    {"corner_pixels", "n_c", "corner pixels (n_c)"},
-    {"enclosed_areas", "n_e", "enclosed areas (n_e)"},
-}};
+// The names of the k-th objective of `result` (k < result.objectives.size()).
+const optim::ObjectiveInfo& ObjectiveAt(const optim::OptimizeResult& result, std::size_t k);
 
-// The objective values of a record in kObjectives order (the record's own fields, not the
-// failure-scored Objectives()).
-std::array<double, 3> ObjectiveValues(const optim::EvaluationRecord& record);
-
-// True for an objective vector that is the failure score of EvaluationRecord::Objectives()
-// (n_c or n_e >= 1e9), has the wrong length, or holds a non-finite value: such points are
-// left out of the figures, where they would squash every real point into a corner.
-bool IsFailureScore(const std::vector<double>& objectives);
+// "eta = occupied ratio, n_c = corner pixels, ..." for the objectives of `objectives`.
+std::string ObjectiveLegend(const optim::ObjectiveSet& objectives);
 
 // The candidates in report order: recommended, knee, default, worst, then any other label in
 // the result's order. Missing labels are skipped.

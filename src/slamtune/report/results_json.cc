@@ -9,6 +9,7 @@ nlohmann::json CandidateJson(const optim::Candidate& candidate) {
   const optim::EvaluationRecord& r = candidate.record;
   nlohmann::json j = r;  // the record's own JSON (optim/evaluation_record.h), then the report's fields
   j.erase("key");
+  if (r.status == "ok") j["objectives"]["unbacked_hits"] = optim::ValueOf(r, optim::Objective::kUnbackedHits);
   j["label"] = candidate.label;
   j["description"] = candidate.description;
   return j;
@@ -29,6 +30,9 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
     const optim::Candidate* c = result.Find(label);
     j[label] = c ? CandidateJson(*c) : nlohmann::json(nullptr);
   }
+  nlohmann::json minimised = nlohmann::json::array();
+  for (optim::Objective o : result.objectives.objectives()) minimised.push_back(optim::InfoOf(o).key);
+  j["objectives"] = {{"set", result.objectives.name()}, {"minimised", minimised}};
   j["evaluations"] = result.evaluation_count;
   j["cache_hits"] = result.cache_hits;
   j["wall_s"] = result.wall_s;

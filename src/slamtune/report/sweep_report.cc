@@ -26,10 +26,14 @@ bool Ok(const optim::EvaluationRecord& r) { return r.status == "ok"; }
 
 std::string Metric(const optim::EvaluationRecord& r, double v) { return Ok(r) ? FormatNumber(v) : ""; }
 
+std::string Title(optim::Objective objective) { return optim::InfoOf(objective).title; }
+
+double Unbacked(const optim::EvaluationRecord& r) { return optim::ValueOf(r, optim::Objective::kUnbackedHits); }
+
 CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>& points, bool gt) {
   CsvTable t;
   t.header = {"parameter", "value", "status", "reason", "loop_closures", "occupied_ratio", "corner_pixels",
-              "enclosed_areas", "occupied_ratio_known", "corners", "contours", "nodes", "wall_s"};
+              "enclosed_areas", "occupied_ratio_known", "corners", "contours", "unbacked_hits", "nodes", "wall_s"};
   if (gt) t.header.insert(t.header.end(), {"trans_mean_m", "trans_std_m", "rot_mean_deg", "rot_std_deg", "relations_used"});
   t.header.push_back("loop_scans");
   for (const auto& p : points) {
@@ -38,7 +42,7 @@ CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>&
                                     Ok(r) ? std::to_string(r.loop_closures) : "", Metric(r, r.occupied_ratio),
                                     Metric(r, r.corner_pixels), Metric(r, r.enclosed_areas),
                                     Metric(r, r.occupied_ratio_known), Metric(r, r.corners), Metric(r, r.contours),
-                                    Ok(r) ? std::to_string(r.nodes) : "", FormatNumber(r.wall_s)};
+                                    Metric(r, Unbacked(r)), Ok(r) ? std::to_string(r.nodes) : "", FormatNumber(r.wall_s)};
     if (gt) {
       const bool has = Ok(r) && r.has_gt;
       row.insert(row.end(), {has ? FormatNumber(r.trans_mean_m) : "", has ? FormatNumber(r.trans_std_m) : "",
@@ -61,9 +65,10 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
                     const SweepReportOptions& options) {
   const std::vector<Quantity> quantities = {
       {"loop closures", [](const optim::EvaluationRecord& r) { return static_cast<double>(r.loop_closures); }, false},
-      {kObjectives[0].title, [](const optim::EvaluationRecord& r) { return r.occupied_ratio; }, false},
-      {kObjectives[1].title, [](const optim::EvaluationRecord& r) { return r.corner_pixels; }, false},
-      {kObjectives[2].title, [](const optim::EvaluationRecord& r) { return r.enclosed_areas; }, false},
+      {Title(optim::Objective::kUnbackedHits), [](const optim::EvaluationRecord& r) { return Unbacked(r); }, false},
+      {Title(optim::Objective::kOccupiedRatio), [](const optim::EvaluationRecord& r) { return r.occupied_ratio; }, false},
+      {Title(optim::Objective::kCornerPixels), [](const optim::EvaluationRecord& r) { return r.corner_pixels; }, false},
+      {Title(optim::Objective::kEnclosedAreas), [](const optim::EvaluationRecord& r) { return r.enclosed_areas; }, false},
       {"mean translational error (m)", [](const optim::EvaluationRecord& r) { return r.trans_mean_m; }, true},
       {"mean rotational error (deg)", [](const optim::EvaluationRecord& r) { return r.rot_mean_deg; }, true},
   };
@@ -90,7 +95,7 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
     panels.push_back(RenderPlot({s}, o).image);
   }
   GridOptions g;
-  g.columns = gt ? 3 : 2;
+  g.columns = 3;
   const int failed = static_cast<int>(std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return !Ok(p.record); }));
   g.title = fmt::format("Sweep of {}{}", parameter,
                         failed ? fmt::format(" ({} failed run{} not shown)", failed, failed == 1 ? "" : "s") : "");
@@ -121,17 +126,18 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
   run.push_back({"held (from the first point)", held.empty() ? "(none recorded)" : held});
   page.KeyValues(run);
   page.Image(png, "loop closures and objectives against " + parameter, "sweep.png");
-  std::vector<std::string> header = {ShortParamName(parameter), "status", "loop closures", "eta", "n_c", "n_e"};
+  std::vector<std::string> header = {ShortParamName(parameter), "status", "loop closures", "u_h", "eta", "n_c", "n_e"};
   if (gt) header.insert(header.end(), {"trans. error (m)", "rot. error (deg)"});
   std::vector<std::vector<std::string>> rows;
   for (const auto& p : points) {
     const auto& r = p.record;
     std::vector<std::string> row = {FormatParam(p.value), Ok(r) ? "ok" : "failed: " + r.reason};
     if (Ok(r)) {
-      row.insert(row.end(), {std::to_string(r.loop_closures), fmt::format("{:.5g}", r.occupied_ratio),
-                             fmt::format("{:.5g}", r.corner_pixels), fmt::format("{:.5g}", r.enclosed_areas)});
+      row.insert(row.end(), {std::to_string(r.loop_closures), fmt::format("{:.4g}", Unbacked(r)),
+                             fmt::format("{:.5g}", r.occupied_ratio), fmt::format("{:.5g}", r.corner_pixels),
+                             fmt::format("{:.5g}", r.enclosed_areas)});
     } else {
-      row.insert(row.end(), {"", "", "", ""});
+      row.insert(row.end(), {"", "", "", "", ""});
     }
     if (gt) {
       const bool has = Ok(r) && r.has_gt;

@@ -46,7 +46,7 @@ TEST(WriteSweepReport, WritesCsvFigureAndPage) {
   const std::string csv = Slurp(dir / "sweep.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "parameter,value,status,reason,loop_closures,occupied_ratio,corner_pixels,enclosed_areas,"
-            "occupied_ratio_known,corners,contours,nodes,wall_s,trans_mean_m,trans_std_m,rot_mean_deg,rot_std_deg,"
+            "occupied_ratio_known,corners,contours,unbacked_hits,nodes,wall_s,trans_mean_m,trans_std_m,rot_mean_deg,rot_std_deg,"
             "relations_used,loop_scans");
   // Sorted by value: 6 first (12 loop closures, error 0.02), then the failed 7, then 8.
   const auto expected6 = testing::FakeRecord(2.0, 6, 0.0, true);
@@ -73,7 +73,7 @@ TEST(WriteSweepReport, WithoutGroundTruthHasNoErrorColumns) {
   EXPECT_FALSE(summary.with_ground_truth);
   EXPECT_THAT(Slurp(dir / "sweep.csv"), ::testing::Not(HasSubstr("trans_mean_m")));
   const cv::Mat png = cv::imread((dir / "sweep.png").string());
-  EXPECT_LT(png.cols, 3 * 460);  // 2 x 2 panels
+  EXPECT_LT(png.rows, 3 * 340);  // loop closures and four map figures: 2 rows of 3 panels
 }
 
 TEST(WriteSweepReport, SinglePointAndBadInput) {

@@ -31,6 +31,9 @@ optim::EvaluationRecord FakeRecord(double r, int g, double quality, bool with_gr
   e.occupied_ratio_known = 0.2 + 0.05 * quality;
   e.corners = 40 + 10 * quality;
   e.contours = 30 + 5 * quality;
+  e.hits = 40000;
+  e.hits_in_free_cells = 400 + 2000 * quality;
+  e.hits_in_unknown_cells = 100;
   e.nodes = 500;
   e.loop_closures = static_cast<int>(12 - 8 * quality);
   for (int i = 0; i < e.loop_closures; ++i) e.loop_scans.push_back(100 + 37 * i);
@@ -51,6 +54,7 @@ optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
   res.log_path = "/data/logs/intel.clf.gz";
   res.relations_path = with_ground_truth ? "/data/logs/intel.relations" : "";
   res.space = optim::SearchSpace::PaperDefault();
+  res.objectives = optim::ObjectiveSet(optim::ObjectiveSetKind::kPaper);
   res.settings = {{"population", 8}, {"generations", 5}, {"seed", 42}, {"jobs", 2}};
 
   auto candidate = [&](const std::string& label, const std::string& how, double r, int g, double q, bool map) {
@@ -84,7 +88,7 @@ optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
       const double q = std::min(1.0, (i + 1) / (2.0 * gen));
       const auto rec = FakeRecord(2.0 + 0.5 * i, 6 + i, q, false);
       s.decisions.push_back({2.0 + 0.5 * i, static_cast<double>(6 + i)});
-      s.objectives.push_back(rec.Objectives());
+      s.objectives.push_back(res.objectives.Score(rec));
     }
     if (gen == 1) {
       s.decisions.push_back({6.0, 20.0});

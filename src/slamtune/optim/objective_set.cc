@@ -1,0 +1,120 @@
+#include "slamtune/optim/objective_set.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::optim {
+namespace {
+
+constexpr std::array<ObjectiveInfo, 4> kInfos = {{
+    {Objective::kOccupiedRatio, "occupied_ratio", "eta", "occupied ratio (eta)", 1.0},
+    {Objective::kCornerPixels, "corner_pixels", "n_c", "corner pixels (n_c)", 1e9},
+    {Objective::kEnclosedAreas, "enclosed_areas", "n_e", "enclosed areas (n_e)", 1e9},
+    // A share lies in [0, 1]; 2 is worse than any map.
+    {Objective::kUnbackedHits, "unbacked_hits", "u_h", "unbacked hits (u_h)", 2.0},
+}};
+
+constexpr std::array<ObjectiveSetKind, 2> kKinds = {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kPaper};
+
+}  // namespace
+
+const ObjectiveInfo& InfoOf(Objective objective) {
+  for (const auto& info : kInfos)
+    if (info.id == objective) return info;
+  SLAMTUNE_CHECK(false);
+  return kInfos[0];
+}
+
+const std::vector<Objective>& AllObjectives() {
+  static const std::vector<Objective> all = [] {
+    std::vector<Objective> out;
+    for (const auto& info : kInfos) out.push_back(info.id);
+    return out;
+  }();
+  return all;
+}
+
+double ValueOf(const EvaluationRecord& record, Objective objective) {
+  switch (objective) {
+    case Objective::kOccupiedRatio: return record.occupied_ratio;
+    case Objective::kCornerPixels: return record.corner_pixels;
+    case Objective::kEnclosedAreas: return record.enclosed_areas;
+    case Objective::kUnbackedHits:
+      // No end point on the map at all: nothing backs it.
+      if (!(record.hits > 0.0)) return 1.0;
+      return (record.hits_in_free_cells + record.hits_in_unknown_cells) / record.hits;
+  }
+  SLAMTUNE_CHECK(false);
+  return 0.0;
+}
+
+ObjectiveSet::ObjectiveSet(ObjectiveSetKind kind) : kind_(kind) {
+  switch (kind) {
+    case ObjectiveSetKind::kConsistency:
+      objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kEnclosedAreas};
+      break;
+    case ObjectiveSetKind::kPaper:
+      objectives_ = {Objective::kOccupiedRatio, Objective::kCornerPixels, Objective::kEnclosedAreas};
+      break;
+  }
+  SLAMTUNE_CHECK(!objectives_.empty());
+}
+
+const char* ObjectiveSet::NameOf(ObjectiveSetKind kind) {
+  switch (kind) {
+    case ObjectiveSetKind::kConsistency: return "consistency";
+    case ObjectiveSetKind::kPaper: return "paper";
+  }
+  return "consistency";
+}
+
+std::string ObjectiveSet::KnownNames() {
+  std::string out;
+  for (ObjectiveSetKind kind : kKinds) out += std::string(out.empty() ? "" : ", ") + NameOf(kind);
+  return out;
+}
+
+ObjectiveSet ObjectiveSet::Parse(const std::string& name) {
+  for (ObjectiveSetKind kind : kKinds)
+    if (name == NameOf(kind)) return ObjectiveSet(kind);
+  throw InputError(fmt::format("--objectives: unknown objective set '{}' (known: {})", name, KnownNames()));
+}
+
+std::vector<double> ObjectiveSet::Score(const EvaluationRecord& record) const {
+  std::vector<double> out;
+  out.reserve(objectives_.size());
+  for (Objective o : objectives_) out.push_back(record.status == "ok" ? ValueOf(record, o) : InfoOf(o).failure_score);
+  return out;
+}
+
+std::vector<double> ObjectiveSet::Values(const EvaluationRecord& record) const {
+  std::vector<double> out;
+  out.reserve(objectives_.size());
+  for (Objective o : objectives_) out.push_back(ValueOf(record, o));
+  return out;
+}
+
+bool ObjectiveSet::IsFailureScore(const std::vector<double>& scores) const {
+  if (scores.size() != objectives_.size()) return true;
+  bool all_failure_scores = true;
+  for (std::size_t k = 0; k < scores.size(); ++k) {
+    if (!std::isfinite(scores[k])) return true;
+    all_failure_scores = all_failure_scores && scores[k] >= InfoOf(objectives_[k]).failure_score;
+  }
+  return all_failure_scores;
+}
+
+std::string ObjectiveSet::Describe() const {
+  std::string out;
+  for (std::size_t k = 0; k < objectives_.size(); ++k) {
+    if (k > 0) out += k + 1 == objectives_.size() ? " and " : ", ";
+    out += InfoOf(objectives_[k]).title;
+  }
+  return out;
+}
+
+}  // namespace slamtune::optim

@@ -1,0 +1,76 @@
+// The objectives NSGA-III minimises, read off one evaluation's record, and the named sets a
+// user chooses from (`slamtune optimize --objectives NAME`).
+//
+//   consistency (default)  unbacked hits, n_c, n_e
+//   paper                  eta, n_c, n_e (Han et al., Sensors 2020, §3)
+//
+// Why the default replaces the paper's eta: eta = occupied cells / all cells of the image, so a
+// map that breaks apart spreads over a larger bounding box and its eta falls — minimising eta
+// drives the search towards broken maps wherever the front end can break. The unbacked-hit
+// share does not depend on the map's extent: it is the share of scan end points that land in
+// cells the final map calls free or unknown (slam/occupancy_grid.h). Where one pass draws a
+// wall into space another pass saw as free, those end points are overruled; in a consistent
+// map almost every end point lands on a wall. docs/metrics.md gives the measurements.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "slamtune/optim/evaluation_record.h"
+
+namespace slamtune::optim {
+
+enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedHits };
+
+struct ObjectiveInfo {
+  Objective id;
+  const char* key;         // JSON/CSV name
+  const char* short_name;  // in figures and table headers: "eta", "n_c", "n_e", "u_h"
+  const char* title;       // in prose
+  double failure_score;    // the score of a failed run: worse than any real map
+};
+
+const ObjectiveInfo& InfoOf(Objective objective);
+// Every objective any set may use.
+const std::vector<Objective>& AllObjectives();
+
+// The objective's value for an ok record (no failure scoring).
+double ValueOf(const EvaluationRecord& record, Objective objective);
+
+enum class ObjectiveSetKind { kConsistency, kPaper };
+
+class ObjectiveSet {
+ public:
+  ObjectiveSet() : ObjectiveSet(ObjectiveSetKind::kConsistency) {}
+  explicit ObjectiveSet(ObjectiveSetKind kind);
+
+  // The set called `name` ("consistency" or "paper"); InputError naming the known sets.
+  static ObjectiveSet Parse(const std::string& name);
+  // "consistency", "paper".
+  static const char* NameOf(ObjectiveSetKind kind);
+  // The names a user may give, for help texts: "consistency, paper".
+  static std::string KnownNames();
+
+  ObjectiveSetKind kind() const { return kind_; }
+  const char* name() const { return NameOf(kind_); }
+  const std::vector<Objective>& objectives() const { return objectives_; }
+  std::size_t size() const { return objectives_.size(); }
+
+  // The vector NSGA-III minimises, in objectives() order. A failed record is scored worst on
+  // every objective (each InfoOf(..).failure_score), so the optimisation goes on.
+  std::vector<double> Score(const EvaluationRecord& record) const;
+  // The record's values in objectives() order, without failure scoring.
+  std::vector<double> Values(const EvaluationRecord& record) const;
+  // True when `scores` is a failed record's Score() (every entry at its failure score), has the
+  // wrong length or holds a non-finite value: left out of figures, where such points would
+  // squash every real point into a corner.
+  bool IsFailureScore(const std::vector<double>& scores) const;
+  // "unbacked hits (u_h), corner pixels (n_c) and enclosed areas (n_e)".
+  std::string Describe() const;
+
+ private:
+  ObjectiveSetKind kind_;
+  std::vector<Objective> objectives_;
+};
+
+}  // namespace slamtune::optim
