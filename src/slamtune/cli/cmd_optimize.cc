@@ -18,6 +18,7 @@
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/optimizer.h"
 #include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/space_choice.h"
 #include "slamtune/report/optimize_report.h"
 #include "slamtune/slam/params_yaml.h"
 
@@ -119,7 +120,15 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   // Preamble: every input is loaded and validated before any work starts.
   optim::OptimizeSettings settings;
   TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
+  // No --space: loop closure, or the front end when the base configuration's map breaks there.
+  std::shared_ptr<optim::SlamEvaluationContext> probed;
   if (args.space_file.empty()) {
+    probed = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
+    const optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
+    args.space_file = choice.space_name();
+    if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
+  }
+  if (args.space_file.empty() || args.space_file == "loop") {
     settings.space = optim::SearchSpace::AroundBase(inputs.base.loop_search_maximum_distance,
                                                     inputs.base.loop_match_minimum_chain_size);
   } else if (args.space_file == "paper") {
@@ -136,8 +145,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   settings.seed = args.seed;
   settings.Validate();
   if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
-  optim::CheckSpaceAgainst(settings.space, inputs.base, args.space_file.empty() ? "--space" : args.space_file);
-  auto context = MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
+  const bool named_space = args.space_file == "loop" || args.space_file == "paper" || args.space_file == "front-end";
+  optim::CheckSpaceAgainst(settings.space, inputs.base, named_space ? "--space" : args.space_file);
+  auto context = probed && settings.space.fixed.empty()
+                     ? probed
+                     : MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
   // The baseline is the base configuration itself: its values of the varied and the fixed parameters.
   for (const auto& d : settings.space.dimensions) settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);
   for (const auto& [name, value] : settings.space.fixed) {
@@ -241,10 +253,11 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)");
       app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder");
       app.add_option("--space", args->space_file,
-                     "search-space YAML (vary: NAME: {min, max, step, type}; fix: NAME: V); 'paper' for the seed "
-                     "paper's (r 2..6, g 6..20, p = 0.7, q = 0.4); 'front-end' for sequential matching and node "
-                     "spacing plus r, g, p, q (maps that break before any loop closes); default: r and g around "
-                     "the base configuration");
+                     "search-space YAML (vary: NAME: {min, max, step, type}; fix: NAME: V); 'loop' for r and g "
+                     "around the base configuration; 'paper' for the seed paper's (r 2..6, g 6..20, p = 0.7, "
+                     "q = 0.4); 'front-end' for sequential matching and node spacing plus r, g, p, q (maps that "
+                     "break before any loop closes); default: 'loop', or 'front-end' when a run of the base "
+                     "configuration shows its sequential matching losing its place");
       app.add_option("--objectives", args->objectives,
                      "what the map is judged by: 'consistency' (default: unbacked hits u_h, corner pixels n_c, "
                      "enclosed areas n_e; does not reward a map for breaking apart) or 'paper' (the seed paper's "

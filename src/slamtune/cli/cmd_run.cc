@@ -74,6 +74,38 @@ void WriteLoopClosuresCsv(const std::string& path, const slam::RunSummary& s) {
   WriteFileAtomically(path, csv);
 }
 
+// One row per sequential match (slam/front_end_evidence.h), `suspect` by the run's median response.
+void WriteFrontEndCsv(const std::string& path, const std::vector<slam::SequentialMatchStep>& steps,
+                      const slam::FrontEndEvidence& evidence) {
+  std::string csv = "log_index,time,response,dx,dy,dtheta,sigma_xy,at_window_edge,at_heading_edge,suspect\n";
+  for (const slam::SequentialMatchStep& s : steps) {
+    csv += fmt::format("{},{:.6f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", s.log_index, s.time, s.response, s.dx,
+                       s.dy, s.dtheta, s.sigma_xy, s.at_window_edge ? 1 : 0, s.at_heading_edge ? 1 : 0,
+                       slam::IsSuspect(s, evidence.median_response, {}) ? 1 : 0);
+  }
+  WriteFileAtomically(path, csv);
+}
+
+nlohmann::json FrontEndJson(const slam::FrontEndEvidence& e) {
+  nlohmann::json stretches = nlohmann::json::array();
+  for (const slam::SuspectStretch& s : e.stretches) {
+    stretches.push_back({{"first_log_index", s.first_log_index},
+                         {"last_log_index", s.last_log_index},
+                         {"first_time", s.first_time},
+                         {"last_time", s.last_time},
+                         {"suspects", s.suspects},
+                         {"at_edge", s.at_edge},
+                         {"low_response", s.low_response},
+                         {"min_response", s.min_response}});
+  }
+  return {{"sequential_matches", e.matches},
+          {"median_response", e.median_response},
+          {"at_edge", e.at_edge},
+          {"low_response", e.low_response},
+          {"points_at_front_end", e.points_at_front_end()},
+          {"suspect_stretches", stretches}};
+}
+
 slam::MapperParams ResolveParams(const RunArgs& args) {
   slam::MapperParams params = slam::MapperParams::Preset(args.preset);
   if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
@@ -130,6 +162,8 @@ int Run(const RunArgs& args) {
 
   io::WriteTrajectory(file("trajectory.txt"), trajectory);
   WriteLoopClosuresCsv(file("loop_closures.csv"), summary);
+  const slam::FrontEndEvidence front_end = slam::AssessFrontEnd(runner.sequential_matches());
+  WriteFrontEndCsv(file("front_end.csv"), runner.sequential_matches(), front_end);
 
   nlohmann::json edges = nlohmann::json::object(), duplicates = nlohmann::json::object();
   for (int k = 0; k < slam::kNumEdgeKinds; ++k) {
@@ -186,6 +220,7 @@ int Run(const RunArgs& args) {
     gt_line = fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e.trans_mean_m,
                           e.trans_std_m, e.rot_mean_deg, e.rot_std_deg, e.relations_used);
   }
+  run["front_end"] = FrontEndJson(front_end);
   run["peak_memory_mb"] = PeakMemoryMb();
   WriteFileAtomically(file("run.json"), run.dump(2) + "\n");
 
@@ -197,6 +232,11 @@ int Run(const RunArgs& args) {
   std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s; wrote %s\n", summary.scans_read,
               summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, dropped.c_str(),
               gt_line.c_str(), args.out.c_str());
+  std::printf("%s\n", front_end.Summary().c_str());
+  if (front_end.points_at_front_end()) {
+    std::printf("  (front_end.csv has every match; front-end parameters are searched by: slamtune optimize "
+                "--space front-end)\n");
+  }
   return 0;
 }
 

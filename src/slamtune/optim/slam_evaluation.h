@@ -14,6 +14,7 @@
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/map_score_cache.h"
+#include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/barycenter_cache.h"
@@ -58,6 +59,7 @@ struct SlamRun {
   slam::RunSummary summary;
   std::vector<io::TimedPose> trajectory;  // one pose per log scan
   io::MapImage map;                       // occupancy grid of the final poses
+  slam::FrontEndEvidence front_end;       // where sequential matching may have lost its place
 };
 
 // `run` (may be null) receives the SLAM run the record was computed from.

@@ -17,6 +17,7 @@
 
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/trajectory.h"
+#include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/mapper.h"
 
 namespace slamtune::slam {
@@ -103,6 +104,8 @@ class LogRunner {
   const io::LaserLog& log() const { return *log_; }
 
   RunSummary Summary() const;
+  // Every sequential match so far, in log order (front_end_evidence.h).
+  const std::vector<SequentialMatchStep>& sequential_matches() const { return sequential_matches_; }
   // One pose per log scan (time = ipc timestamp): a processed scan's current sensor pose; any
   // other scan the preceding processed scan's pose composed with the odometry increment since
   // it (odometry itself before the first processed scan). Scans not yet stepped are included
@@ -119,6 +122,7 @@ class LogRunner {
   Mapper mapper_;
   std::size_t next_ = 0;
   std::vector<int> state_of_log_scan_;  // state id per log scan, -1 if not processed
+  std::vector<SequentialMatchStep> sequential_matches_;
   int throttled_ = 0;
   double wall_s_ = 0.0;
 };

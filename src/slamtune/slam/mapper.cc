@@ -120,10 +120,13 @@ ProcessResult Mapper::Process(LaserScan scan) {
   if (params_.use_scan_matching && last != nullptr) {
     const std::vector<const LaserScan*> buffer =
         ScanPointers(std::vector<int>(running_buffer_.begin(), running_buffer_.end()));
+    result.sequential_guess = scan.SensorPose();
     const MatchResult match = MatchWith(MatchRole::kSequential, scan, buffer, true, true);
     scan.SetSensorPose(match.mean);
     covariance = match.covariance;
     result.sequential_response = match.response;
+    result.sequential_mean = match.mean;
+    result.sequential_covariance = match.covariance;
   }
   // 8. Register the scan.
   const int id = static_cast<int>(scans_.size());

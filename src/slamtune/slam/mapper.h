@@ -62,6 +62,12 @@ struct ProcessResult {
   std::array<int, kNumEdgeKinds> edges_added{};  // by EdgeKind
   int loops_closed = 0;
   double sequential_response = -1.0;  // response of the sequential match (-1 when none)
+  // With a sequential match: the sensor pose it started from (the odometry's guess) and the
+  // pose and covariance it found. What a front end that broke leaves behind
+  // (front_end_evidence.h); Karto's decisions do not read them.
+  Pose2 sequential_guess;
+  Pose2 sequential_mean;
+  Eigen::Matrix3d sequential_covariance = Eigen::Matrix3d::Zero();
 };
 
 struct MapperCounters {

@@ -1,0 +1,25 @@
+#include "slamtune/optim/space_choice.h"
+
+#include <fmt/format.h>
+
+namespace slamtune::optim {
+
+std::string DefaultSpaceChoice::Reason() const {
+  if (kind == DefaultSpaceKind::kFrontEnd) {
+    return "search space: front-end (sequential matching, node spacing and loop closure), because the base "
+           "configuration's map breaks before loop closure can help — " +
+           evidence.Summary();
+  }
+  return "search space: r and g around the base configuration (" + evidence.Summary() + ")";
+}
+
+DefaultSpaceChoice ChooseDefaultSpace(const SlamEvaluationContext& context) {
+  SlamRun run;
+  const EvaluationRecord base = EvaluateSlam(context, {}, &run);
+  DefaultSpaceChoice choice;
+  choice.evidence = run.front_end;
+  if (base.status == "ok" && run.front_end.points_at_front_end()) choice.kind = DefaultSpaceKind::kFrontEnd;
+  return choice;
+}
+
+}  // namespace slamtune::optim

@@ -1,0 +1,31 @@
+// The search space `slamtune optimize` takes when the user names none: r and g around the base
+// configuration (loop closure, the seed paper's question) — unless the base configuration's own
+// run shows its front end losing its place (slam/front_end_evidence.h). A map that breaks before
+// any loop closes cannot be mended by loop-closure parameters, so the tuner then searches the
+// front-end space (SearchSpace::FrontEnd) on its own: a user with a broken map should not need
+// to know which parameters to add. A user who gives --space keeps that space.
+#pragma once
+
+#include <string>
+
+#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/slam/front_end_evidence.h"
+
+namespace slamtune::optim {
+
+enum class DefaultSpaceKind { kLoop, kFrontEnd };
+
+struct DefaultSpaceChoice {
+  DefaultSpaceKind kind = DefaultSpaceKind::kLoop;
+  slam::FrontEndEvidence evidence;  // of the base configuration's run
+  // The --space name that reproduces the choice: "loop" or "front-end".
+  const char* space_name() const { return kind == DefaultSpaceKind::kLoop ? "loop" : "front-end"; }
+  // One line saying what was chosen and why.
+  std::string Reason() const;
+};
+
+// Runs the base configuration once on `context` (one SLAM run; its matches go to the context's
+// caches, so the optimisation repeats none of them) and chooses.
+DefaultSpaceChoice ChooseDefaultSpace(const SlamEvaluationContext& context);
+
+}  // namespace slamtune::optim

@@ -1,0 +1,126 @@
+#include "slamtune/slam/front_end_evidence.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+
+namespace slamtune::slam {
+
+SequentialMatchStep StepOf(const ProcessResult& result, int log_index, double time, const MapperParams& params) {
+  SLAMTUNE_CHECK(result.sequential_response >= 0.0);
+  SequentialMatchStep s;
+  s.log_index = log_index;
+  s.time = time;
+  s.response = result.sequential_response;
+  s.dx = result.sequential_mean.x - result.sequential_guess.x;
+  s.dy = result.sequential_mean.y - result.sequential_guess.y;
+  s.dtheta = NormalizeAngle(result.sequential_mean.theta - result.sequential_guess.theta);
+  const double var = std::max(result.sequential_covariance(0, 0), result.sequential_covariance(1, 1));
+  s.sigma_xy = std::sqrt(std::max(0.0, var));
+  // The search offsets run to +-D/2 in steps of rho (§4.2); the mean of the best poses of a
+  // match that hit the border lies within a step or so of it.
+  const double half = 0.5 * params.correlation_search_space_dimension;
+  const double rho = params.correlation_search_space_resolution;
+  s.at_window_edge = std::max(std::fabs(s.dx), std::fabs(s.dy)) >= half - 1.5 * rho;
+  s.at_heading_edge = std::fabs(s.dtheta) >= params.coarse_search_angle_offset - params.coarse_angle_resolution;
+  return s;
+}
+
+void FrontEndEvidenceOptions::Validate() const {
+  if (!(low_response_fraction > 0.0 && low_response_fraction < 1.0)) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.low_response_fraction = {}: must be in (0, 1)",
+                                 low_response_fraction));
+  }
+  if (max_gap < 0) throw InputError(fmt::format("FrontEndEvidenceOptions.max_gap = {}: must be >= 0", max_gap));
+  if (min_suspects < 1) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.min_suspects = {}: must be >= 1", min_suspects));
+  }
+  if (strong_min_suspects < min_suspects) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.strong_min_suspects = {}: must be >= min_suspects ({})",
+                                 strong_min_suspects, min_suspects));
+  }
+}
+
+bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options) {
+  return step.at_window_edge || step.at_heading_edge || step.response < options.low_response_fraction * median_response;
+}
+
+FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, const FrontEndEvidenceOptions& options) {
+  options.Validate();
+  FrontEndEvidence out;
+  out.matches = static_cast<int>(steps.size());
+  if (steps.empty()) return out;
+  std::vector<double> responses;
+  for (const auto& s : steps) responses.push_back(s.response);
+  std::nth_element(responses.begin(), responses.begin() + static_cast<long>(responses.size() / 2), responses.end());
+  out.median_response = responses[responses.size() / 2];
+
+  SuspectStretch current;
+  int last_suspect = -1;  // index into steps
+  auto close = [&] {
+    current.strong = current.suspects >= options.strong_min_suspects && current.at_edge > 0 && current.low_response > 0;
+    if (current.suspects >= options.min_suspects) out.stretches.push_back(current);
+    current = {};
+  };
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const SequentialMatchStep& s = steps[i];
+    const bool edge = s.at_window_edge || s.at_heading_edge;
+    const bool low = s.response < options.low_response_fraction * out.median_response;
+    out.at_edge += edge ? 1 : 0;
+    out.low_response += low ? 1 : 0;
+    if (!edge && !low) continue;
+    if (current.suspects > 0 && static_cast<int>(i) - last_suspect > options.max_gap + 1) close();
+    if (current.suspects == 0) {
+      current.first_log_index = s.log_index;
+      current.first_time = s.time;
+    }
+    current.last_log_index = s.log_index;
+    current.last_time = s.time;
+    ++current.suspects;
+    current.at_edge += edge ? 1 : 0;
+    current.low_response += low ? 1 : 0;
+    current.min_response = std::min(current.min_response, s.response);
+    last_suspect = static_cast<int>(i);
+  }
+  if (current.suspects > 0) close();
+  return out;
+}
+
+bool FrontEndEvidence::points_at_front_end() const {
+  return std::any_of(stretches.begin(), stretches.end(), [](const SuspectStretch& s) { return s.strong; });
+}
+
+std::string FrontEndEvidence::Summary() const {
+  if (matches == 0) return "front end: no sequential match was made";
+  if (!points_at_front_end()) {
+    return fmt::format("front end: no sign of a broken sequential match ({} matches, median response {:.2f}; {} "
+                       "at the search's edge, {} with a collapsed response, {} minor stretch{})",
+                       matches, median_response, at_edge, low_response, stretches.size(),
+                       stretches.size() == 1 ? "" : "es");
+  }
+  std::vector<const SuspectStretch*> strong;
+  for (const SuspectStretch& s : stretches)
+    if (s.strong) strong.push_back(&s);
+  std::string parts;
+  const std::size_t shown = std::min<std::size_t>(strong.size(), 3);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const SuspectStretch& s = *strong[k];
+    std::string what;
+    if (s.at_edge > 0) what = fmt::format("{} match{} at the search's edge", s.at_edge, s.at_edge == 1 ? "" : "es");
+    if (s.low_response > 0) {
+      what += fmt::format("{}{} with a collapsed response (down to {:.2f})", what.empty() ? "" : ", ", s.low_response,
+                          s.min_response);
+    }
+    parts += fmt::format("{}scans {}-{}, {:.1f}-{:.1f} s into the log: {}", k ? "; " : "", s.first_log_index, s.last_log_index,
+                         s.first_time, s.last_time, what);
+  }
+  if (strong.size() > shown) parts += fmt::format("; {} more", strong.size() - shown);
+  return fmt::format("front end: {} stretch{} where sequential matching lost its place ({})", strong.size(),
+                     strong.size() == 1 ? "" : "es", parts);
+}
+
+}  // namespace slamtune::slam

@@ -1,0 +1,94 @@
+// Where does a map break before any loop closes? — read from the run itself, without ground
+// truth. Karto's front end places each new node by one sequential match (karto-algorithm.md
+// §3.2 steps 6-7): a search over a square window of side correlation_search_space_dimension
+// around the odometry's guess and over +-coarse_search_angle_offset of heading. When the
+// odometry is off by more than the window (a wheel slip, a bump, a spin), the true pose lies
+// outside the search and the match snaps to the best wrong pose it can see — at the edge of the
+// window; when the scan sees too little to match (a featureless corridor, glass), its response
+// collapses. Either way the node is misplaced, and no loop closure puts it back.
+//
+// This is analysis of a finished or running run, kept apart from Karto's semantics: it reads the
+// ProcessResult of each sequential match and changes nothing. A step is suspect when its match
+// ended at the window's edge (translation or heading) or its response fell below a fraction of
+// the run's median response; suspects close together form a stretch, reported with log scan
+// indices and times so a user can find the spot in the recording. Working runs of real logs
+// have a few such stretches too (a bump the matcher absorbed at the window's edge, one poor
+// scan): a stretch is strong evidence only when it holds several suspects, among them both a
+// match at the edge and a collapsed response — the search ran out of room and what it found
+// did not fit.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "slamtune/common/pose2.h"
+#include "slamtune/slam/mapper.h"
+#include "slamtune/slam/mapper_params.h"
+
+namespace slamtune::slam {
+
+// One sequential match as the front end made it.
+struct SequentialMatchStep {
+  int log_index = -1;       // scan index in the log
+  double time = 0.0;        // s since the log's first scan
+  double response = 0.0;    // in [0, 1]
+  double dx = 0.0;          // m, match - guess, world frame (the search window's axes)
+  double dy = 0.0;          // m
+  double dtheta = 0.0;      // rad, normalised
+  double sigma_xy = 0.0;    // m, sqrt of the larger positional variance of the match
+  bool at_window_edge = false;   // |dx| or |dy| reached the window's half side
+  bool at_heading_edge = false;  // |dtheta| reached the coarse angular range
+};
+
+// The step of one ProcessResult with a sequential match (sequential_response >= 0), judged
+// against the window and angular range of `params`.
+SequentialMatchStep StepOf(const ProcessResult& result, int log_index, double time, const MapperParams& params);
+
+struct FrontEndEvidenceOptions {
+  // A step whose response is below this fraction of the run's median response is suspect;
+  // in (0, 1).
+  double low_response_fraction = 0.5;
+  // Suspect steps at most this many steps apart belong to one stretch; >= 0.
+  int max_gap = 3;
+  // A stretch needs this many suspect steps to be reported; >= 1. Two: a single odd match is
+  // common in a working run, two close together are not.
+  int min_suspects = 2;
+  // A stretch is strong evidence when it holds at least this many suspects, at least one at the
+  // search's edge and one with a collapsed response; >= min_suspects.
+  int strong_min_suspects = 3;
+
+  // Throws InputError naming the field, its value and the rule.
+  void Validate() const;
+};
+
+struct SuspectStretch {
+  int first_log_index = -1, last_log_index = -1;  // log scan indices of its first and last suspect step
+  double first_time = 0.0, last_time = 0.0;        // s since the log's first scan
+  int suspects = 0;             // suspect steps in it
+  int at_edge = 0;              // of them, matches that ended at the window's or heading range's edge
+  int low_response = 0;         // of them, matches with a collapsed response
+  double min_response = 1.0;
+  bool strong = false;          // see FrontEndEvidenceOptions::strong_min_suspects
+};
+
+struct FrontEndEvidence {
+  int matches = 0;              // sequential matches made
+  double median_response = 0.0;
+  int at_edge = 0;              // matches at the window's or heading range's edge
+  int low_response = 0;         // matches below low_response_fraction x median
+  std::vector<SuspectStretch> stretches;  // in log order
+
+  // True when the run shows at least one strong stretch: the front end lost its place there.
+  bool points_at_front_end() const;
+  // One line for the terminal, e.g. "front end: 2 suspect stretches (scans 812-840 at
+  // 162.4-168.0 s: 5 matches at the search window's edge; ...)" or "front end: no sign of a
+  // broken sequential match (1469 matches, median response 0.71)".
+  std::string Summary() const;
+};
+
+FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, const FrontEndEvidenceOptions& options = {});
+
+// True when a step is suspect given the run's median response.
+bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options);
+
+}  // namespace slamtune::slam

@@ -1,0 +1,119 @@
+#include "slamtune/slam/front_end_evidence.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::slam {
+namespace {
+
+using ::testing::HasSubstr;
+
+SequentialMatchStep Step(int i, double response, bool edge = false) {
+  SequentialMatchStep s;
+  s.log_index = 10 * i;
+  s.time = 0.5 * i;
+  s.response = response;
+  s.at_window_edge = edge;
+  return s;
+}
+
+std::vector<SequentialMatchStep> Steady(int n) {
+  std::vector<SequentialMatchStep> steps;
+  for (int i = 0; i < n; ++i) steps.push_back(Step(i, 0.8 + 0.01 * (i % 5)));
+  return steps;
+}
+
+TEST(StepOf, JudgesTheMatchAgainstTheWindowAndTheHeadingRange) {
+  MapperParams params;  // window 0.3 m, rho 0.01 m, +-0.349 rad in steps of 0.0349 rad
+  ProcessResult r;
+  r.sequential_response = 0.7;
+  r.sequential_guess = {1.0, 2.0, 0.1};
+  r.sequential_mean = {1.05, 1.98, 0.12};
+  r.sequential_covariance = Eigen::Matrix3d::Identity() * 0.0004;
+  SequentialMatchStep s = StepOf(r, 7, 3.5, params);
+  EXPECT_EQ(s.log_index, 7);
+  EXPECT_NEAR(s.dx, 0.05, 1e-12);
+  EXPECT_NEAR(s.dy, -0.02, 1e-12);
+  EXPECT_NEAR(s.dtheta, 0.02, 1e-12);
+  EXPECT_NEAR(s.sigma_xy, 0.02, 1e-12);
+  EXPECT_FALSE(s.at_window_edge);
+  EXPECT_FALSE(s.at_heading_edge);
+  r.sequential_mean = {1.0, 2.0 - 0.14, 0.1 - 0.33};
+  s = StepOf(r, 7, 3.5, params);
+  EXPECT_TRUE(s.at_window_edge);
+  EXPECT_TRUE(s.at_heading_edge);
+  params.correlation_search_space_dimension = 1.2;  // a wider window holds the same correction
+  EXPECT_FALSE(StepOf(r, 7, 3.5, params).at_window_edge);
+}
+
+TEST(AssessFrontEnd, ASteadyRunShowsNothing) {
+  const FrontEndEvidence e = AssessFrontEnd(Steady(100));
+  EXPECT_EQ(e.matches, 100);
+  EXPECT_NEAR(e.median_response, 0.82, 1e-12);
+  EXPECT_TRUE(e.stretches.empty());
+  EXPECT_FALSE(e.points_at_front_end());
+  EXPECT_THAT(e.Summary(), HasSubstr("no sign of a broken sequential match (100 matches"));
+}
+
+TEST(AssessFrontEnd, IsolatedOddMatchesAreMinorNotEvidence) {
+  auto steps = Steady(100);
+  steps[20].at_window_edge = true;  // a bump absorbed at the edge
+  steps[50].response = 0.2;         // one poor scan
+  steps[51].at_window_edge = true;
+  const FrontEndEvidence e = AssessFrontEnd(steps);
+  EXPECT_EQ(e.at_edge, 2);
+  EXPECT_EQ(e.low_response, 1);
+  ASSERT_EQ(e.stretches.size(), 1u);  // 50-51; 20 alone is below min_suspects
+  EXPECT_FALSE(e.stretches[0].strong);
+  EXPECT_FALSE(e.points_at_front_end());
+}
+
+TEST(AssessFrontEnd, EdgeHitsWithCollapsedResponsesCloseTogetherAreAStrongStretch) {
+  auto steps = Steady(100);
+  steps[60].at_window_edge = true;
+  steps[61].response = 0.25;
+  steps[63].at_heading_edge = true;  // one ordinary match between: still the same stretch
+  steps[64].response = 0.3;
+  steps[90].at_window_edge = true;  // far away: another (minor) stretch
+  steps[91].at_window_edge = true;
+  const FrontEndEvidence e = AssessFrontEnd(steps);
+  ASSERT_EQ(e.stretches.size(), 2u);
+  const SuspectStretch& s = e.stretches[0];
+  EXPECT_TRUE(s.strong);
+  EXPECT_EQ(s.first_log_index, 600);
+  EXPECT_EQ(s.last_log_index, 640);
+  EXPECT_EQ(s.suspects, 4);
+  EXPECT_EQ(s.at_edge, 2);
+  EXPECT_EQ(s.low_response, 2);
+  EXPECT_DOUBLE_EQ(s.min_response, 0.25);
+  EXPECT_FALSE(e.stretches[1].strong);
+  EXPECT_TRUE(e.points_at_front_end());
+  EXPECT_THAT(e.Summary(), HasSubstr("1 stretch where sequential matching lost its place (scans 600-640, 30.0-32.0 s "
+                                     "into the log: 2 matches at the search's edge, 2 with a collapsed response "
+                                     "(down to 0.25))"));
+}
+
+TEST(AssessFrontEnd, GapsLongerThanTheLimitSplitStretches) {
+  auto steps = Steady(100);
+  for (int i : {10, 11, 16, 17}) steps[i].at_window_edge = true;
+  FrontEndEvidenceOptions options;
+  options.max_gap = 3;  // 11 -> 16 is 4 ordinary steps apart
+  EXPECT_EQ(AssessFrontEnd(steps, options).stretches.size(), 2u);
+  options.max_gap = 4;
+  EXPECT_EQ(AssessFrontEnd(steps, options).stretches.size(), 1u);
+}
+
+TEST(AssessFrontEnd, RefusesBadOptionsAndHandlesNoMatches) {
+  FrontEndEvidenceOptions bad;
+  bad.low_response_fraction = 1.5;
+  EXPECT_THROW(AssessFrontEnd(Steady(5), bad), InputError);
+  bad = {};
+  bad.strong_min_suspects = 1;
+  EXPECT_THROW(bad.Validate(), InputError);
+  EXPECT_EQ(AssessFrontEnd({}).Summary(), "front end: no sequential match was made");
+}
+
+}  // namespace
+}  // namespace slamtune::slam
