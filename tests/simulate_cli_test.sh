@@ -11,7 +11,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # --list names the worlds, default first, and needs no --out.
 "$bin" simulate --list > "$tmp/list.txt" || fail "--list exited non-zero"
 head -n 1 "$tmp/list.txt" | grep -q '^office ' || fail "--list does not start with office"
-for world in office hall corridor; do
+for world in office hall corridor office-slip office-jump corridor-long; do
   grep -q "^$world " "$tmp/list.txt" || fail "--list lacks $world"
 done
 
@@ -41,6 +41,19 @@ if cmp -s "$tmp/a/office.clf" "$tmp/c/office.clf"; then fail "seeds 3 and 4 gave
 "$bin" simulate --world hall --beams 361 --max-range 25 --out "$tmp/h" > /dev/null || fail "hall with 361 beams"
 awk '$1 == "FLASER" && $2 != 361 {exit 1}' "$tmp/h/hall.clf" || fail "hall lines without 361 readings"
 
+# Planted faults: a fault world names its fault in the log header and summary; --fault adds
+# one; a jump and its opposite give back the plain world's log byte for byte.
+"$bin" simulate --world office-jump --seed 3 --out "$tmp/j" > "$tmp/j.txt" || fail "office-jump"
+grep -q '^# planted odometry fault (true distance travelled): jump at 20 m over 0.1 m' "$tmp/j/office-jump.clf" ||
+  fail "office-jump log does not name its fault"
+grep -q 'planted odometry fault: jump' "$tmp/j.txt" || fail "office-jump summary does not name its fault"
+if grep -q 'planted' "$tmp/a/office.clf"; then fail "the plain office log names a fault"; fi
+"$bin" simulate --world office-jump --seed 3 --fault jump,20,0.1,-1 --out "$tmp/u" > /dev/null || fail "--fault"
+cmp -s <(grep -v '^#' "$tmp/u/office-jump.clf") <(grep -v '^#' "$tmp/a/office.clf") ||
+  fail "a jump and its opposite did not give the plain office log"
+"$bin" simulate --seed 3 --fault spin,45,0.1,60 --fault reverse,100,1 --out "$tmp/s" > "$tmp/s.txt" || fail "two --fault"
+[[ $(grep -c '^# planted odometry fault' "$tmp/s/office.clf") == 2 ]] || fail "two faults not both in the header"
+
 # Bad input: non-zero exit, nothing claimed.
 expect_failure() {
   if "$bin" simulate "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"; then fail "accepted: simulate $*"; fi
@@ -52,6 +65,10 @@ expect_failure --beams 1 --out "$tmp/x"
 grep -q "beams" "$tmp/err.txt" || fail "bad beam count not named in the error"
 expect_failure --speed -1 --out "$tmp/x"
 expect_failure --seed -1 --out "$tmp/x"
+expect_failure --fault slip,1,1,1 --out "$tmp/x"
+grep -q "unknown kind 'slip'" "$tmp/err.txt" || fail "unknown fault kind not named in the error"
+expect_failure --fault jump,1,0,1 --out "$tmp/x"
+grep -q "length_m = 0" "$tmp/err.txt" || fail "bad fault length not named in the error"
 expect_failure --seed 1
 grep -q -- "--out" "$tmp/err.txt" || fail "missing --out not explained"
 [[ ! -e "$tmp/x" ]] || fail "a failed run created its output folder"

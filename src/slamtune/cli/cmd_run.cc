@@ -2,7 +2,9 @@
 // the map (map.pgm + map.yaml as map_saver writes them, map.png), the trajectory of every log
 // scan, the loop closures, and run.json (counts, timing, parameters, map metrics and, with
 // --relations, the Freiburg relation error). The output folder is checked before the run and
-// every file is written whole or not at all (atomic_file.h).
+// every file is written whole or not at all (atomic_file.h). Without LOG it runs on a built-in
+// world simulated in memory (`--world`, `--world-seed`, as `optimize` does), and the world's
+// relations give the error against its true trajectory unless --relations names others.
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
@@ -27,6 +29,7 @@
 #include "slamtune/io/trajectory.h"
 #include "slamtune/metrics/gt_error.h"
 #include "slamtune/metrics/map_quality.h"
+#include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/occupancy_grid.h"
 #include "slamtune/slam/params_yaml.h"
@@ -41,6 +44,8 @@ struct RunArgs {
   std::string preset = "slam_karto";
   std::vector<std::string> sets;
   std::string relations;
+  std::string world = sim::kDefaultWorld;  // simulated when no LOG is given
+  unsigned world_seed = 1;
   bool no_loop_closure = false;
   LogInputOptions input;
   bool quiet = false;
@@ -119,11 +124,31 @@ int Run(const RunArgs& args) {
   const slam::MapperParams params = ResolveParams(args);
   std::vector<io::Relation> relations;
   if (!args.relations.empty()) relations = io::ReadRelations(args.relations);  // fail before the long run
+  sim::SimulationOptions world;
+  world.world = args.world;
+  world.seed = args.world_seed;
+  if (args.log.empty()) world.Validate();
   EnsureOutputDir(args.out);
   const auto file = [&](const char* name) { return (std::filesystem::path(args.out) / name).string(); };
 
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto, 10.0);
-  auto log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
+  std::shared_ptr<const io::LaserLog> log;
+  std::string log_label = args.log, relations_label = args.relations;
+  if (args.log.empty()) {
+    if (!args.quiet) {
+      std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n", args.world.c_str(),
+                   args.world_seed);
+    }
+    sim::Simulation simulation = sim::Simulate(world);
+    log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
+    log_label = fmt::format("built-in world {} (seed {})", args.world, args.world_seed);
+    if (args.relations.empty()) {
+      relations = std::move(simulation.relations);
+      relations_label = "simulated (true trajectory)";
+    }
+  } else {
+    log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
+  }
   if (!args.quiet) {
     for (const std::string& line : io::DescribeLogInput(*log)) std::fprintf(stderr, "%s\n", line.c_str());
   }
@@ -150,7 +175,7 @@ int Run(const RunArgs& args) {
       slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid_options)
           .ToMapImage();
   if (map.width <= 0 || map.height <= 0) {
-    throw InputError(args.log, 0,
+    throw InputError(log_label, 0,
                      fmt::format("nothing to map: no reading of the {} processed scans lies within the range "
                                  "threshold ({} m); are all readings no-returns?",
                                  runner.mapper().scans().size(), runner.mapper().range_threshold()));
@@ -171,7 +196,7 @@ int Run(const RunArgs& args) {
     duplicates[slam::EdgeKindName(static_cast<slam::EdgeKind>(k))] = summary.duplicate_edges[k];
   }
   nlohmann::json run = {
-      {"log", args.log},
+      {"log", log_label},
       {"scans", summary.scans_read},
       {"scans_offered", summary.scans_offered},
       {"scans_not_moved", summary.scans_not_moved},
@@ -209,13 +234,13 @@ int Run(const RunArgs& args) {
         {"message", quality.message}}},
   };
   std::string gt_line;
-  if (!args.relations.empty()) {
+  if (!relations_label.empty()) {
     const metrics::GtError e = metrics::ComputeGtError(trajectory, relations);
     nlohmann::json gt = nlohmann::json::object();
     for (const auto& [key, value] : metrics::GtErrorFields(e)) gt[key] = Number(value);
     gt["relations_used"] = e.relations_used;
     gt["relations_missing"] = e.relations_missing;
-    gt["relations_file"] = args.relations;
+    gt["relations_file"] = relations_label;
     run["gt_error"] = gt;
     gt_line = fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e.trans_mean_m,
                           e.trans_std_m, e.rot_mean_deg, e.rot_std_deg, e.relations_used);
@@ -247,7 +272,8 @@ const SubcommandRegistrar kRun(Subcommand{
     20,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RunArgs>();
-      app.add_option("LOG", args->log, "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag")->required();
+      app.add_option("LOG", args->log,
+                     "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag; none: the built-in world --world");
       app.add_option("--out", args->out, "Output folder (created)")->required();
       app.add_option("--params", args->params_file,
                      "Mapper parameters YAML (slam_toolbox ros__parameters nesting or a flat map)");
@@ -255,6 +281,9 @@ const SubcommandRegistrar kRun(Subcommand{
           ->capture_default_str();
       app.add_option("--set", args->sets, "Override one parameter, name=value (repeatable; applied last)");
       app.add_option("--relations", args->relations, "Freiburg relations file: report the relation error");
+      app.add_option("--world", args->world, "built-in world to simulate when no LOG is given (see `simulate --list`)")
+          ->capture_default_str();
+      app.add_option("--world-seed", args->world_seed, "seed of the simulated world")->capture_default_str();
       app.add_flag("--no-loop-closure", args->no_loop_closure, "Same as --set do_loop_closing=false");
       args->input.AddTo(app);
       app.add_flag("--quiet", args->quiet, "No progress on stderr");

@@ -23,11 +23,12 @@ struct SimulateState {
   std::string out;
   bool list = false;
   std::vector<double> laser_offset;  // X,Y,YAW when given
+  std::vector<std::string> faults;   // --fault KIND,START_M,LENGTH_M[,MAGNITUDE], in order
 };
 
 int ListWorlds() {
   for (const sim::WorldInfo& world : sim::ListWorlds()) {
-    std::printf("%-10s %s\n", world.name.c_str(), world.description.c_str());
+    std::printf("%-14s %s\n", world.name.c_str(), world.description.c_str());
   }
   return 0;
 }
@@ -39,6 +40,7 @@ int Run(const SimulateState& state) {
   if (!state.laser_offset.empty()) {
     options.laser_offset = Pose2{state.laser_offset[0], state.laser_offset[1], state.laser_offset[2]};
   }
+  for (const std::string& fault : state.faults) options.odometry.faults.push_back(sim::ParseOdometryFault(fault));
   const auto start = std::chrono::steady_clock::now();
   const sim::Simulation simulation = sim::Simulate(options);
   const sim::SimulationFiles files = sim::WriteSimulation(state.out, simulation, options);
@@ -86,6 +88,10 @@ std::function<int()> Setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--odom-heading-drift", o.odometry.heading_drift_per_m, "Systematic heading drift (rad/m)")
       ->capture_default_str();
+  app.add_option("--fault", state->faults,
+                 "Plant an odometry fault, KIND,START_M,LENGTH_M[,MAGNITUDE] (repeatable): spin (MAGNITUDE deg "
+                 "reported, not turned), jump (MAGNITUDE m reported, not travelled) or reverse (travel reported "
+                 "backwards), over LENGTH_M of true travel from START_M along the route");
   app.add_option("--relation-stride", o.relations.stride, "Scans between relation samples")->capture_default_str();
   app.add_option("--relation-gap", o.relations.local_gap_s, "Time between the scans of a local relation (s)")
       ->capture_default_str();

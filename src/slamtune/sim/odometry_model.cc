@@ -29,6 +29,7 @@ void OdometryNoiseOptions::Validate() const {
   if (!(std::fabs(heading_drift_per_m) <= 0.1)) {
     throw InputError(fmt::format("odometry heading_drift_per_m = {}: must be in [-0.1, 0.1]", heading_drift_per_m));
   }
+  for (std::size_t i = 0; i < faults.size(); ++i) faults[i].Validate(fmt::format("odometry faults[{}]", i));
 }
 
 OdometryModel::OdometryModel(const Pose2& start, const OdometryNoiseOptions& options, uint64_t seed)
@@ -43,9 +44,15 @@ const Pose2& OdometryModel::Advance(const Pose2& true_delta) {
                                           options_.rotation_noise_per_rad * options_.rotation_noise_per_rad *
                                               std::fabs(rotation));
   const double rotation_noise = random_.Gaussian(rotation_sigma);
-  const double reported_distance = distance * (1.0 + options_.translation_scale_bias) + distance_noise;
-  const double reported_rotation = rotation * (1.0 + options_.rotation_scale_bias) +
-                                   options_.heading_drift_per_m * distance + rotation_noise;
+  double reported_distance = distance * (1.0 + options_.translation_scale_bias) + distance_noise;
+  double reported_rotation = rotation * (1.0 + options_.rotation_scale_bias) +
+                             options_.heading_drift_per_m * distance + rotation_noise;
+  const FaultEffect fault = FaultEffectOnStep(options_.faults, travelled_m_, distance);
+  if (fault.active) {
+    reported_distance += fault.extra_distance;
+    reported_rotation += fault.extra_rotation;
+  }
+  travelled_m_ += distance;
   pose_ = Compose(pose_, Pose2{reported_distance * std::cos(direction), reported_distance * std::sin(direction),
                                NormalizeAngle(reported_rotation)});
   return pose_;

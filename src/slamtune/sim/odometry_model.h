@@ -9,12 +9,17 @@
 // random walk), so the accumulated noise does not depend on the step length; the systematic
 // terms (miscalibrated wheel base and wheel diameters, Borenstein & Feng 1996, "Measurement
 // and correction of systematic odometry errors in mobile robots", IEEE T-RA 12(6)) make the
-// heading drift steadily, so revisited walls appear doubled until a loop is closed.
+// heading drift steadily, so revisited walls appear doubled until a loop is closed. Planted
+// faults (odometry_fault.h) add their share of the step to distance' and rotation'; they draw
+// no random numbers, and without faults the odometry is bit for bit what it is without them.
 #pragma once
 
 #include <cstdint>
 
+#include <vector>
+
 #include "slamtune/common/pose2.h"
+#include "slamtune/sim/odometry_fault.h"
 #include "slamtune/sim/random.h"
 
 namespace slamtune::sim {
@@ -26,6 +31,7 @@ struct OdometryNoiseOptions {
   double translation_scale_bias = 0.0;   // fraction: reported distance = (1 + b) x true, in (-0.5, 0.5)
   double rotation_scale_bias = 0.01;     // fraction: reported rotation = (1 + b) x true, in (-0.5, 0.5)
   double heading_drift_per_m = 0.001;    // rad/m: systematic heading drift per metre driven, |.| <= 0.1
+  std::vector<OdometryFault> faults;     // planted failures located by true distance travelled; none by default
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
@@ -37,15 +43,18 @@ class OdometryModel {
   OdometryModel(const Pose2& start, const OdometryNoiseOptions& options, uint64_t seed);
 
   // Reports the true robot-frame motion `true_delta` with noise and returns the new odometric pose.
-  // Draws exactly two Gaussians per call.
+  // Draws exactly two Gaussians per call, faults or not.
   const Pose2& Advance(const Pose2& true_delta);
 
   const Pose2& pose() const { return pose_; }
+  // True distance travelled so far (m): the sum of the steps' chord lengths; faults are located by it.
+  double travelled_m() const { return travelled_m_; }
 
  private:
   OdometryNoiseOptions options_;
   Random random_;
   Pose2 pose_;
+  double travelled_m_ = 0.0;
 };
 
 }  // namespace slamtune::sim

@@ -80,5 +80,28 @@ TEST(OdometryNoiseOptions, ValidateNamesFieldValueAndRule) {
               testing::ThrowsMessage<InputError>(testing::HasSubstr("heading_drift_per_m = 1")));
 }
 
+// A spin fault turns the odometry by its magnitude within its stretch and nowhere else, and
+// draws no random numbers: noisy odometry with and without it differs by that turn alone.
+TEST(OdometryModel, FaultsAddTheirMotionOnlyInTheirStretch) {
+  OdometryNoiseOptions options;
+  OdometryFault spin;
+  spin.kind = OdometryFaultKind::kSpin;
+  spin.start_m = 1.0;
+  spin.length_m = 0.1;
+  spin.magnitude = 0.5;
+  OdometryNoiseOptions faulty = options;
+  faulty.faults = {spin};
+  OdometryModel a(Pose2{}, options, 7), b(Pose2{}, faulty, 7);
+  for (int i = 0; i < 40; ++i) {
+    a.Advance(Pose2{0.05, 0, 0});
+    b.Advance(Pose2{0.05, 0, 0});
+    if (b.travelled_m() < 1.0 - 1e-9) {
+      ASSERT_EQ(a.pose(), b.pose()) << "step " << i;  // bit for bit before the fault
+    }
+  }
+  EXPECT_NEAR(b.travelled_m(), 2.0, 1e-12);
+  EXPECT_NEAR(NormalizeAngle(b.pose().theta - a.pose().theta), 0.5, 1e-12);
+}
+
 }  // namespace
 }  // namespace slamtune::sim

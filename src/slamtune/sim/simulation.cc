@@ -60,15 +60,17 @@ void SimulationOptions::Validate() const {
 }
 
 std::string SimulationSummary::Report() const {
+  std::string faults;
+  for (const std::string& fault : odometry_faults) faults += "\nplanted odometry fault: " + fault;
   return fmt::format(
       "world {} (seed {}): {} scans, {} ODOM records, path {:.1f} m in {:.1f} s\n"
       "readings: {} ({} no-return, {:.1f}%)\n"
       "odometry error vs truth: final {:.2f} m / {:.1f} deg, max {:.2f} m / {:.1f} deg\n"
-      "relations: {} local, {} revisits (longest gap {:.0f} s)",
+      "relations: {} local, {} revisits (longest gap {:.0f} s){}",
       world, seed, scans, odometry_records, path_length_m, duration_s, readings, no_return_readings,
       readings ? 100.0 * no_return_readings / readings : 0.0, final_position_error_m,
       RadToDeg(final_heading_error_rad), max_position_error_m, RadToDeg(max_heading_error_rad), local_relations,
-      revisit_relations, longest_revisit_gap_s);
+      revisit_relations, longest_revisit_gap_s, faults);
 }
 
 Simulation Simulate(const SimulationOptions& options) {
@@ -97,7 +99,10 @@ Simulation Simulate(const SimulationOptions& options) {
     angle_increment = flaser_increment;
   }
   Random laser_random(StreamSeed(options.seed, kLaserStream));
-  OdometryModel odometry(route.PoseAt(0.0), options.odometry, StreamSeed(options.seed, kOdometryStream));
+  sim.odometry = options.odometry;
+  for (const OdometryFault& fault : sim.world.odometry_faults) sim.odometry.faults.push_back(fault);
+  sim.odometry.Validate();
+  OdometryModel odometry(route.PoseAt(0.0), sim.odometry, StreamSeed(options.seed, kOdometryStream));
 
   io::LaserLog& log = sim.log;
   log.path = "<memory>";
@@ -195,6 +200,7 @@ Simulation Simulate(const SimulationOptions& options) {
   summary.local_relations = relations.local_pairs;
   summary.revisit_relations = relations.revisit_pairs;
   summary.longest_revisit_gap_s = relations.longest_revisit_gap_s;
+  for (const OdometryFault& fault : sim.odometry.faults) summary.odometry_faults.push_back(fault.Describe());
   return sim;
 }
 

@@ -22,6 +22,9 @@
 // (io::FlaserBeamGeometry: 180 deg field of view and an odd beam count such as the default
 // 181, or 361), and ROBOTLASER1 records, which state their geometry, for any other laser.
 //
+// Faults: the world's planted odometry faults (World::odometry_faults) are added after those of
+// `odometry.faults`; both are located by true distance travelled.
+//
 // Determinism: everything follows from `seed`; laser noise and odometry noise use separate
 // streams (random.h), so e.g. changing the beam count leaves the odometry unchanged.
 #pragma once
@@ -80,6 +83,7 @@ struct SimulationSummary {
   std::size_t local_relations = 0;
   std::size_t revisit_relations = 0;
   double longest_revisit_gap_s = 0.0;
+  std::vector<std::string> odometry_faults;  // planted faults, described (OdometryFault::Describe)
 
   // A few human-readable lines.
   std::string Report() const;
@@ -87,6 +91,9 @@ struct SimulationSummary {
 
 struct Simulation {
   World world;
+  // The odometry the log was recorded with: the options' noise, with the world's planted faults
+  // after the options' own.
+  OdometryNoiseOptions odometry;
   io::LaserLog log;                   // laser scans and ODOM records, each in time order
   std::vector<io::TimedPose> truth;   // true laser pose at each scan (robot (+) laser_offset)
   std::vector<io::Relation> relations;

@@ -43,7 +43,7 @@ int RangeDecimals(double resolution) {
 std::vector<std::string> DescribeSimulation(const Simulation& simulation, const SimulationOptions& options) {
   const LaserOptions& laser = options.laser;
   const OdometryNoiseOptions& odo = options.odometry;
-  return {
+  std::vector<std::string> lines = {
       fmt::format("simulated by slamtune: world {} (seed {}): {}", simulation.world.name, options.seed,
                   simulation.world.description),
       fmt::format("route {:.2f} m at {} m/s; laser {} Hz; ODOM every {} m", simulation.summary.path_length_m,
@@ -61,6 +61,13 @@ std::vector<std::string> DescribeSimulation(const Simulation& simulation, const 
       fmt::format("ground truth: {0}.truth.txt (true laser pose per scan), {0}.relations (Freiburg format)",
                   simulation.world.name),
   };
+  // Only a log with planted faults says so, so the plain worlds' logs keep their header.
+  const std::vector<OdometryFault>& faults = simulation.odometry.faults;
+  for (std::size_t i = 0; i < faults.size(); ++i) {
+    lines.insert(lines.begin() + 5 + static_cast<std::ptrdiff_t>(i),
+                 "planted odometry fault (true distance travelled): " + faults[i].Describe());
+  }
+  return lines;
 }
 
 SimulationFiles WriteSimulation(const std::string& dir, const Simulation& simulation, const SimulationOptions& options) {

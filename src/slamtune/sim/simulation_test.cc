@@ -184,6 +184,65 @@ TEST(Simulate, LaserStreamDoesNotMoveTheOdometry) {
   EXPECT_EQ(b.log.scans.front().ranges.size(), 361u);
 }
 
+// A planted fault changes the odometry only from where it starts: the log before it, the
+// true path and the laser readings are those of the world without it, bit for bit.
+TEST(Simulate, PlantedFaultActsWhereAndOnlyWhereConfigured) {
+  const Simulation& plain = Cached("office");
+  const Simulation& faulty = Cached("office-jump");
+  ASSERT_EQ(faulty.odometry.faults.size(), 1u);
+  const OdometryFault& fault = faulty.odometry.faults[0];
+  EXPECT_EQ(fault.kind, OdometryFaultKind::kJump);
+  ASSERT_EQ(plain.log.odometry.size(), faulty.log.odometry.size());
+  ASSERT_EQ(plain.log.scans.size(), faulty.log.scans.size());
+  const double start_time = plain.log.odometry.front().ipc_time;
+  std::size_t first_changed = plain.log.odometry.size();
+  for (std::size_t i = 0; i < plain.log.odometry.size(); ++i) {
+    if (!(plain.log.odometry[i].pose == faulty.log.odometry[i].pose)) {
+      first_changed = i;
+      break;
+    }
+  }
+  // Travel (0.5 m/s) at the first changed record: just past the fault's start.
+  const double travelled = (faulty.log.odometry[first_changed].ipc_time - start_time) * 0.5;
+  EXPECT_GT(travelled, fault.start_m);
+  EXPECT_LE(travelled, fault.start_m + 0.06);
+  // After the fault the odometry is 1 m further along, give or take the noise.
+  const Pose2& a = plain.log.odometry.back().pose;
+  const Pose2& b = faulty.log.odometry.back().pose;
+  EXPECT_NEAR(std::hypot(a.x - b.x, a.y - b.y), fault.magnitude, 0.3);
+  for (std::size_t k = 0; k < plain.log.scans.size(); ++k) {
+    ASSERT_EQ(plain.truth[k].pose, faulty.truth[k].pose);
+    ASSERT_EQ(plain.log.scans[k].ranges, faulty.log.scans[k].ranges);
+  }
+  EXPECT_EQ(plain.relations.size(), faulty.relations.size());
+  EXPECT_TRUE(plain.odometry.faults.empty());
+  EXPECT_TRUE(plain.summary.odometry_faults.empty());
+  ASSERT_EQ(faulty.summary.odometry_faults.size(), 1u);
+  EXPECT_THAT(faulty.summary.Report(), testing::HasSubstr("planted odometry fault: jump at 20 m over 0.1 m"));
+}
+
+TEST(Simulate, FaultsOfTheOptionsComeBeforeTheWorldsAndAreDeterministic) {
+  SimulationOptions options;
+  options.world = "office-slip";
+  OdometryFault reverse;
+  reverse.kind = OdometryFaultKind::kReverse;
+  reverse.start_m = 100.0;
+  reverse.length_m = 1.0;
+  options.odometry.faults = {reverse};
+  const Simulation a = Simulate(options), b = Simulate(options);
+  ASSERT_EQ(a.odometry.faults.size(), 2u);
+  EXPECT_EQ(a.odometry.faults[0].kind, OdometryFaultKind::kReverse);
+  EXPECT_EQ(a.odometry.faults[1].kind, OdometryFaultKind::kSpin);
+  EXPECT_EQ(AsCarmen(a), AsCarmen(b));
+  EXPECT_NE(AsCarmen(a), AsCarmen(Cached("office-slip")));
+  // A jump and its opposite cancel exactly: the world's log without its fault.
+  options.world = "office-jump";
+  OdometryFault undo = Cached("office-jump").odometry.faults[0];
+  undo.magnitude = -undo.magnitude;
+  options.odometry.faults = {undo};
+  EXPECT_EQ(AsCarmen(Simulate(options)), AsCarmen(Cached("office")));
+}
+
 TEST(SimulationOptions, ValidateNamesFieldValueAndRule) {
   SimulationOptions options;
   EXPECT_NO_THROW(options.Validate());
@@ -197,6 +256,11 @@ TEST(SimulationOptions, ValidateNamesFieldValueAndRule) {
   options = SimulationOptions();
   options.laser.beams = 0;
   EXPECT_THAT([&] { Simulate(options); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("laser beams = 0")));
+  options = SimulationOptions();
+  options.odometry.faults.resize(2);
+  options.odometry.faults[1].length_m = -1.0;
+  EXPECT_THAT([&] { options.Validate(); },
+              testing::ThrowsMessage<InputError>(testing::HasSubstr("odometry faults[1] (spin) length_m = -1")));
   options = SimulationOptions();
   options.max_scans = 100;
   EXPECT_THAT([&] { Simulate(options); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("max_scans = 100")));

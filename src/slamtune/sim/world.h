@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "slamtune/sim/odometry_fault.h"
 #include "slamtune/sim/ray_caster.h"
 
 namespace slamtune::sim {
@@ -17,6 +18,9 @@ struct World {
   // The robot's route (m): straight legs between waypoints, corners rounded (see route.h).
   std::vector<Eigen::Vector2d> waypoints;
   double turn_radius = 0.5;  // m, largest radius of the arcs at the corners
+  // Odometry failures planted in this world (odometry_fault.h), applied on top of the
+  // simulation's own odometry options; none in the plain worlds.
+  std::vector<OdometryFault> odometry_faults;
 };
 
 // Builds walls from simple shapes. Coordinates in metres.

@@ -21,6 +21,15 @@ constexpr Entry kWorlds[] = {
      &MakeHallWorld},
     {"corridor", "50 x 14 m rectangular corridor loop, 2.5 m wide, with wall niches, driven 1.75 times",
      &MakeCorridorWorld},
+    {"office-slip", "office with a wheel slip at 45 m: odometry reports a 60 deg turn within 0.1 m that did not "
+     "happen (beyond the +-20 deg sequential search)",
+     &MakeOfficeSlipWorld},
+    {"office-jump", "office with a 1 m odometry jump at 20 m, leaving the first room (beyond the +-0.15 m "
+     "sequential window)",
+     &MakeOfficeJumpWorld},
+    {"corridor-long", "64 x 12 m corridor loop whose 60 m south corridor has bare walls; odometry reports 5 % "
+     "too much travel along it",
+     &MakeCorridorLongWorld},
 };
 
 }  // namespace

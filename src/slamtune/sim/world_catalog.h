@@ -4,6 +4,14 @@
 //            route closes the west loop, the east loop, then the outer ring, and enters rooms.
 //   hall     a large open hall with pillars, circled twice: odometry drift alone doubles walls.
 //   corridor a long, narrow rectangular corridor loop with wall niches, driven 1.75 times.
+//
+// Worlds with planted front-end failures (fault_worlds.cc; odometry faults of odometry_fault.h
+// that slam_karto's default sequential matcher cannot absorb, for checking objectives and tuners
+// against the truth):
+//   office-slip    office with a 60 deg wheel-slip turn reported at 45 m (a broken wing);
+//   office-jump    office with a 1 m odometry jump at 20 m (doubled corridor walls);
+//   corridor-long  a corridor loop with a 60 m bare corridor, where matching along the axis
+//                  is degenerate, and 5 % too much travel reported along it.
 #pragma once
 
 #include <string>
@@ -30,5 +38,8 @@ World MakeWorld(const std::string& name);
 World MakeOfficeWorld();
 World MakeHallWorld();
 World MakeCorridorWorld();
+World MakeOfficeSlipWorld();
+World MakeOfficeJumpWorld();
+World MakeCorridorLongWorld();
 
 }  // namespace slamtune::sim

@@ -20,13 +20,16 @@ double PointSegmentDistance(const V& p, const Segment& s) {
   return (s.a + u * e - p).norm();
 }
 
-TEST(WorldCatalog, ListsOfficeFirstThenHallAndCorridor) {
+TEST(WorldCatalog, ListsOfficeFirstThenHallCorridorAndTheFaultWorlds) {
   const auto worlds = ListWorlds();
-  ASSERT_GE(worlds.size(), 3u);
+  ASSERT_EQ(worlds.size(), 6u);
   EXPECT_EQ(worlds[0].name, kDefaultWorld);
   EXPECT_EQ(worlds[0].name, "office");
   EXPECT_EQ(worlds[1].name, "hall");
   EXPECT_EQ(worlds[2].name, "corridor");
+  EXPECT_EQ(worlds[3].name, "office-slip");
+  EXPECT_EQ(worlds[4].name, "office-jump");
+  EXPECT_EQ(worlds[5].name, "corridor-long");
   for (const auto& info : worlds) {
     EXPECT_FALSE(info.description.empty());
     EXPECT_EQ(info.description.find('\n'), std::string::npos);
@@ -36,13 +39,35 @@ TEST(WorldCatalog, ListsOfficeFirstThenHallAndCorridor) {
   }
 }
 
+// Plain worlds have no planted faults; each fault world has its fault inside its route, and
+// office-slip and office-jump drive exactly the office's walls and route.
+TEST(WorldCatalog, FaultWorldsPlantValidFaultsOnTheirRoute) {
+  for (const char* plain : {"office", "hall", "corridor"}) EXPECT_TRUE(MakeWorld(plain).odometry_faults.empty()) << plain;
+  const World office = MakeWorld("office");
+  for (const char* name : {"office-slip", "office-jump", "corridor-long"}) {
+    const World world = MakeWorld(name);
+    ASSERT_EQ(world.odometry_faults.size(), 1u) << name;
+    const OdometryFault& fault = world.odometry_faults[0];
+    EXPECT_NO_THROW(fault.Validate(name));
+    const Route route(world.waypoints, world.turn_radius);
+    EXPECT_LT(fault.start_m + fault.length_m, route.length() - 50.0) << name << ": room to see its effect";
+  }
+  for (const char* name : {"office-slip", "office-jump"}) {
+    const World world = MakeWorld(name);
+    EXPECT_EQ(world.waypoints, office.waypoints) << name;
+    EXPECT_EQ(world.walls.size(), office.walls.size()) << name;
+  }
+  EXPECT_EQ(MakeWorld("office-slip").odometry_faults[0].kind, OdometryFaultKind::kSpin);
+  EXPECT_EQ(MakeWorld("office-jump").odometry_faults[0].kind, OdometryFaultKind::kJump);
+}
+
 TEST(WorldCatalog, UnknownNameIsAnInputErrorListingTheWorlds) {
   try {
     MakeWorld("moon");
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), testing::HasSubstr("'moon'"));
-    EXPECT_THAT(e.what(), testing::HasSubstr("office, hall, corridor"));
+    EXPECT_THAT(e.what(), testing::HasSubstr("office, hall, corridor, office-slip, office-jump, corridor-long"));
   }
 }
 

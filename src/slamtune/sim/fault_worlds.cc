@@ -1,0 +1,77 @@
+// Worlds with planted front-end failures: the built-in worlds' walls and routes with odometry
+// faults (odometry_fault.h) that break Karto's sequential scan matching at slam_karto's
+// defaults, the way real logs break, so that objectives and tuners can be checked against the
+// true trajectory.
+//
+//   office-slip    office, with a wheel slip 45 m along the route (entering the north-west room):
+//                  the odometry reports a 60 deg turn within 0.1 m that did not happen. The
+//                  sequential matcher searches +-20 deg (coarse_search_angle_offset 0.349 rad)
+//                  and cannot take the turn back: the rest of the map is rotated, a broken wing.
+//   office-jump    office, with a 1 m translation jump 20 m along the route (leaving the first
+//                  room): more than six times the +-0.15 m sequential window; the scans after
+//                  it are placed too far on and the middle corridor's walls come out doubled.
+//   corridor-long  a 64 x 12 m corridor loop whose south corridor has bare walls: along its axis
+//                  scan matching is degenerate and the pose follows the odometry, which there
+//                  reports 2 m more travel than driven (a scale error of 5 % over 40 m).
+#include "slamtune/common/karto_math.h"
+#include "slamtune/sim/route_builder.h"
+#include "slamtune/sim/world_catalog.h"
+
+namespace slamtune::sim {
+namespace {
+
+OdometryFault Fault(OdometryFaultKind kind, double start_m, double length_m, double magnitude) {
+  OdometryFault fault;
+  fault.kind = kind;
+  fault.start_m = start_m;
+  fault.length_m = length_m;
+  fault.magnitude = magnitude;
+  return fault;
+}
+
+}  // namespace
+
+World MakeOfficeSlipWorld() {
+  World world = MakeOfficeWorld();
+  world.odometry_faults = {Fault(OdometryFaultKind::kSpin, 45.0, 0.1, DegToRad(60.0))};
+  return world;
+}
+
+World MakeOfficeJumpWorld() {
+  World world = MakeOfficeWorld();
+  world.odometry_faults = {Fault(OdometryFaultKind::kJump, 20.0, 0.1, 1.0)};
+  return world;
+}
+
+World MakeCorridorLongWorld() {
+  using V = Eigen::Vector2d;
+  WallBuilder walls;
+  // Outer wall, counter-clockwise; the south wall (y = 0) and the block's south face (y = 2.5)
+  // are bare, every other wall has niches every few metres (negative depth: away from the corridor).
+  walls.Wall(V(0, 0), V(64, 0));
+  walls.WallWithOpenings(V(64, 0), V(64, 12), {{4.0, 1.2, -0.4}, {8.5, 1.2, -0.4}});
+  std::vector<WallBuilder::Opening> north;
+  for (double at = 5.0; at < 62.0; at += 7.0) north.push_back({at, 1.2, -0.4});
+  walls.WallWithOpenings(V(64, 12), V(0, 12), north);
+  walls.WallWithOpenings(V(0, 12), V(0, 0), {{5.0, 1.6, -0.4}});
+  // Inner block, clockwise.
+  walls.WallWithOpenings(V(2.5, 2.5), V(2.5, 9.5), {{3.5, 1.0, -0.4}});
+  std::vector<WallBuilder::Opening> block_north;
+  for (double at = 6.0; at < 58.0; at += 9.0) block_north.push_back({at, 1.0, -0.4});
+  walls.WallWithOpenings(V(2.5, 9.5), V(61.5, 9.5), block_north);
+  walls.WallWithOpenings(V(61.5, 9.5), V(61.5, 2.5), {{3.0, 1.0, -0.4}});
+  walls.Wall(V(61.5, 2.5), V(2.5, 2.5));
+
+  RouteBuilder route(V(4, 1.25));
+  route.To(62.75, 1.25).To(62.75, 10.75).To(1.25, 10.75).To(1.25, 1.25);
+  route.To(62.75, 1.25).To(62.75, 8);
+
+  World world;
+  world.walls = walls.Take();
+  world.waypoints = route.Take();
+  world.turn_radius = 0.6;
+  world.odometry_faults = {Fault(OdometryFaultKind::kJump, 10.0, 40.0, 2.0)};
+  return world;
+}
+
+}  // namespace slamtune::sim
