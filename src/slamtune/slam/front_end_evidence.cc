@@ -39,14 +39,39 @@ void FrontEndEvidenceOptions::Validate() const {
   if (min_suspects < 1) {
     throw InputError(fmt::format("FrontEndEvidenceOptions.min_suspects = {}: must be >= 1", min_suspects));
   }
-  if (strong_min_suspects < min_suspects) {
-    throw InputError(fmt::format("FrontEndEvidenceOptions.strong_min_suspects = {}: must be >= min_suspects ({})",
-                                 strong_min_suspects, min_suspects));
+  if (!(break_response_fraction > 0.0 && break_response_fraction <= low_response_fraction)) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.break_response_fraction = {}: must be in (0, "
+                                 "low_response_fraction = {}]",
+                                 break_response_fraction, low_response_fraction));
+  }
+  if (recovery_matches < 1) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.recovery_matches = {}: must be >= 1", recovery_matches));
+  }
+  if (!(recovered_fraction > 0.0 && recovered_fraction < 1.0)) {
+    throw InputError(
+        fmt::format("FrontEndEvidenceOptions.recovered_fraction = {}: must be in (0, 1)", recovered_fraction));
   }
 }
 
 bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options) {
   return step.at_window_edge || step.at_heading_edge || step.response < options.low_response_fraction * median_response;
+}
+
+bool IsBreak(const std::vector<SequentialMatchStep>& steps, std::size_t i, double median_response,
+             const FrontEndEvidenceOptions& options) {
+  const SequentialMatchStep& s = steps[i];
+  if (!(s.at_window_edge || s.at_heading_edge)) return false;
+  if (!(s.response < options.break_response_fraction * median_response)) return false;
+  double x = 0.0, y = 0.0, theta = 0.0;  // net correction of the step and the ones after it
+  const std::size_t end = std::min(steps.size(), i + 1 + static_cast<std::size_t>(options.recovery_matches));
+  for (std::size_t k = i; k < end; ++k) {
+    x += steps[k].dx;
+    y += steps[k].dy;
+    theta += steps[k].dtheta;
+  }
+  const double f = options.recovered_fraction;
+  if (s.at_heading_edge) return std::fabs(theta) >= f * std::fabs(s.dtheta);
+  return std::hypot(x, y) >= f * std::hypot(s.dx, s.dy);
 }
 
 FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, const FrontEndEvidenceOptions& options) {
@@ -62,16 +87,17 @@ FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, c
   SuspectStretch current;
   int last_suspect = -1;  // index into steps
   auto close = [&] {
-    current.strong = current.suspects >= options.strong_min_suspects && current.at_edge > 0 && current.low_response > 0;
-    if (current.suspects >= options.min_suspects) out.stretches.push_back(current);
+    if (current.suspects >= options.min_suspects || current.strong()) out.stretches.push_back(current);
     current = {};
   };
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const SequentialMatchStep& s = steps[i];
     const bool edge = s.at_window_edge || s.at_heading_edge;
     const bool low = s.response < options.low_response_fraction * out.median_response;
+    const bool broke = IsBreak(steps, i, out.median_response, options);
     out.at_edge += edge ? 1 : 0;
     out.low_response += low ? 1 : 0;
+    out.breaks += broke ? 1 : 0;
     if (!edge && !low) continue;
     if (current.suspects > 0 && static_cast<int>(i) - last_suspect > options.max_gap + 1) close();
     if (current.suspects == 0) {
@@ -83,15 +109,12 @@ FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, c
     ++current.suspects;
     current.at_edge += edge ? 1 : 0;
     current.low_response += low ? 1 : 0;
+    current.breaks += broke ? 1 : 0;
     current.min_response = std::min(current.min_response, s.response);
     last_suspect = static_cast<int>(i);
   }
   if (current.suspects > 0) close();
   return out;
-}
-
-bool FrontEndEvidence::points_at_front_end() const {
-  return std::any_of(stretches.begin(), stretches.end(), [](const SuspectStretch& s) { return s.strong; });
 }
 
 std::string FrontEndEvidence::Summary() const {
@@ -104,7 +127,7 @@ std::string FrontEndEvidence::Summary() const {
   }
   std::vector<const SuspectStretch*> strong;
   for (const SuspectStretch& s : stretches)
-    if (s.strong) strong.push_back(&s);
+    if (s.strong()) strong.push_back(&s);
   std::string parts;
   const std::size_t shown = std::min<std::size_t>(strong.size(), 3);
   for (std::size_t k = 0; k < shown; ++k) {

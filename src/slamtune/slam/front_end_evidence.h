@@ -13,9 +13,14 @@
 // the run's median response; suspects close together form a stretch, reported with log scan
 // indices and times so a user can find the spot in the recording. Working runs of real logs
 // have a few such stretches too (a bump the matcher absorbed at the window's edge, one poor
-// scan): a stretch is strong evidence only when it holds several suspects, among them both a
-// match at the edge and a collapsed response — the search ran out of room and what it found
-// did not fit.
+// scan that the next match puts right). A break is one match that did all three: ran out of
+// search room (edge), found a pose that fits very badly (response below a quarter of the
+// run's median), and was not undone by the matches after it (their corrections do not take
+// back at least half of its own: of the heading when it hit the heading range's edge — a
+// heading error dominates, and the position corrections after it follow from it — else of the
+// position) — the node stays where the failed search left it, and the map breaks there. A
+// stretch holding a break is strong evidence. Calibrated on the built-in worlds with planted
+// breaks and the four public logs (docs/metrics.md).
 #pragma once
 
 #include <string>
@@ -53,9 +58,12 @@ struct FrontEndEvidenceOptions {
   // A stretch needs this many suspect steps to be reported; >= 1. Two: a single odd match is
   // common in a working run, two close together are not.
   int min_suspects = 2;
-  // A stretch is strong evidence when it holds at least this many suspects, at least one at the
-  // search's edge and one with a collapsed response; >= min_suspects.
-  int strong_min_suspects = 3;
+  // A break's response is below this fraction of the run's median; in (0, low_response_fraction].
+  double break_response_fraction = 0.25;
+  // The matches after an edge hit that may undo it; >= 1.
+  int recovery_matches = 3;
+  // They undo it when their summed correction leaves less than this fraction of its own; in (0, 1).
+  double recovered_fraction = 0.5;
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
@@ -68,7 +76,8 @@ struct SuspectStretch {
   int at_edge = 0;              // of them, matches that ended at the window's or heading range's edge
   int low_response = 0;         // of them, matches with a collapsed response
   double min_response = 1.0;
-  bool strong = false;          // see FrontEndEvidenceOptions::strong_min_suspects
+  int breaks = 0;               // of them, breaks (edge hit, collapsed response, not undone)
+  bool strong() const { return breaks > 0; }
 };
 
 struct FrontEndEvidence {
@@ -76,10 +85,11 @@ struct FrontEndEvidence {
   double median_response = 0.0;
   int at_edge = 0;              // matches at the window's or heading range's edge
   int low_response = 0;         // matches below low_response_fraction x median
+  int breaks = 0;               // matches that broke the map (see above)
   std::vector<SuspectStretch> stretches;  // in log order
 
-  // True when the run shows at least one strong stretch: the front end lost its place there.
-  bool points_at_front_end() const;
+  // True when the run shows a break: the front end lost its place there.
+  bool points_at_front_end() const { return breaks > 0; }
   // One line for the terminal, e.g. "front end: 2 suspect stretches (scans 812-840 at
   // 162.4-168.0 s: 5 matches at the search window's edge; ...)" or "front end: no sign of a
   // broken sequential match (1469 matches, median response 0.71)".
@@ -90,5 +100,10 @@ FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, c
 
 // True when a step is suspect given the run's median response.
 bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options);
+
+// True when steps[i] is a break: suspect by both edge and response, and not undone by the
+// recovery_matches steps after it.
+bool IsBreak(const std::vector<SequentialMatchStep>& steps, std::size_t i, double median_response,
+             const FrontEndEvidenceOptions& options);
 
 }  // namespace slamtune::slam

@@ -66,33 +66,52 @@ TEST(AssessFrontEnd, IsolatedOddMatchesAreMinorNotEvidence) {
   EXPECT_EQ(e.at_edge, 2);
   EXPECT_EQ(e.low_response, 1);
   ASSERT_EQ(e.stretches.size(), 1u);  // 50-51; 20 alone is below min_suspects
-  EXPECT_FALSE(e.stretches[0].strong);
+  EXPECT_FALSE(e.stretches[0].strong());
   EXPECT_FALSE(e.points_at_front_end());
 }
 
-TEST(AssessFrontEnd, EdgeHitsWithCollapsedResponsesCloseTogetherAreAStrongStretch) {
+TEST(AssessFrontEnd, AnEdgeHitThatFitsBadlyAndStaysIsABreak) {
+  // A wheel slip the search could not follow: the match ran out of heading range, found a
+  // poor fit, and the matches after it went on from there.
   auto steps = Steady(100);
-  steps[60].at_window_edge = true;
-  steps[61].response = 0.25;
-  steps[63].at_heading_edge = true;  // one ordinary match between: still the same stretch
-  steps[64].response = 0.3;
-  steps[90].at_window_edge = true;  // far away: another (minor) stretch
+  steps[60].at_heading_edge = true;
+  steps[60].dtheta = 0.345;
+  steps[60].response = 0.07;
+  steps[61].dtheta = -0.02;
+  steps[90].at_window_edge = true;  // far away: a minor stretch
   steps[91].at_window_edge = true;
   const FrontEndEvidence e = AssessFrontEnd(steps);
+  EXPECT_EQ(e.breaks, 1);
   ASSERT_EQ(e.stretches.size(), 2u);
   const SuspectStretch& s = e.stretches[0];
-  EXPECT_TRUE(s.strong);
+  EXPECT_TRUE(s.strong());
   EXPECT_EQ(s.first_log_index, 600);
-  EXPECT_EQ(s.last_log_index, 640);
-  EXPECT_EQ(s.suspects, 4);
-  EXPECT_EQ(s.at_edge, 2);
-  EXPECT_EQ(s.low_response, 2);
-  EXPECT_DOUBLE_EQ(s.min_response, 0.25);
-  EXPECT_FALSE(e.stretches[1].strong);
+  EXPECT_EQ(s.last_log_index, 600);
+  EXPECT_EQ(s.suspects, 1);
+  EXPECT_DOUBLE_EQ(s.min_response, 0.07);
+  EXPECT_FALSE(e.stretches[1].strong());
   EXPECT_TRUE(e.points_at_front_end());
-  EXPECT_THAT(e.Summary(), HasSubstr("1 stretch where sequential matching lost its place (scans 600-640, 30.0-32.0 s "
-                                     "into the log: 2 matches at the search's edge, 2 with a collapsed response "
-                                     "(down to 0.25))"));
+  EXPECT_THAT(e.Summary(), HasSubstr("1 stretch where sequential matching lost its place (scans 600-600, 30.0-30.0 s "
+                                     "into the log: 1 match at the search's edge, 1 with a collapsed response "
+                                     "(down to 0.07))"));
+}
+
+TEST(AssessFrontEnd, AGlitchTheNextMatchesUndoIsNoBreak) {
+  auto steps = Steady(100);
+  steps[60].at_heading_edge = true;
+  steps[60].at_window_edge = true;
+  steps[60].dtheta = 0.349;
+  steps[60].dx = -0.16;
+  steps[60].response = 0.11;
+  steps[61].dtheta = -0.28;  // the next match takes the heading back
+  steps[61].dx = 0.15;
+  const FrontEndEvidence e = AssessFrontEnd(steps);
+  EXPECT_EQ(e.breaks, 0);
+  EXPECT_FALSE(e.points_at_front_end());
+  steps[61].dtheta = -0.1;  // only partly: a break
+  EXPECT_TRUE(AssessFrontEnd(steps).points_at_front_end());
+  steps[60].response = 0.6;  // a good fit at the edge is a bump absorbed, not a break
+  EXPECT_FALSE(AssessFrontEnd(steps).points_at_front_end());
 }
 
 TEST(AssessFrontEnd, GapsLongerThanTheLimitSplitStretches) {
@@ -110,7 +129,10 @@ TEST(AssessFrontEnd, RefusesBadOptionsAndHandlesNoMatches) {
   bad.low_response_fraction = 1.5;
   EXPECT_THROW(AssessFrontEnd(Steady(5), bad), InputError);
   bad = {};
-  bad.strong_min_suspects = 1;
+  bad.recovery_matches = 0;
+  EXPECT_THROW(bad.Validate(), InputError);
+  bad = {};
+  bad.recovered_fraction = 1.0;
   EXPECT_THROW(bad.Validate(), InputError);
   EXPECT_EQ(AssessFrontEnd({}).Summary(), "front end: no sequential match was made");
 }
