@@ -3,9 +3,11 @@
 // rank 0 optimises and writes; the other ranks evaluate (optim/mpi_evaluation.h).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -14,7 +16,10 @@
 #include "slamtune/cli/recommendation_files.h"
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
+#include "slamtune/common/folder_lock.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/common/signal_notice.h"
+#include "slamtune/io/content_hash.h"
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/optimizer.h"
 #include "slamtune/optim/slam_evaluation.h"
@@ -57,10 +62,73 @@ void EnsureWritableDir(const std::string& dir) {
   std::filesystem::remove(probe, ec);
 }
 
+// The files whose content the run depends on, by their key in TuningInputOptions::ToJson.
+std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
+  return {{"log", in.log}, {"params", in.params_file}, {"relations", in.relations}};
+}
+
 nlohmann::json InvocationJson(const OptimizeArgs& a) {
-  return {{"inputs", a.inputs.ToJson()}, {"space", a.space_file},   {"population", a.population},
+  return {{"inputs", a.inputs.ToJson()},  {"space", a.space_file}, {"population", a.population},
           {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed},
-          {"objectives", a.objectives}};
+          {"objectives", a.objectives}, {"input_hashes", io::ContentHashes(InputFiles(a.inputs))}};
+}
+
+// Whether --resume came alone (with options that do not change results): then the settings
+// come from the run database.
+bool OnlyResumeOptions(const CLI::App& app) {
+  for (const CLI::Option* opt : app.get_options()) {
+    const std::string name = opt->get_name();
+    if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out" &&
+        name != "--no-share" && name != "--share-mb") {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The recorded inputs that are the files named now must still have their recorded content
+// (runs recorded before content hashes were kept are not checked).
+void RequireRecordedContent(const nlohmann::json& invocation, const TuningInputOptions& inputs) {
+  if (!invocation.contains("input_hashes")) return;
+  std::map<std::string, std::string> same_path;
+  for (const auto& [key, path] : InputFiles(inputs)) {
+    if (invocation.at("inputs").value(key, std::string()) == path) same_path[key] = path;
+  }
+  io::RequireSameContent(invocation.at("input_hashes").get<std::map<std::string, std::string>>(), same_path);
+}
+
+// --resume DIR: before anything is printed, the run database must be whole (PRAGMA
+// quick_check); alone, --resume takes the settings from it; the input files must be unchanged.
+void PrepareResume(const std::string& dir, const std::string& db_path, const CLI::App& app, OptimizeArgs& args) {
+  if (!std::filesystem::exists(db_path)) {
+    throw InputError(dir, 0, "--resume: not a slamtune optimisation folder (no run.sqlite)");
+  }
+  optim::CheckRunDatabase(db_path);
+  std::optional<nlohmann::json> inv = optim::EvaluationStore(db_path).Meta("invocation");
+  if (OnlyResumeOptions(app)) {
+    if (!inv) throw InputError(db_path, 0, "--resume: the run database holds no command line");
+    args.inputs = TuningInputOptions::FromJson(inv->at("inputs"));
+    args.space_file = inv->at("space");
+    args.population = inv->at("population");
+    args.generations = inv->at("generations");
+    args.divisions = inv->at("divisions");
+    args.seed = inv->at("seed");
+    // Folders written before objective sets existed were optimised on the paper's.
+    args.objectives = inv->value("objectives", optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kPaper));
+  }
+  if (inv) RequireRecordedContent(*inv, args.inputs);
+}
+
+// Whether the folder can be locked before the inputs are read: it exists and can be written
+// (else the output folder is created and checked after the inputs, and locked then).
+bool CanLockNow(const std::string& dir) {
+  return std::filesystem::is_directory(dir) && access(dir.c_str(), W_OK) == 0;
+}
+
+void RefuseHeldRun(const std::string& dir, const std::string& db_path) {
+  if (std::filesystem::exists(db_path)) {
+    throw InputError(dir, 0, "already holds an optimisation; use --resume DIR or a new --out");
+  }
 }
 
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
@@ -81,34 +149,13 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   if (dir.empty()) throw InputError("--out DIR is required (or --resume DIR to continue a run)");
   const std::string db_path = (std::filesystem::path(dir) / "run.sqlite").string();
 
-  // --resume with nothing else: the settings come from the run database.
+  // One process at a time in the folder, from before its database is read to the last report file.
+  std::optional<FolderLock> lock;
+  if (CanLockNow(dir)) lock.emplace(dir);
   if (resume) {
-    if (!std::filesystem::exists(db_path)) {
-      throw InputError(dir, 0, "--resume: not a slamtune optimisation folder (no run.sqlite)");
-    }
-    bool only_resume = true;
-    for (const CLI::Option* opt : app.get_options()) {
-      const std::string name = opt->get_name();
-      if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out" &&
-          name != "--no-share" && name != "--share-mb") {
-        only_resume = false;
-      }
-    }
-    if (only_resume) {
-      optim::EvaluationStore probe(db_path);
-      const auto inv = probe.Meta("invocation");
-      if (!inv) throw InputError(db_path, 0, "--resume: the run database holds no command line");
-      args.inputs = TuningInputOptions::FromJson(inv->at("inputs"));
-      args.space_file = inv->at("space");
-      args.population = inv->at("population");
-      args.generations = inv->at("generations");
-      args.divisions = inv->at("divisions");
-      args.seed = inv->at("seed");
-      // Folders written before objective sets existed were optimised on the paper's.
-      args.objectives = inv->value("objectives", optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kPaper));
-    }
-  } else if (std::filesystem::exists(db_path)) {
-    throw InputError(dir, 0, "already holds an optimisation; use --resume DIR or a new --out");
+    PrepareResume(dir, db_path, app, args);
+  } else {
+    RefuseHeldRun(dir, db_path);
   }
 
   const bool built_in = args.inputs.log.empty();
@@ -120,9 +167,18 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   // Preamble: every input is loaded and validated before any work starts.
   optim::OptimizeSettings settings;
   TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
-  // No --space: loop closure, or the front end when the base configuration's map breaks there.
+  settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
+  settings.population = args.population;
+  settings.generations = args.generations;
+  settings.divisions = args.divisions;
+  settings.seed = args.seed;
+  if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
+  settings.Validate();  // the budget, before any run
+  // No --space: loop closure, or the front end when the base configuration's map breaks there
+  // (one SLAM run, after the output folder is known to be usable).
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   if (args.space_file.empty()) {
+    EnsureWritableDir(dir);
     probed = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
     const optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
     args.space_file = choice.space_name();
@@ -138,13 +194,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   } else {
     settings.space = optim::SearchSpace::FromYaml(args.space_file);
   }
-  settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
-  settings.population = args.population;
-  settings.generations = args.generations;
-  settings.divisions = args.divisions;
-  settings.seed = args.seed;
   settings.Validate();
-  if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
   const bool named_space = args.space_file == "loop" || args.space_file == "paper" || args.space_file == "front-end";
   optim::CheckSpaceAgainst(settings.space, inputs.base, named_space ? "--space" : args.space_file);
   auto context = probed && settings.space.fixed.empty()
@@ -164,12 +214,16 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);
   }
   EnsureWritableDir(dir);
+  if (!lock) {
+    lock.emplace(dir);
+    if (!resume) RefuseHeldRun(dir, db_path);
+  }
+  if (!resume) settings.invocation = InvocationJson(args);
   if (workers) {
     workers->Setup(WorkerSetup(args.inputs, settings.space.fixed, args.no_share, args.share_mb));
   }
 
   optim::EvaluationStore store(db_path);
-  if (!resume) store.SetMeta("invocation", InvocationJson(args));
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
   const std::size_t total = settings.population * (settings.generations + 1);
   const std::string parallelism =
@@ -193,6 +247,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     progress.Update(shared.empty() ? line : line + " | " + shared_label + shared, force);
   };
   hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
+  // From the committed start on, Ctrl-C or a kill says how to go on.
+  std::optional<SignalNotice> notice;
+  hooks.started = [&notice, &dir] {
+    notice.emplace(fmt::format("every finished evaluation is saved: continue with `slamtune optimize --resume {}`", dir));
+  };
   optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
   progress.Finish();
   if (workers) workers->Stop();  // the report's maps are rendered here

@@ -19,6 +19,7 @@
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/log_input.h"
+#include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
@@ -29,6 +30,7 @@
 #include "slamtune/io/trajectory.h"
 #include "slamtune/metrics/gt_error.h"
 #include "slamtune/metrics/map_quality.h"
+#include "slamtune/metrics/relation_match.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/occupancy_grid.h"
@@ -151,6 +153,10 @@ int Run(const RunArgs& args) {
   }
   if (!args.quiet) {
     for (const std::string& line : io::DescribeLogInput(*log)) std::fprintf(stderr, "%s\n", line.c_str());
+  }
+  if (!args.relations.empty()) {
+    const metrics::RelationMatch match = metrics::RequireMatchingRelations(*log, relations, args.relations);
+    if (!args.quiet && !match.complete()) WarnPartialRelations(args.relations, match);
   }
 
   slam::LogRunner runner(log, params);

@@ -11,6 +11,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/text_file.h"
 #include "slamtune/io/log_summary.h"
+#include "slamtune/metrics/relation_match.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/params_yaml.h"
 
@@ -91,6 +92,11 @@ void LoadBase(const TuningInputOptions& options, TuningInputs* in) {
 
 }  // namespace
 
+void WarnPartialRelations(const std::string& relations_file, const metrics::RelationMatch& match) {
+  std::fprintf(stderr, "slamtune: warning: %s: %s; the errors use those only\n", relations_file.c_str(),
+               match.Brief().c_str());
+}
+
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
   TuningInputs in;
   LoadBase(options, &in);
@@ -120,6 +126,8 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
   if (!options.relations.empty()) {
     in.relations = io::ReadRelations(options.relations);
     in.relations_label = options.relations;
+    const metrics::RelationMatch match = metrics::RequireMatchingRelations(*in.log, in.relations, options.relations);
+    if (!quiet && !match.complete()) WarnPartialRelations(options.relations, match);
   }
   return in;
 }

@@ -17,6 +17,7 @@
 #include "slamtune/cli/log_input.h"
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/relations.h"
+#include "slamtune/metrics/relation_match.h"
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/slam/mapper_params.h"
@@ -65,8 +66,12 @@ struct BaseConfiguration {
 BaseConfiguration LoadBaseConfiguration(const std::string& params_file, const std::string& preset,
                                         const std::vector<std::string>& sets);
 
-// Loads and validates everything; throws InputError naming the file and problem.
+// Loads and validates everything; throws InputError naming the file and problem (relations
+// that match no scan of the log among them, metrics::RequireMatchingRelations).
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet);
+
+// "slamtune: warning: FILE: N of M relations match scans of the log; ..." on stderr.
+void WarnPartialRelations(const std::string& relations_file, const metrics::RelationMatch& match);
 
 // The work shared by all SLAM runs of one command (optim::ShareWork; --no-share turns it off,
 // results are identical either way). InputError for share_mb 0.

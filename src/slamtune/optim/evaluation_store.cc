@@ -45,7 +45,47 @@ class Statement {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
+// The first problem PRAGMA quick_check reports, or "" when the database is intact.
+std::string QuickCheck(sqlite3* db) {
+  sqlite3_stmt* stmt = nullptr;
+  if (sqlite3_prepare_v2(db, "PRAGMA quick_check(1)", -1, &stmt, nullptr) != SQLITE_OK) {
+    sqlite3_finalize(stmt);
+    return sqlite3_errmsg(db);
+  }
+  std::string problem;
+  const int rc = sqlite3_step(stmt);
+  if (rc == SQLITE_ROW) {
+    const unsigned char* text = sqlite3_column_text(stmt, 0);
+    problem = text ? reinterpret_cast<const char*>(text) : "";
+    if (problem == "ok") problem.clear();
+  } else if (rc != SQLITE_DONE) {
+    problem = sqlite3_errmsg(db);
+  }
+  sqlite3_finalize(stmt);
+  return problem;
+}
+
 }  // namespace
+
+void CheckRunDatabase(const std::string& path) {
+  sqlite3* db = nullptr;
+  std::string problem;
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK) {
+    problem = db ? sqlite3_errmsg(db) : "out of memory";
+  } else {
+    sqlite3_busy_timeout(db, 10000);
+    problem = QuickCheck(db);
+  }
+  sqlite3_close(db);
+  if (problem.empty()) return;
+  for (char& c : problem) {
+    if (c == '\n') c = ' ';
+  }
+  throw InputError(path, 0,
+                   "the run database is damaged (" + problem +
+                       "); it cannot be resumed: start again with a new --out (the report files beside it stay "
+                       "readable)");
+}
 
 EvaluationStore::EvaluationStore(const std::string& path) : path_(path), lock_(std::make_unique<Lock>()) {
   if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_FULLMUTEX,
@@ -59,26 +99,29 @@ EvaluationStore::EvaluationStore(const std::string& path) : path_(path), lock_(s
   try {
     // WAL keeps every committed evaluation safe across a kill while staying fast.
     Exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;");
-    Exec("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-         "CREATE TABLE IF NOT EXISTS evaluations (key TEXT PRIMARY KEY, status TEXT NOT NULL,"
-         " record TEXT NOT NULL, seq INTEGER NOT NULL);"
-         "CREATE TABLE IF NOT EXISTS generations (gen INTEGER PRIMARY KEY, population TEXT NOT NULL);");
+    // The tables and the format mark in one transaction: a new database is whole or empty.
+    Exec(fmt::format("BEGIN IMMEDIATE;"
+                     "CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);"
+                     "CREATE TABLE IF NOT EXISTS evaluations (key TEXT PRIMARY KEY, status TEXT NOT NULL,"
+                     " record TEXT NOT NULL, seq INTEGER NOT NULL);"
+                     "CREATE TABLE IF NOT EXISTS generations (gen INTEGER PRIMARY KEY, population TEXT NOT NULL);"
+                     "INSERT OR IGNORE INTO meta(key, value) VALUES('format', '{}');"
+                     "COMMIT;",
+                     kFormat));
   } catch (const InputError&) {
     sqlite3_close(db_);
     db_ = nullptr;
     throw InputError(path, 0, "not a slamtune run database (or corrupt)");
   }
-  Statement get(db_, "SELECT value FROM meta WHERE key = 'format'");
-  if (get.Step()) {
-    if (get.Text(0) != kFormat) {
-      sqlite3_close(db_);
-      db_ = nullptr;
-      throw InputError(path, 0, fmt::format("database format '{}' is not '{}'", get.Text(0), kFormat));
-    }
-  } else {
-    Statement put(db_, "INSERT INTO meta(key, value) VALUES('format', ?)");
-    put.Bind(1, std::string(kFormat));
-    put.Step();
+  std::string format;
+  {
+    Statement get(db_, "SELECT value FROM meta WHERE key = 'format'");
+    if (get.Step()) format = get.Text(0);
+  }
+  if (format != kFormat) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw InputError(path, 0, fmt::format("database format '{}' is not '{}'", format, kFormat));
   }
 }
 
@@ -92,6 +135,23 @@ void EvaluationStore::Exec(const std::string& sql) const {
     const std::string why = err ? err : "unknown";
     sqlite3_free(err);
     throw InputError(path_, 0, "database error: " + why);
+  }
+}
+
+void EvaluationStore::StartRun(const nlohmann::json& settings, const nlohmann::json& invocation) {
+  std::lock_guard guard(lock_->mutex);
+  Exec("BEGIN IMMEDIATE");
+  try {
+    for (const auto& [key, value] : {std::pair{"settings", &settings}, std::pair{"invocation", &invocation}}) {
+      Statement put(db_, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+      put.Bind(1, std::string(key));
+      put.Bind(2, value->dump());
+      put.Step();
+    }
+    Exec("COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
   }
 }
 

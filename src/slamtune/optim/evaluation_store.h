@@ -19,6 +19,11 @@ struct sqlite3;
 
 namespace slamtune::optim {
 
+// Reads every page of the existing database at `path` (PRAGMA quick_check) without changing
+// it. Throws InputError "PATH: the run database is damaged (WHAT); ..." when a page is
+// corrupt or the file is not a database, so that --resume refuses before any work.
+void CheckRunDatabase(const std::string& path);
+
 class EvaluationStore {
  public:
   // Opens (creating if needed) the database at `path`. Throws InputError when the file
@@ -30,6 +35,9 @@ class EvaluationStore {
 
   const std::string& path() const { return path_; }
 
+  // The start of a run, in one transaction: its settings (compared on --resume) and its
+  // command line (meta "invocation"). A kill leaves both or neither.
+  void StartRun(const nlohmann::json& settings, const nlohmann::json& invocation);
   // Run settings (JSON), written once at the start of a run and compared on --resume.
   void SetSettings(const nlohmann::json& settings);
   std::optional<nlohmann::json> Settings() const;

@@ -87,5 +87,61 @@ TEST(EvaluationStore, RejectsNonDatabaseFile) {
   }
 }
 
+
+TEST(EvaluationStore, StartRunStoresSettingsAndCommandLineTogether) {
+  const std::string path = FreshPath("start");
+  { EvaluationStore(path).StartRun({{"seed", 3}}, {{"population", 8}}); }
+  EvaluationStore store(path);
+  EXPECT_EQ(store.Settings()->at("seed"), 3);
+  EXPECT_EQ(store.Meta("invocation")->at("population"), 8);
+}
+
+// A run database of several pages, closed (its WAL folded into the file).
+std::string FilledDatabase(const std::string& name) {
+  const std::string path = FreshPath(name);
+  EvaluationStore store(path);
+  store.StartRun({{"seed", 1}}, {});
+  for (int i = 0; i < 200; ++i) store.Put(Sample(i));
+  return path;
+}
+
+void Overwrite(const std::string& path, std::streamoff offset, const std::string& bytes) {
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  file.seekp(offset);
+  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::string CheckMessage(const std::string& path) {
+  try {
+    CheckRunDatabase(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CheckRunDatabase, IntactDatabasePasses) {
+  const std::string path = FilledDatabase("intact");
+  EXPECT_EQ(CheckMessage(path), "");
+  EXPECT_EQ(EvaluationStore(path).Count(), 200u);
+}
+
+TEST(CheckRunDatabase, CorruptPageIsRefusedNamingTheFile) {
+  const std::string path = FilledDatabase("page");
+  ASSERT_GT(std::filesystem::file_size(path), 5u * 4096);
+  Overwrite(path, 4 * 4096, std::string(4096, '\x5a'));
+  const std::string message = CheckMessage(path);
+  EXPECT_EQ(message.rfind(path + ": the run database is damaged (", 0), 0u) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(CheckRunDatabase, OverwrittenHeaderIsRefused) {
+  const std::string path = FilledDatabase("header");
+  Overwrite(path, 0, "not a database header, really");
+  EXPECT_EQ(CheckMessage(path),
+            path + ": the run database is damaged (file is not a database); it cannot be resumed: start again with "
+                   "a new --out (the report files beside it stay readable)");
+}
+
 }  // namespace
 }  // namespace slamtune::optim

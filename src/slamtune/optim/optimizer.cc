@@ -135,8 +135,9 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     if (stored) {
       throw InputError(store.path(), 0, "the folder already holds an optimisation; use --resume or a new --out");
     }
-    store.SetSettings(settings_json);
+    store.StartRun(settings_json, settings.invocation);
   }
+  if (hooks.started) hooks.started();
 
   const auto start = Clock::now();
   auto shared = std::shared_ptr<BatchEvaluator>(&evaluator, [](BatchEvaluator*) {});

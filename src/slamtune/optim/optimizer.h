@@ -36,6 +36,7 @@ struct OptimizeSettings {
   unsigned generations = 60;      // the paper's generations
   unsigned seed = 1;
   nlohmann::json engine;  // everything else that changes results (base parameters, metric options, log identity)
+  nlohmann::json invocation;  // the command line that started the run: stored with the settings, not compared
 
   // Throws InputError naming the field (population >= 4, generations >= 1, divisions >= 1).
   void Validate() const;
@@ -48,6 +49,9 @@ struct OptimizeHooks {
   std::function<void(const std::string& line, bool force)> progress;
   // Renders the map of one parameter set (for the report); may be empty.
   std::function<io::MapImage(const Assignment&)> render_map;
+  // Called once the run's start is committed (or the stored run accepted for resuming),
+  // before the first evaluation; may be empty.
+  std::function<void()> started;
 };
 
 // Runs (or, with `resume`, continues) an optimisation. `store` must be the run database;

@@ -60,6 +60,29 @@ std::vector<std::vector<double>> FinalPopulation(const std::string& store_path) 
   return store.Generation(store.LastGeneration())->at("x").get<std::vector<std::vector<double>>>();
 }
 
+TEST(Optimizer, StartsByStoringSettingsAndCommandLineThenCallsStarted) {
+  const std::string path = FreshStore("started");
+  OptimizeSettings settings = SmallSettings();
+  settings.generations = 1;
+  settings.invocation = {{"seed", 3}, {"input_hashes", {{"log", "crc32:00000001"}}}};
+  EvaluationStore store(path);
+  BatchEvaluator evaluator(FakeSlam, &store, 1);
+  int started = 0;
+  OptimizeHooks hooks;
+  hooks.started = [&] {
+    ++started;
+    if (started == 1) {
+      EXPECT_EQ(store.Count(), 0u);  // before the first evaluation
+    }
+    EXPECT_TRUE(store.Settings().has_value());
+  };
+  RunOptimization(settings, evaluator, store, false, hooks);
+  EXPECT_EQ(started, 1);
+  EXPECT_EQ(*store.Meta("invocation"), settings.invocation);
+  RunOptimization(settings, evaluator, store, true, hooks);  // resumed: called again
+  EXPECT_EQ(started, 2);
+}
+
 TEST(Optimizer, RunsAndPicksTheFourCandidates) {
   const std::string path = FreshStore("basic");
   const OptimizeResult r = Optimize(path, false, FakeSlam);
