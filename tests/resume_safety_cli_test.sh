@@ -98,7 +98,11 @@ expect_line "slamtune: error: $work/header/run.sqlite: the run database is damag
   "$bin" optimize --resume "$work/header"
 
 # generation DIR: the last generation stored in DIR's run database (-1 before the first).
-generation() { sqlite3 -cmd '.timeout 2000' "$1/run.sqlite" 'SELECT COALESCE(MAX(gen), -1) FROM generations' 2>/dev/null || echo -1; }
+# (sqlite3 would create a missing database: ask only once the run has made it)
+generation() {
+  [[ -s "$1/run.sqlite" ]] || { echo -1; return; }
+  sqlite3 -cmd '.timeout 2000' "$1/run.sqlite" 'SELECT COALESCE(MAX(gen), -1) FROM generations' 2>/dev/null || echo -1
+}
 # wait_for DIR PID GEN: until generation GEN of DIR is stored, or the process ended.
 wait_for() {
   for _ in $(seq 1 900); do

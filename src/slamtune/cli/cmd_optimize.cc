@@ -179,6 +179,10 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   if (args.space_file.empty()) {
     EnsureWritableDir(dir);
+    if (!lock) {
+      lock.emplace(dir);
+      if (!resume) RefuseHeldRun(dir, db_path);
+    }
     probed = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
     const optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
     args.space_file = choice.space_name();

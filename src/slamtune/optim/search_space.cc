@@ -89,6 +89,9 @@ SearchSpace SearchSpace::FrontEnd(const slam::MapperParams& base) {
       // Karto accepts smearing in [0.5, 10] x resolution (§4.1).
       Around("correlation_search_space_smear_deviation", base.correlation_search_space_smear_deviation,
              3.0 * resolution, 10.0 * resolution, resolution / 2.0),
+      // The heading range of the search (shared with the loop matcher, whose cost grows with it):
+      // a spin the odometry missed by more than the range cannot be followed.
+      Around("coarse_search_angle_offset", base.coarse_search_angle_offset, 0.2, 1.2, 0.01),
       Around("minimum_travel_distance", base.minimum_travel_distance, 0.1, 1.0, 0.01),
       Around("minimum_travel_heading", base.minimum_travel_heading, 0.1, 1.0, 0.01),
       Around("link_match_minimum_response_fine", base.link_match_minimum_response_fine, 0.05, 0.6, 0.01),

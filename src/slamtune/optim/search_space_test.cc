@@ -180,7 +180,8 @@ TEST(SearchSpace, FrontEndHoldsTheBaseAndEveryBoundIsAValidConfiguration) {
     EXPECT_NO_THROW(s.Validate("front-end")) << preset;
     EXPECT_NO_THROW(CheckSpaceAgainst(s, base, "front-end")) << preset;
     EXPECT_TRUE(s.fixed.empty());
-    for (const char* name : {"correlation_search_space_dimension", "minimum_travel_distance", "minimum_travel_heading",
+    for (const char* name : {"correlation_search_space_dimension", "coarse_search_angle_offset",
+                             "minimum_travel_distance", "minimum_travel_heading",
                              "correlation_search_space_smear_deviation", "scan_buffer_size",
                              "link_match_minimum_response_fine", "loop_search_maximum_distance",
                              "loop_match_minimum_chain_size", "loop_match_minimum_response_coarse",
