@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 quick=0; [[ "${1:-}" == "--quick" ]] && quick=1
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)" --target bench_engine bench_matcher bench_map_quality bench_nsga3_dtlz bench_shared_eval
+cmake --build build -j"$(nproc)" --target bench_engine bench_matcher bench_map_quality bench_nsga3_dtlz bench_shared_eval bench_objectives
 out=runs/bench; mkdir -p "$out"
 data=../shared/datasets
 run() { local name=$1; shift; echo "== $name: $*"; "$@" 2>&1 | tee "$out/$name.txt"; }
@@ -21,6 +21,7 @@ if [[ $quick -eq 1 ]]; then
   run nsga3_dtlz ./build/bench/bench_nsga3_dtlz --seeds 3 --generations-scale 0.25
   run shared_eval_office ./build/bench/bench_shared_eval --quick
   run whole_office ./build/bench/bench_shared_eval --whole --quick
+  run objectives_office-jump ./build/bench/bench_objectives --world office-jump --runs 12
 else
   run engine ./build/bench/bench_engine --dataset intel --world office --repeat 3
   run nsga3_dtlz ./build/bench/bench_nsga3_dtlz --seeds 20
@@ -30,6 +31,16 @@ else
   done
   for log in mit-csail aces intel; do
     [[ -f $data/$log.clf.gz ]] && run whole_$log ./build/bench/bench_shared_eval --whole "$data/$log.clf.gz"
+  done
+  # Do the objectives rank runs as the true error does (docs/metrics.md)?
+  for world in office office-jump office-slip corridor-long; do
+    run objectives_$world ./build/bench/bench_objectives --world $world --space front-end --runs 40
+  done
+  for log in aces mit-csail; do
+    for space in front-end loop; do
+      [[ -f $data/$log.clf.gz ]] && run objectives_${log}_$space ./build/bench/bench_objectives "$data/$log.clf.gz" \
+        --relations "$data/$log.relations" --space $space --runs 40
+    done
   done
 fi
 echo "outputs in $out/"
