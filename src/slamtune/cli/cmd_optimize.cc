@@ -177,6 +177,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   // No --space: loop closure, or the front end when the base configuration's map breaks there
   // (one SLAM run, after the output folder is known to be usable).
   std::shared_ptr<optim::SlamEvaluationContext> probed;
+  std::optional<optim::BaseFrontEnd> base_front_end;
   if (args.space_file.empty()) {
     EnsureWritableDir(dir);
     if (!lock) {
@@ -187,6 +188,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     const optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
     args.space_file = choice.space_name();
     if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
+    base_front_end = optim::BaseFrontEnd{choice.evidence, choice.steps, choice.Reason()};
   }
   if (args.space_file.empty() || args.space_file == "loop") {
     settings.space = optim::SearchSpace::AroundBase(inputs.base.loop_search_maximum_distance,
@@ -257,6 +259,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     notice.emplace(fmt::format("every finished evaluation is saved: continue with `slamtune optimize --resume {}`", dir));
   };
   optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
+  result.base_front_end = std::move(base_front_end);
   progress.Finish();
   if (workers) workers->Stop();  // the report's maps are rendered here
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/search_space.h"
+#include "slamtune/slam/front_end_evidence.h"
 
 namespace slamtune::optim {
 
@@ -29,6 +31,13 @@ struct GenerationSnapshot {
   int generation = 0;  // 1-based, as in the paper's Figure 13
   std::vector<std::vector<double>> decisions;   // per individual, SearchSpace order
   std::vector<std::vector<double>> objectives;  // per individual, in OptimizeResult::objectives order
+};
+
+// The base configuration's run as the front end saw it, when `optimize` chose its space from it.
+struct BaseFrontEnd {
+  slam::FrontEndEvidence evidence;
+  std::vector<slam::SequentialMatchStep> steps;
+  std::string choice;  // the line that says which space was searched and why
 };
 
 struct OptimizeResult {
@@ -48,7 +57,8 @@ struct OptimizeResult {
   // (empty when the recommendation is not better) and the commands that load the files.
   std::vector<std::string> changes;
   std::vector<std::string> how_to_load;
-  std::string lowest_error_label;     // with relations: the candidate with the lowest translational error
+  std::string lowest_error_label;
+  std::optional<BaseFrontEnd> base_front_end;  // absent when --space was given or the run resumed     // with relations: the candidate with the lowest translational error
 
   std::vector<EvaluationRecord> evaluations;    // every finished evaluation, in order
   std::vector<GenerationSnapshot> snapshots;    // generations 1, G/2 and G (at least)

@@ -52,7 +52,10 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   SlamRun run;
   run.summary = runner.Summary();
   run.trajectory = runner.Trajectory();
-  if (run_out != nullptr) run.front_end = slam::AssessFrontEnd(runner.sequential_matches());
+  if (run_out != nullptr) {
+    run.sequential_matches = runner.sequential_matches();
+    run.front_end = slam::AssessFrontEnd(run.sequential_matches);
+  }
   // The map and its scores, or those of the same final state scored before (run_out wants the map).
   std::optional<MapScores> scores;
   std::vector<std::uint64_t> key;

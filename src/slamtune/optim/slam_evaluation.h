@@ -59,6 +59,7 @@ struct SlamRun {
   slam::RunSummary summary;
   std::vector<io::TimedPose> trajectory;  // one pose per log scan
   io::MapImage map;                       // occupancy grid of the final poses
+  std::vector<slam::SequentialMatchStep> sequential_matches;  // every sequential match, in log order
   slam::FrontEndEvidence front_end;       // where sequential matching may have lost its place
 };
 

@@ -18,6 +18,7 @@ DefaultSpaceChoice ChooseDefaultSpace(const SlamEvaluationContext& context) {
   const EvaluationRecord base = EvaluateSlam(context, {}, &run);
   DefaultSpaceChoice choice;
   choice.evidence = run.front_end;
+  choice.steps = std::move(run.sequential_matches);
   if (base.status == "ok" && run.front_end.points_at_front_end()) choice.kind = DefaultSpaceKind::kFrontEnd;
   return choice;
 }

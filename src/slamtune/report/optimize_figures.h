@@ -55,6 +55,11 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
                                const ErrorCorrelationSummary& correlation, const optim::OptimizeResult& result,
                                const FigureOptions& options);
 
+// The base configuration's sequential matches along the log (response against seconds into the
+// log): every match, those that ended at the search's edge, and the breaks
+// (slam/front_end_evidence.h), so a user sees where the map broke.
+cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions& options);
+
 // The style of a candidate's marker (by label), shared with the sweep figures.
 Series CandidateSeries(const optim::Candidate& candidate, double x, double y);
 

@@ -74,6 +74,30 @@ void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   }
 }
 
+void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeFigures& f) {
+  if (!r.base_front_end) return;
+  const optim::BaseFrontEnd& fe = *r.base_front_end;
+  page.Heading(2, "Front end of the base configuration");
+  page.Paragraph(fe.choice);
+  if (!f.front_end.empty()) {
+    page.Image(f.front_end, "sequential match responses along the log",
+               "Each sequential match of the base configuration's run: its response, those that ended at the edge "
+               "of the search window or heading range, and the breaks (front_end.png).");
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (const slam::SuspectStretch& s : fe.evidence.stretches) {
+    rows.push_back({fmt::format("{}-{}", s.first_log_index, s.last_log_index),
+                    fmt::format("{:.1f}-{:.1f}", s.first_time, s.last_time), std::to_string(s.at_edge),
+                    std::to_string(s.low_response), fmt::format("{:.2f}", s.min_response),
+                    s.strong() ? "yes" : "no"});
+  }
+  if (!rows.empty()) {
+    page.Table({"log scans", "seconds into the log", "at the search's edge", "collapsed response", "lowest response",
+                "break"},
+               rows);
+  }
+}
+
 void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) {
   page.Heading(2, "Candidates");
   std::vector<std::string> header = {"label", "how it was chosen", "parameters", "status"};
@@ -136,6 +160,7 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
   RunSection(page, r);
   VerdictSection(page, r);
+  FrontEndSection(page, r, f);
   CandidatesSection(page, r, correlation.has_value());
 
   page.Heading(2, "Maps");

@@ -22,6 +22,7 @@ struct OptimizeFigures {
   std::vector<std::pair<int, std::vector<std::uint8_t>>> populations;  // (generation, png)
   std::vector<std::uint8_t> evolution;                                  // empty: no snapshots
   std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
+  std::vector<std::uint8_t> front_end;                                  // empty: no base front end
 };
 
 // What the objectives can tell, measured with a reference Karto on real logs; shown in every

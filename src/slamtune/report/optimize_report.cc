@@ -116,6 +116,10 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
         out.Png(ObjectiveVsErrorFigure(gt_runs, *summary.correlation, result, options), "objective_vs_error.png");
   }
 
+  if (result.base_front_end) {
+    figures.front_end = out.Png(FrontEndFigure(*result.base_front_end, options), "front_end.png");
+  }
+
   std::vector<std::string> listed = out.files();
   listed.push_back("report.html");
   out.Text(OptimizeHtml(result, figures, summary.correlation, listed), "report.html");

@@ -97,6 +97,40 @@ TEST(WriteOptimizeReport, ResultsJsonHasTheStableKeysAndValues) {
   EXPECT_LT(j["error_correlation"]["enclosed_areas"]["rho"].get<double>(), 0.0);
 }
 
+TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
+  optim::OptimizeResult result = testing::FakeOptimizeResult(false);
+  optim::BaseFrontEnd fe;
+  for (int i = 0; i < 60; ++i) {
+    slam::SequentialMatchStep s;
+    s.log_index = 3 * i;
+    s.time = 0.6 * i;
+    s.response = 0.85;
+    fe.steps.push_back(s);
+  }
+  fe.steps[20].at_heading_edge = true;  // a spin the search could not follow
+  fe.steps[20].dtheta = 0.34;
+  fe.steps[20].response = 0.08;
+  fe.evidence = slam::AssessFrontEnd(fe.steps);
+  ASSERT_TRUE(fe.evidence.points_at_front_end());
+  fe.choice = "search space: front-end (...)";
+  result.base_front_end = fe;
+  const fs::path dir = FreshDir("fe");
+  const auto summary = WriteOptimizeReport(result, dir.string());
+  EXPECT_THAT(summary.files, ::testing::Contains(std::string("front_end.png")));
+  EXPECT_FALSE(cv::imread((dir / "front_end.png").string()).empty());
+  const std::string html = Slurp(dir / "report.html");
+  EXPECT_THAT(html, HasSubstr("Front end of the base configuration"));
+  EXPECT_THAT(html, HasSubstr("60-60"));  // the break's log scans
+  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  EXPECT_EQ(j["base_front_end"]["breaks"].get<int>(), 1);
+  EXPECT_EQ(j["base_front_end"]["stretches"][0]["first_log_index"].get<int>(), 60);
+  // Without a base run (a --space given, or a resumed run) there is no such section.
+  const fs::path plain = FreshDir("fe_plain");
+  WriteOptimizeReport(testing::FakeOptimizeResult(false), plain.string());
+  EXPECT_FALSE(fs::exists(plain / "front_end.png"));
+  EXPECT_THAT(Slurp(plain / "report.html"), Not(HasSubstr("Front end of the base configuration")));
+}
+
 TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
   const fs::path dir = FreshDir("nogt");
   const auto summary = WriteOptimizeReport(testing::FakeOptimizeResult(false), dir.string());
