@@ -32,6 +32,13 @@ expect_error() {
 # expect_line LINE FILE: FILE holds LINE exactly.
 expect_line() { grep -qxF -- "$1" "$2" || fail "no line '$1' in $2: $(cat "$2")"; }
 
+# A command line that cannot be read is bad input like any other: one line, exit 2.
+expect_error "slamtune: error: Could not convert: --population = abc (see slamtune --help, or slamtune COMMAND --help)" \
+  optimize --population abc --out "$work/never"
+expect_error "slamtune: error: --out is required (see slamtune --help, or slamtune COMMAND --help)" run
+expect_error "slamtune: error: The following argument was not expected: --no-such-flag (see slamtune --help, or slamtune COMMAND --help)" \
+  evaluate map.yaml --no-such-flag
+
 # CARMEN records written here: a FLASER of 180 readings, a ROBOTLASER1/RAWLASER1 of N readings.
 flaser() {  # T X
   local r

@@ -234,7 +234,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   const std::size_t total = settings.population * (settings.generations + 1);
   const std::string parallelism =
       workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
-              : fmt::format("{} jobs", args.jobs);
+              : fmt::format("{} job{}", args.jobs, args.jobs == 1 ? "" : "s");
   progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
                               "seed {}; results in {}",
                               settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label,

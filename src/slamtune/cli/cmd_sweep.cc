@@ -111,7 +111,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
   const std::string parallelism =
       workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
-              : fmt::format("{} jobs", args.jobs);
+              : fmt::format("{} job{}", args.jobs, args.jobs == 1 ? "" : "s");
   progress.Update(fmt::format("sweeping {} over {} values on {} with {}", name, batch.size(), inputs.log_label,
                               parallelism),
                   true);
@@ -120,8 +120,8 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
                                   nullptr, args.jobs);
   if (workers) evaluator.SetRemote(&*workers);
   evaluator.SetProgressCallback([&](const optim::EvaluationRecord& r, const optim::BatchEvaluatorStats& s) {
-    progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closures", s.evaluated, batch.size(), name,
-                                r.params.at(name), r.loop_closures));
+    progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closure{}", s.evaluated, batch.size(), name,
+                                r.params.at(name), r.loop_closures, r.loop_closures == 1 ? "" : "s"));
   });
   const auto records = evaluator.Evaluate(batch);
   progress.Finish();

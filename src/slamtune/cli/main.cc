@@ -16,9 +16,10 @@
 int main(int argc, char** argv) {
   using slamtune::cli::Registry;
   CLI::App app{
-      "slamtune: tune the loop closure of Karto / slam_toolbox 2D graph SLAM without ground truth.\n"
-      "Runs a Karto-faithful SLAM engine, scores maps by occupied-cell proportion, Harris corners\n"
-      "and enclosed areas, and searches loop-closure parameters with NSGA-III."};
+      "slamtune: tune Karto / slam_toolbox 2D graph SLAM without ground truth.\n"
+      "Runs a Karto-faithful SLAM engine on your recording, scores its maps by how well the scans agree\n"
+      "with the map, Harris corners and enclosed areas, finds where the front end broke, and searches\n"
+      "the loop-closure (or front-end) parameters with NSGA-III."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "slamtune 0.1.0");
 
@@ -35,7 +36,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version end here with exit 0; a command line that cannot be read is bad input.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "slamtune: error: %s (see slamtune --help, or slamtune COMMAND --help)\n", e.what());
+    return 2;
   } catch (const slamtune::InputError& e) {
     std::fprintf(stderr, "slamtune: error: %s\n", e.what());
     return 2;
