@@ -190,7 +190,9 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
     base_front_end = optim::BaseFrontEnd{choice.evidence, choice.steps, choice.Reason()};
   }
-  if (args.space_file.empty() || args.space_file == "loop") {
+  if (args.space_file == "loop") {
+    settings.space = optim::SearchSpace::Loop(inputs.base);
+  } else if (args.space_file.empty()) {  // a folder written before named spaces: no steps
     settings.space = optim::SearchSpace::AroundBase(inputs.base.loop_search_maximum_distance,
                                                     inputs.base.loop_match_minimum_chain_size);
   } else if (args.space_file == "paper") {

@@ -104,6 +104,15 @@ SearchSpace SearchSpace::FrontEnd(const slam::MapperParams& base) {
   return s;
 }
 
+SearchSpace SearchSpace::Loop(const slam::MapperParams& base) {
+  SearchSpace s;
+  s.dimensions = {
+      Around("loop_search_maximum_distance", base.loop_search_maximum_distance, 2.0, 6.0, 0.01),
+      Around("loop_match_minimum_chain_size", base.loop_match_minimum_chain_size, 6, 20, 1.0, true),
+  };
+  return s;
+}
+
 SearchSpace SearchSpace::FromYaml(const std::string& path) {
   YAML::Node root;
   try {

@@ -43,6 +43,12 @@ struct SearchSpace {
   // values (r in [min(2, r0), max(6, r0)] m, g in [min(6, g0), max(20, g0)]); nothing fixed, so
   // every other parameter keeps the base's value.
   static SearchSpace AroundBase(double base_r, int base_g);
+  // `--space loop`, the default without a front-end break: the same ranges on steps that mean
+  // something — r on a 1 cm lattice through the base's value, g by 1 — so offspring closer than a
+  // step are one parameter set (served by the run database) and the recommended r reads as
+  // written (e.g. 3.52, not 3.5197...). (AroundBase without steps is what folders written
+  // before steps existed resume with.)
+  static SearchSpace Loop(const slam::MapperParams& base);
   // `--space front-end`: what governs sequential matching and node density, plus r, g, p, q, for
   // maps that break before any loop closes (the sequential match snaps to a wrong pose and no
   // loop-closure setting can mend it). Each range contains the base's value; the search window

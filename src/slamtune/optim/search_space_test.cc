@@ -51,6 +51,28 @@ TEST(SearchSpace, PaperDefaultIsRealThenInteger) {
   EXPECT_DOUBLE_EQ(a.at("loop_match_minimum_response_coarse"), 0.7);
 }
 
+TEST(SearchSpace, LoopKeepsAroundBasesRangesOnCentimetreSteps) {
+  slam::MapperParams base;  // slam_karto: r 4 m, g 10
+  SearchSpace s = SearchSpace::Loop(base);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s.dimensions[0].name, "loop_search_maximum_distance");
+  EXPECT_DOUBLE_EQ(s.dimensions[0].lower, 2.0);
+  EXPECT_DOUBLE_EQ(s.dimensions[0].upper, 6.0);
+  EXPECT_DOUBLE_EQ(s.dimensions[0].step, 0.01);
+  EXPECT_TRUE(s.dimensions[1].integer);
+  EXPECT_DOUBLE_EQ(s.dimensions[1].lower, 6.0);
+  EXPECT_DOUBLE_EQ(s.dimensions[1].upper, 20.0);
+  EXPECT_DOUBLE_EQ(s.Assign({3.9497659254462367, 12.0}).at("loop_search_maximum_distance"), 3.95);
+  // A base off the centimetre grid stays a point of the space; ranges widen to hold a base outside them.
+  base.loop_search_maximum_distance = 8.123;
+  base.loop_match_minimum_chain_size = 3;
+  s = SearchSpace::Loop(base);
+  EXPECT_DOUBLE_EQ(s.dimensions[0].upper, 8.123);
+  EXPECT_DOUBLE_EQ(s.dimensions[1].lower, 3.0);
+  EXPECT_DOUBLE_EQ(s.Assign({8.123, 3.0}).at("loop_search_maximum_distance"), 8.123);
+  EXPECT_NO_THROW(s.Validate("loop"));
+}
+
 TEST(SearchSpace, AroundBaseContainsTheBaseAndFixesNothing) {
   const SearchSpace toolbox = SearchSpace::AroundBase(3.0, 10);
   ASSERT_EQ(toolbox.size(), 2u);
