@@ -36,6 +36,7 @@ struct OptimizeArgs {
   std::string resume;
   std::string space_file;
   std::string objectives = optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kConsistency);
+  optim::SettlingOptions settling;  // --no-early-stop, --stop-tolerance, --stop-window
   std::size_t population = 66;
   unsigned generations = 60;
   std::size_t divisions = 10;
@@ -70,7 +71,8 @@ std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
 nlohmann::json InvocationJson(const OptimizeArgs& a) {
   return {{"inputs", a.inputs.ToJson()},  {"space", a.space_file}, {"population", a.population},
           {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed},
-          {"objectives", a.objectives}, {"input_hashes", io::ContentHashes(InputFiles(a.inputs))}};
+          {"objectives", a.objectives}, {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
+          {"settling", {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
 }
 
 // Whether --resume came alone (with options that do not change results): then the settings
@@ -115,6 +117,13 @@ void PrepareResume(const std::string& dir, const std::string& db_path, const CLI
     args.seed = inv->at("seed");
     // Folders written before objective sets existed were optimised on the paper's.
     args.objectives = inv->value("objectives", optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kPaper));
+    // ... and ran their whole budget.
+    if (inv->contains("settling")) {
+      const auto& st = inv->at("settling");
+      args.settling = {st.at("enabled").get<bool>(), st.at("tolerance").get<double>(), st.at("window").get<int>()};
+    } else {
+      args.settling.enabled = false;
+    }
   }
   if (inv) RequireRecordedContent(*inv, args.inputs);
 }
@@ -168,6 +177,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   optim::OptimizeSettings settings;
   TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
   settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
+  settings.settling = args.settling;
   settings.population = args.population;
   settings.generations = args.generations;
   settings.divisions = args.divisions;
@@ -298,6 +308,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       std::printf("\nno change from %s: best.yaml is that configuration unchanged, best_change.yaml sets nothing\n",
                   inputs.base_label.c_str());
     }
+    std::printf("\nNSGA-III %s.", result.settling.c_str());
     std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote the parameter files (best.yaml, best_change.yaml for "
                 "slam_toolbox; best_slam_karto.yaml, best_slam_karto_change.yaml for slam_karto) and %zu report files "
                 "(report.html, results.json, tables, maps, figures) to %s\n",
@@ -331,8 +342,17 @@ const SubcommandRegistrar kRegistrar{{
                      "enclosed areas n_e; does not reward a map for breaking apart) or 'paper' (the seed paper's "
                      "eta, n_c, n_e)")
           ->capture_default_str();
+      app.add_flag("--no-early-stop", [args](std::int64_t) { args->settling.enabled = false; },
+                   "run every generation of the budget instead of stopping once the answer has settled");
+      app.add_option("--stop-tolerance", args->settling.tolerance,
+                     "settled when the non-dominated front moves less than this per generation (normalised by its "
+                     "range) and the recommendation and knee stay the same...")
+          ->capture_default_str();
+      app.add_option("--stop-window", args->settling.window, "... for this many generations in a row")
+          ->capture_default_str();
       app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
-      app.add_option("--generations", args->generations, "generations (default 60; 8 on the built-in world)");
+      app.add_option("--generations", args->generations, "the most generations (default 60; 8 on the built-in world); the run stops earlier once the "
+                     "answer has settled, unless --no-early-stop");
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
           ->capture_default_str();
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();

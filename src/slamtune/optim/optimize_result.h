@@ -63,6 +63,8 @@ struct OptimizeResult {
   std::vector<EvaluationRecord> evaluations;    // every finished evaluation, in order
   std::vector<GenerationSnapshot> snapshots;    // generations 1, G/2 and G (at least)
   std::size_t evaluation_count = 0;             // SLAM runs done (this process and earlier, resumed)
+  unsigned generations_run = 0;                 // generations evolved (this process and earlier)
+  std::string settling;                         // when and why it stopped (settling.h)
   std::size_t cache_hits = 0;                   // requests served without a SLAM run
   double wall_s = 0.0;
 

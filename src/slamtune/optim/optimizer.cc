@@ -78,6 +78,7 @@ void RequireAnySuccess(const std::vector<EvaluationRecord>& records, const std::
 
 void OptimizeSettings::Validate() const {
   space.Validate("search space");
+  settling.Validate();
   if (population < 4) throw InputError(fmt::format("--population = {} is out of range: must be >= 4", population));
   if (generations < 1) throw InputError(fmt::format("--generations = {} is out of range: must be >= 1", generations));
   if (divisions < 1) throw InputError(fmt::format("--divisions = {} is out of range: must be >= 1", divisions));
@@ -87,7 +88,8 @@ nlohmann::json OptimizeSettings::ToJson() const {
   return {{"log", log_path},           {"relations", relations_path}, {"space", space.Fingerprint()},
           {"default", default_assignment}, {"divisions", divisions},  {"population", population},
           {"generations", generations},  {"seed", seed},              {"engine", engine},
-          {"objectives", objectives.name()}};
+          {"objectives", objectives.name()},
+          {"settling", {{"enabled", settling.enabled}, {"tolerance", settling.tolerance}, {"window", settling.window}}}};
 }
 
 namespace {
@@ -97,6 +99,11 @@ namespace {
 nlohmann::json UpgradedSettings(nlohmann::json stored) {
   if (stored.is_object() && !stored.contains("objectives")) {
     stored["objectives"] = ObjectiveSet::NameOf(ObjectiveSetKind::kPaper);
+  }
+  // ... and ran their whole budget.
+  if (stored.is_object() && !stored.contains("settling")) {
+    const SettlingOptions fixed{false};
+    stored["settling"] = {{"enabled", fixed.enabled}, {"tolerance", fixed.tolerance}, {"window", fixed.window}};
   }
   return stored;
 }
@@ -190,6 +197,13 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
                                           {pop.get_f().begin(), pop.get_f().end()}, ""));
   }
   current_f.assign(pop.get_f().begin(), pop.get_f().end());
+  // The settling rule sees every finished generation, the saved ones replayed on a resume.
+  SettlingRule settling(settings.settling, settings.space);
+  for (unsigned g = 1; g <= done_gens; ++g) {
+    const nlohmann::json saved = *store.Generation(static_cast<int>(g));
+    settling.Update(g, saved.at("x").get<std::vector<std::vector<double>>>(),
+                    saved.at("f").get<std::vector<std::vector<double>>>());
+  }
   RequireAnySuccess(RecordsOf(evaluator, settings.space, {pop.get_x().begin(), pop.get_x().end()}),
                     done_gens == 0 ? "the initial population" : "the saved population");
   for (unsigned g : snapshot_gens) {  // figures of generations finished before a resume
@@ -200,7 +214,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     }
   }
 
-  if (done_gens < total_gens) {
+  if (done_gens < total_gens && !settling.settled()) {
     Nsga3Options options;
     options.generations = total_gens - done_gens;
     options.divisions = settings.divisions;
@@ -219,10 +233,25 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
         result.snapshots.push_back({static_cast<int>(done_gens), record.x, record.f});
       }
       report(done_gens, true);
-      return CallbackAction::kContinue;
+      if (!settling.Update(done_gens, record.x, record.f)) return CallbackAction::kContinue;
+      if (hooks.progress) hooks.progress(settling.Describe(total_gens), true);
+      return CallbackAction::kStop;
     });
     pop = nsga3.evolve(pop);
     evaluator.SetProgressCallback(nullptr);
+  }
+
+  // A settled run's figures are generations 1, s/2 and s, whether it settled now or before a resume.
+  if (settling.settled()) {
+    const unsigned s = settling.settled_at();
+    std::vector<unsigned> gens{1, std::max(1u, s / 2), s};
+    gens.erase(std::unique(gens.begin(), gens.end()), gens.end());
+    result.snapshots.clear();
+    for (unsigned g : gens) {
+      const nlohmann::json saved = *store.Generation(static_cast<int>(g));
+      result.snapshots.push_back({static_cast<int>(g), saved.at("x").get<std::vector<std::vector<double>>>(),
+                                  saved.at("f").get<std::vector<std::vector<double>>>()});
+    }
   }
 
   // Choosing the answer.
@@ -274,6 +303,8 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
             [](const auto& a, const auto& b) { return a.generation < b.generation; });
   const auto st = evaluator.stats();
   result.evaluation_count = store.Count();
+  result.generations_run = done_gens;
+  result.settling = settling.Describe(total_gens);
   result.cache_hits = st.cache_hits;
   result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
   return result;

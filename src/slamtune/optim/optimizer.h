@@ -20,6 +20,7 @@
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/optim/search_space.h"
+#include "slamtune/optim/settling.h"
 
 namespace slamtune::optim {
 
@@ -33,7 +34,8 @@ struct OptimizeSettings {
   std::string base_label = "slam_karto's defaults";  // what the base is: "your configuration (FILE)", ...
   std::size_t divisions = 10;     // Das-Dennis divisions: M = 3, D = 10 -> 66 reference points
   std::size_t population = 66;    // the paper's population
-  unsigned generations = 60;      // the paper's generations
+  unsigned generations = 60;      // the paper's generations: the most that are run
+  SettlingOptions settling;       // stop earlier once the answer has settled (settling.h)
   unsigned seed = 1;
   nlohmann::json engine;  // everything else that changes results (base parameters, metric options, log identity)
   nlohmann::json invocation;  // the command line that started the run: stored with the settings, not compared

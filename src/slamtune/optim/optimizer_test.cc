@@ -1,5 +1,6 @@
 #include "slamtune/optim/optimizer.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -204,6 +205,69 @@ TEST(Optimizer, TheObjectiveSetDecidesWhatIsMinimised) {
   const OptimizeResult paper = Optimize(FreshStore("set_paper"), false, FakeSlam, 1, settings);
   EXPECT_EQ(paper.snapshots.front().objectives.front()[0],
             FakeSlam(settings.space.Assign(paper.snapshots.front().decisions.front())).occupied_ratio);
+}
+
+// One integer parameter whose best value (g = 7) wins on every objective: the population
+// fills with it and the answer settles long before the budget.
+EvaluationRecord SettlingSlam(const Assignment& a) {
+  const double g = a.at("loop_match_minimum_chain_size");
+  EvaluationRecord rec;
+  rec.occupied_ratio = 0.03 + 0.01 * std::fabs(g - 7);
+  rec.corner_pixels = 1000 + 50 * std::fabs(g - 7);
+  rec.enclosed_areas = 5 + std::fabs(g - 7);
+  rec.hits = 10000;
+  rec.hits_in_free_cells = 100 + 10 * std::fabs(g - 7);
+  rec.nodes = 100;
+  return rec;
+}
+
+OptimizeSettings SettlingSettings() {
+  OptimizeSettings s = SmallSettings();
+  s.space = SearchSpace();
+  s.space.dimensions = {{"loop_match_minimum_chain_size", 6.0, 12.0, true}};
+  s.default_assignment = {{"loop_match_minimum_chain_size", 10.0}};
+  s.generations = 40;
+  return s;
+}
+
+TEST(Optimizer, StopsOnceTheAnswerHasSettledAndAResumeStopsAtTheSameGeneration) {
+  const OptimizeResult whole = Optimize(FreshStore("settle_whole"), false, SettlingSlam, 1, SettlingSettings());
+  ASSERT_GT(whole.generations_run, 3u);
+  EXPECT_LT(whole.generations_run, 40u);
+  EXPECT_THAT(whole.settling, ::testing::HasSubstr("stopped after generation"));
+  EXPECT_EQ(whole.candidates[0].record.params.at("loop_match_minimum_chain_size"), 7.0);
+  EXPECT_EQ(whole.snapshots.back().generation, static_cast<int>(whole.generations_run));
+
+  // Killed right after generation 2 is saved, before the answer settles.
+  const std::string cut = FreshStore("settle_cut");
+  {
+    EvaluationStore store(cut);
+    BatchEvaluator evaluator(SettlingSlam, &store, 1);
+    OptimizeHooks hooks;
+    hooks.progress = [](const std::string& line, bool force) {
+      if (force && line.rfind("gen 2/", 0) == 0) throw Killed{};
+    };
+    EXPECT_THROW(RunOptimization(SettlingSettings(), evaluator, store, false, hooks), Killed);
+    EXPECT_EQ(store.LastGeneration(), 2);
+  }
+  const OptimizeResult resumed = Optimize(cut, true, SettlingSlam, 1, SettlingSettings());
+  EXPECT_EQ(resumed.generations_run, whole.generations_run);
+  EXPECT_EQ(resumed.settling, whole.settling);
+  EXPECT_EQ(resumed.candidates[0].record.key, whole.candidates[0].record.key);
+  ASSERT_EQ(resumed.snapshots.size(), whole.snapshots.size());
+  for (std::size_t i = 0; i < whole.snapshots.size(); ++i) {
+    EXPECT_EQ(resumed.snapshots[i].generation, whole.snapshots[i].generation);
+  }
+  // Resuming a settled run again runs nothing more.
+  const OptimizeResult again = Optimize(cut, true, SettlingSlam, 1, SettlingSettings());
+  EXPECT_EQ(again.generations_run, whole.generations_run);
+
+  OptimizeSettings fixed = SettlingSettings();
+  fixed.generations = 12;
+  fixed.settling.enabled = false;
+  const OptimizeResult full = Optimize(FreshStore("settle_fixed"), false, SettlingSlam, 1, fixed);
+  EXPECT_EQ(full.generations_run, 12u);
+  EXPECT_EQ(full.settling, "ran the fixed budget of 12 generations");
 }
 
 TEST(Optimizer, StopsWithAReadableErrorWhenEveryRunFails) {

@@ -45,6 +45,7 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   for (const auto& row : io::InputRows(r.log_input)) items.push_back(row);
   items.insert(items.end(), {
       {"relations (ground truth)", r.relations_path.empty() ? "none" : r.relations_path},
+      {"generations", r.settling.empty() ? std::to_string(r.generations_run) : r.settling},
       {"SLAM runs (evaluations)", std::to_string(r.evaluation_count)},
       {"requests served from the cache", std::to_string(r.cache_hits)},
       {"wall time", Seconds(r.wall_s)},

@@ -34,6 +34,8 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   for (optim::Objective o : result.objectives.objectives()) minimised.push_back(optim::InfoOf(o).key);
   j["objectives"] = {{"set", result.objectives.name()}, {"minimised", minimised}};
   j["evaluations"] = result.evaluation_count;
+  j["generations_run"] = result.generations_run;
+  j["settling"] = result.settling;
   j["cache_hits"] = result.cache_hits;
   j["wall_s"] = result.wall_s;
   j["verdict"] = result.verdict;

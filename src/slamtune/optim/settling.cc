@@ -1,0 +1,155 @@
+#include "slamtune/optim/settling.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::optim {
+namespace {
+
+bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
+  bool strictly = false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k] > b[k]) return false;
+    if (a[k] < b[k]) strictly = true;
+  }
+  return strictly;
+}
+
+// The key of the parameter set most individuals share; ties to the first.
+std::string MajorityKey(const SearchSpace& space, const std::vector<std::vector<double>>& x) {
+  std::map<std::string, int> count;
+  std::string best;
+  int best_count = 0;
+  for (const auto& xi : x) {
+    const std::string key = SearchSpace::Key(space.Assign(xi));
+    const int c = ++count[key];
+    if (c > best_count) {
+      best_count = c;
+      best = key;
+    }
+  }
+  return best;
+}
+
+// The key of the front member closest to the ideal point, objectives normalised by the front's range.
+std::string KneeKey(const SearchSpace& space, const std::vector<std::vector<double>>& x,
+                    const std::vector<std::vector<double>>& f) {
+  std::vector<std::size_t> front;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    bool dominated = false;
+    for (std::size_t j = 0; j < f.size() && !dominated; ++j) dominated = j != i && Dominates(f[j], f[i]);
+    if (!dominated) front.push_back(i);
+  }
+  if (front.empty()) return "";
+  const std::size_t m = f[front.front()].size();
+  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
+  for (std::size_t i : front)
+    for (std::size_t k = 0; k < m; ++k) {
+      lo[k] = std::min(lo[k], f[i][k]);
+      hi[k] = std::max(hi[k], f[i][k]);
+    }
+  std::size_t best = front.front();
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t i : front) {
+    double d = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+      const double z = hi[k] > lo[k] ? (f[i][k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+      d += z * z;
+    }
+    if (d < best_d) {
+      best_d = d;
+      best = i;
+    }
+  }
+  return SearchSpace::Key(space.Assign(x[best]));
+}
+
+}  // namespace
+
+void SettlingOptions::Validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("--stop-tolerance = {} is out of range: must be in (0, 1)", tolerance));
+  }
+  if (window < 1) throw InputError(fmt::format("--stop-window = {} is out of range: must be >= 1", window));
+}
+
+std::vector<std::vector<double>> NonDominatedVectors(const std::vector<std::vector<double>>& f) {
+  std::vector<std::vector<double>> out;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    bool dominated = false;
+    for (std::size_t j = 0; j < f.size() && !dominated; ++j) dominated = j != i && Dominates(f[j], f[i]);
+    if (!dominated && std::find(out.begin(), out.end(), f[i]) == out.end()) out.push_back(f[i]);
+  }
+  return out;
+}
+
+double FrontMovement(const std::vector<std::vector<double>>& previous, const std::vector<std::vector<double>>& current) {
+  if (previous.empty() || current.empty()) return 1.0;
+  const std::size_t m = current.front().size();
+  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
+  for (const auto& p : current)
+    for (std::size_t k = 0; k < m; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  double sum = 0.0;
+  for (const auto& p : current) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& q : previous) {
+      double d2 = 0.0;
+      for (std::size_t k = 0; k < m; ++k) {
+        const double range = hi[k] > lo[k] ? hi[k] - lo[k] : 1.0;
+        const double z = (p[k] - q[k]) / range;
+        d2 += z * z;
+      }
+      nearest = std::min(nearest, std::sqrt(d2));
+    }
+    sum += nearest;
+  }
+  return sum / static_cast<double>(current.size());
+}
+
+SettlingRule::SettlingRule(SettlingOptions options, SearchSpace space)
+    : options_(options), space_(std::move(space)) {
+  options_.Validate();
+}
+
+bool SettlingRule::Update(unsigned generation, const std::vector<std::vector<double>>& x,
+                          const std::vector<std::vector<double>>& f) {
+  SLAMTUNE_CHECK(x.size() == f.size() && !x.empty());
+  SLAMTUNE_CHECK(last_generation_ == 0 || generation == last_generation_ + 1);
+  last_generation_ = generation;
+  if (settled()) return true;
+  const auto front = NonDominatedVectors(f);
+  const std::string recommended = MajorityKey(space_, x);
+  const std::string knee = KneeKey(space_, x, f);
+  last_movement_ = FrontMovement(previous_front_, front);
+  const bool calm = !previous_front_.empty() && last_movement_ < options_.tolerance &&
+                    recommended == previous_recommended_ && knee == previous_knee_;
+  calm_generations_ = calm ? calm_generations_ + 1 : 0;
+  previous_front_ = front;
+  previous_recommended_ = recommended;
+  previous_knee_ = knee;
+  if (options_.enabled && calm_generations_ >= options_.window) settled_at_ = generation;
+  return settled();
+}
+
+std::string SettlingRule::Describe(unsigned generations_budget) const {
+  if (!options_.enabled) return fmt::format("ran the fixed budget of {} generations", generations_budget);
+  if (!settled()) {
+    return fmt::format("ran all {} generations: the answer was still changing (front movement {:.4f}, tolerance "
+                       "{:.4f})",
+                       generations_budget, last_movement_, options_.tolerance);
+  }
+  return fmt::format("stopped after generation {} of {}: for {} generations the non-dominated front moved less than "
+                     "{:.4f} (normalised) and the recommendation and the knee did not change",
+                     settled_at_, generations_budget, options_.window, options_.tolerance);
+}
+
+}  // namespace slamtune::optim

@@ -1,0 +1,67 @@
+// When has an optimisation settled? A budget of generations is arbitrary (the seed paper's
+// 66 x 60 among them); a user wants the answer the full budget would give as soon as it stops
+// changing. After each generation this rule looks at two things, in the spirit of pymoo's
+// default multi-objective termination (Blank & Deb 2020, pymoo: "ftol" on the movement of the
+// non-dominated front):
+//   * the front's movement: the mean distance from each point of this generation's
+//     non-dominated front to the nearest point of the previous generation's, with every
+//     objective normalised by the current front's range (an IGD between successive fronts);
+//   * the answer: the parameter set the final population would recommend (the one most
+//     individuals share) and the knee of the front.
+// The optimisation has settled when, for `window` consecutive generations, the front moved less
+// than `tolerance` and the recommendation and the knee stayed the same parameter sets. The rule
+// reads only what every saved generation holds (decision and objective vectors), so a resumed
+// run replays the saved generations through it and stops at the same generation.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "slamtune/optim/search_space.h"
+
+namespace slamtune::optim {
+
+struct SettlingOptions {
+  bool enabled = true;
+  double tolerance = 0.0025;  // mean normalised front movement per generation, in (0, 1)
+  int window = 3;             // generations in a row that must satisfy the rule, >= 1
+
+  // Throws InputError naming the field, its value and the rule.
+  void Validate() const;
+};
+
+class SettlingRule {
+ public:
+  SettlingRule(SettlingOptions options, SearchSpace space);
+
+  // Feeds one finished generation (its population); returns true once the optimisation has
+  // settled (and stays true). Generation numbers must increase by one.
+  bool Update(unsigned generation, const std::vector<std::vector<double>>& x,
+              const std::vector<std::vector<double>>& f);
+
+  bool settled() const { return settled_at_ > 0; }
+  unsigned settled_at() const { return settled_at_; }  // 0 while not settled
+  double last_movement() const { return last_movement_; }
+  // One sentence: when and why it stopped, or that it ran the whole budget.
+  std::string Describe(unsigned generations_budget) const;
+
+ private:
+  SettlingOptions options_;
+  SearchSpace space_;
+  std::vector<std::vector<double>> previous_front_;
+  std::string previous_recommended_, previous_knee_;
+  int calm_generations_ = 0;
+  unsigned last_generation_ = 0;
+  unsigned settled_at_ = 0;
+  double last_movement_ = -1.0;
+};
+
+// The front's movement between two sets of objective vectors: the mean distance from each point
+// of `current` to the nearest point of `previous`, each objective normalised by `current`'s range
+// (a zero range counts as 1). 1 when `previous` is empty.
+double FrontMovement(const std::vector<std::vector<double>>& previous, const std::vector<std::vector<double>>& current);
+
+// The non-dominated vectors of `f` (duplicates kept once).
+std::vector<std::vector<double>> NonDominatedVectors(const std::vector<std::vector<double>>& f);
+
+}  // namespace slamtune::optim

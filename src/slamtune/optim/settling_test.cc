@@ -1,0 +1,76 @@
+#include "slamtune/optim/settling.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "slamtune/common/error.h"
+
+namespace slamtune::optim {
+namespace {
+
+using ::testing::HasSubstr;
+
+SearchSpace OneDimension() {
+  SearchSpace s;
+  s.dimensions = {{"loop_search_maximum_distance", 2.0, 6.0, false}};
+  return s;
+}
+
+using Vectors = std::vector<std::vector<double>>;
+
+TEST(FrontMovement, IsZeroForTheSameFrontAndScaleFree) {
+  const Vectors front = {{0.0, 1.0}, {0.5, 0.5}, {1.0, 0.0}};
+  EXPECT_DOUBLE_EQ(FrontMovement(front, front), 0.0);
+  EXPECT_DOUBLE_EQ(FrontMovement({}, front), 1.0);
+  // Every point moved by a tenth of the range in the first objective.
+  const Vectors moved = {{0.1, 1.0}, {0.6, 0.5}, {1.1, 0.0}};
+  EXPECT_NEAR(FrontMovement(front, moved), 0.1, 1e-12);
+  Vectors scaled = front, scaled_moved = moved;
+  for (auto* v : {&scaled, &scaled_moved})
+    for (auto& p : *v) p[0] *= 1000.0;
+  EXPECT_NEAR(FrontMovement(scaled, scaled_moved), 0.1, 1e-12);
+}
+
+TEST(NonDominatedVectors, KeepsTheFrontOnce) {
+  EXPECT_EQ(NonDominatedVectors({{1, 2}, {2, 1}, {2, 2}, {1, 2}}), (Vectors{{1, 2}, {2, 1}}));
+}
+
+TEST(SettlingRule, SettlesAfterTheWindowOfCalmGenerations) {
+  SettlingRule rule({true, 0.0025, 3}, OneDimension());
+  const Vectors x = {{3.0}, {3.0}, {4.0}};
+  const Vectors f = {{1.0, 2.0}, {1.0, 2.0}, {2.0, 1.0}};
+  EXPECT_FALSE(rule.Update(1, x, f));  // nothing to compare with
+  EXPECT_FALSE(rule.Update(2, x, f));
+  EXPECT_FALSE(rule.Update(3, x, f));
+  EXPECT_TRUE(rule.Update(4, x, f));
+  EXPECT_EQ(rule.settled_at(), 4u);
+  EXPECT_TRUE(rule.Update(5, x, f));  // stays settled
+  EXPECT_EQ(rule.settled_at(), 4u);
+  EXPECT_THAT(rule.Describe(60), HasSubstr("stopped after generation 4 of 60"));
+}
+
+TEST(SettlingRule, AMovingFrontOrAChangingAnswerKeepsItGoing) {
+  SettlingRule moving({true, 0.0025, 2}, OneDimension());
+  for (unsigned g = 1; g <= 10; ++g) {
+    const double shift = 0.5 / g;  // still moving by more than the tolerance
+    EXPECT_FALSE(moving.Update(g, {{3.0}, {4.0}}, {{1.0 + shift, 2.0}, {2.0, 1.0 - shift}})) << g;
+  }
+  EXPECT_THAT(moving.Describe(10), HasSubstr("ran all 10 generations: the answer was still changing"));
+  // The same front, but the parameter set most individuals share alternates.
+  SettlingRule flipping({true, 0.0025, 2}, OneDimension());
+  for (unsigned g = 1; g <= 10; ++g) {
+    const double r = g % 2 ? 3.0 : 5.0;
+    EXPECT_FALSE(flipping.Update(g, {{r}, {r}, {4.0}}, {{1.0, 2.0}, {1.0, 2.0}, {2.0, 1.0}})) << g;
+  }
+}
+
+TEST(SettlingRule, DisabledNeverStopsAndBadOptionsAreRefused) {
+  SettlingRule off({false, 0.0025, 1}, OneDimension());
+  for (unsigned g = 1; g <= 5; ++g) EXPECT_FALSE(off.Update(g, {{3.0}}, {{1.0, 1.0}}));
+  EXPECT_EQ(off.Describe(5), "ran the fixed budget of 5 generations");
+  EXPECT_THROW(SettlingRule({true, 0.0, 3}, OneDimension()), InputError);
+  EXPECT_THROW(SettlingRule({true, 0.01, 0}, OneDimension()), InputError);
+}
+
+}  // namespace
+}  // namespace slamtune::optim
