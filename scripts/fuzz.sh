@@ -48,6 +48,7 @@ out="runs/fuzz/$target"
 mkdir -p "$out"
 rm -rf "$out/corpus"
 cp -r "$corpus_root/$target" "$out/corpus"
+touch "$out/.start"  # findings of earlier runs stay, but only this run's are counted
 
 # Leaks are reported per input; a reader must not take more than 2 GB or 10 s on any input.
 set +e
@@ -60,7 +61,8 @@ status=$?
 set -e
 
 grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "$out/fuzz.log" || true
-findings=$(find "$out" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
+findings=$(find "$out" -maxdepth 1 -type f -newer "$out/.start" \
+  \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
 if [[ $status -ne 0 || $findings -ne 0 ]]; then
   echo "fuzz.sh: $target: FOUND $findings input(s) in $out/ (exit $status); see $out/fuzz.log"
   exit 1
