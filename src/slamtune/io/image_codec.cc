@@ -87,6 +87,13 @@ GreyImage DecodePgm(std::string_view bytes, const std::string& path, const std::
                            count, data.size()),
          suffix);
   }
+  // P2 holds at least one digit per pixel and one whitespace between pixels: a header promising
+  // more than the text can hold is refused before the pixels are allocated.
+  if (!binary && data.size() < 2 * count - 1) {
+    Fail(path, fmt::format("truncated: the header declares {} x {} = {} pixels, the {} bytes of text hold at most {}",
+                           width, height, count, data.size(), (data.size() + 1) / 2),
+         suffix);
+  }
   image.pixels.resize(count);
   PgmHeader text(data, 0);  // P2: numbers separated by whitespace
   for (std::uint64_t k = 0; k < count; ++k) {
@@ -103,6 +110,7 @@ GreyImage DecodePgm(std::string_view bytes, const std::string& path, const std::
 }
 
 // ---- PNG: IHDR checked here, pixels decoded by libpng with silent handlers.
+constexpr std::uint64_t kMaxDeflateRatio = 1032;  // most bytes one compressed byte of deflate can stand for
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
 std::uint32_t BigEndian32(std::string_view b, std::size_t at) {
@@ -134,9 +142,10 @@ void PngRead(png_structp png, png_bytep out, png_size_t n) {
   source->offset += n;
 }
 
-// libpng's decode into `rows` (height pointers to width bytes). Only plain data in this frame:
-// png_longjmp returns here past no destructor.
-bool DecodePngRows(PngSource* source, png_bytep* rows, std::size_t width) {
+// libpng's decode into `pixels` (height rows of width bytes), row by row and pass by pass for an
+// interlaced image, so that no array of row pointers is allocated. Only plain data in this
+// frame: png_longjmp returns here past no destructor.
+bool DecodePngRows(PngSource* source, png_bytep pixels, std::size_t width, std::size_t height) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, source, PngError, PngWarning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
@@ -151,10 +160,12 @@ bool DecodePngRows(PngSource* source, png_bytep* rows, std::size_t width) {
   png_set_read_fn(png, source, PngRead);
   png_read_info(png, info);
   if (png_get_bit_depth(png, info) < 8) png_set_expand_gray_1_2_4_to_8(png);
-  png_set_interlace_handling(png);
+  const int passes = png_set_interlace_handling(png);
   png_read_update_info(png, info);
   if (png_get_rowbytes(png, info) != width) png_error(png, "unexpected row size");
-  png_read_image(png, rows);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (std::size_t r = 0; r < height; ++r) png_read_row(png, pixels + r * width, nullptr);
+  }
   png_read_end(png, nullptr);
   png_destroy_read_struct(&png, &info, nullptr);
   return true;
@@ -171,15 +182,29 @@ GreyImage DecodePng(std::string_view bytes, const std::string& path, const std::
   if (colour != 0 || depth > 8) {
     Fail(path, fmt::format("is a {} {}-bit image; {}", channels, depth > 8 ? 16 : 8, kConvertHint), suffix);
   }
+  if (depth != 1 && depth != 2 && depth != 4 && depth != 8) {
+    Fail(path, fmt::format("not a valid PNG: grey bit depth {} (the PNG spec allows 1, 2, 4, 8, 16)", depth), suffix);
+  }
   CheckSize(width, height, path, suffix);
+  // Deflate expands at most 1032-fold (zlib's technical details), so the file's bytes bound the
+  // image data it can hold: every row's filter byte and its pixels' bits (interlaced or not). A
+  // header promising more is refused before the pixels are allocated (a 40-byte file must not
+  // cost gigabytes).
+  const std::uint64_t min_data =
+      height + static_cast<std::uint64_t>(width) * height * static_cast<std::uint64_t>(depth) / 8;
+  const std::uint64_t max_data = static_cast<std::uint64_t>(bytes.size()) * kMaxDeflateRatio;
+  if (min_data > max_data) {
+    Fail(path, fmt::format("truncated: the header declares {} x {} pixels ({} bytes of image data), more than the "
+                           "file's {} bytes can hold compressed",
+                           width, height, min_data, bytes.size()),
+         suffix);
+  }
   GreyImage image;
   image.width = static_cast<int>(width);
   image.height = static_cast<int>(height);
   image.pixels.resize(static_cast<std::size_t>(width) * height);
-  std::vector<png_bytep> rows(height);
-  for (std::uint32_t r = 0; r < height; ++r) rows[r] = image.pixels.data() + static_cast<std::size_t>(r) * width;
   PngSource source{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), 0, {}};
-  if (!DecodePngRows(&source, rows.data(), width)) {
+  if (!DecodePngRows(&source, image.pixels.data(), width, height)) {
     Fail(path, std::string("cannot decode the image: truncated or corrupt PNG (") + source.message + ")", suffix);
   }
   return image;

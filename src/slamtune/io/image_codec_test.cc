@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "slamtune/common/error.h"
 
@@ -73,6 +74,39 @@ TEST(ImageCodec, TruncatedOrHugePngIsOneErrorAndNothingPrinted) {
   corrupt[corrupt.size() - 16] ^= 0x55;
   EXPECT_THAT(ErrorOf(corrupt, &printed), HasSubstr("truncated or corrupt PNG"));
   EXPECT_EQ(printed, "");
+}
+
+TEST(ImageCodec, InterlacedPngIsRead) {
+  // kPixels as an Adam7-interlaced 3 x 2 grey PNG.
+  const std::string interlaced(
+      "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x03\x00\x00\x00\x02\x08"
+      "\x00\x00\x00\x01\xcf\x18\x09\x50\x00\x00\x00\x0f\x49\x44\x41\x54\x78\x9c\x63\x60\x60\x38\xcb\xf0\x0f"
+      "\x84\x01\x0e\x00\x03\x97\xa6\xfd\x4b\x13\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82",
+      72);
+  const GreyImage image = DecodeGreyImage(interlaced, "m", "");
+  EXPECT_EQ(image.pixels, std::vector<std::uint8_t>(kPixels, kPixels + 6));
+}
+
+TEST(ImageCodec, SizeBeyondWhatTheFileCanHoldIsRefusedBeforeAllocating) {
+  // 35 bytes declaring a 1 x 268435457 grey PNG: within the pixel limit, but deflate cannot
+  // expand 35 bytes into 268 MB of rows.
+  const std::string png("\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x00\x01\x10\x00\x00\x01"
+                        "\x08\x00\x02\x00\x00\xd0\x00\x00M`\x86",
+                        35);
+  std::string printed;
+  EXPECT_EQ(ErrorOf(png, &printed), "m.img: truncated: the header declares 1 x 268435457 pixels (536870914 bytes of "
+                                    "image data), more than the file's 35 bytes can hold compressed");
+  EXPECT_EQ(printed, "");
+  // Bit depth 0, which would make the data bound 0 bytes per row.
+  std::string depth0 = png;
+  depth0[24] = 0;
+  EXPECT_EQ(ErrorOf(depth0), "m.img: not a valid PNG: grey bit depth 0 (the PNG spec allows 1, 2, 4, 8, 16)");
+  EXPECT_EQ(ErrorOf("P2\n30000 30000\n255\n0 1 2\n"),
+            "m.img: truncated: the header declares 30000 x 30000 = 900000000 pixels, the 6 bytes of text hold at "
+            "most 3");
+  // A blank map compresses near deflate's limit and still reads.
+  const std::vector<std::uint8_t> blank(2000 * 500, 205);
+  EXPECT_EQ(DecodeGreyImage(EncodeGreyPng(2000, 500, blank.data()), "m", "").pixels, blank);
 }
 
 TEST(ImageCodec, OtherFormatsAreNamed) {

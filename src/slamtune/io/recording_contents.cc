@@ -43,10 +43,13 @@ struct Reader {
   void Decode(RosMessageKind kind, const RecordedTopic& topic, const RecordedMessage& message) {
     switch (kind) {
       case RosMessageKind::kLaserScan: {
-        std::vector<RecordedScan>& scans = out->scans[topic.name];
-        if (max_scan_messages > 0 && scans.size() >= max_scan_messages) return;
-        scans.push_back({DecodeLaserScan(message.data, topic.serialization), message.log_time_ns,
-                         message.location.ToString()});
+        const auto known = out->scans.find(topic.name);
+        if (max_scan_messages > 0 && known != out->scans.end() && known->second.size() >= max_scan_messages) return;
+        // Decoded before the topic gets its entry: a topic whose every scan is undecodable
+        // (lenient) has none, so it is never offered as a scan topic with no scans.
+        RecordedScan scan{DecodeLaserScan(message.data, topic.serialization), message.log_time_ns,
+                          message.location.ToString()};
+        out->scans[topic.name].push_back(std::move(scan));
         return;
       }
       case RosMessageKind::kOdometry: {

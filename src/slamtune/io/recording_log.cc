@@ -43,6 +43,14 @@ void ChooseScanTopic(const RecordingContents& contents, const RecordingReadOptio
     info->scan_topic_rule = "--scan-topic";
     return;
   }
+  if (candidates.empty() && contents.scans_undecodable > 0) {
+    throw InputError(contents.path, 0,
+                     fmt::format("none of the {} sensor_msgs/LaserScan messages in the recording could be decoded "
+                                 "(first: {}); its topics: {}",
+                                 contents.scans_undecodable,
+                                 contents.undecodable_examples.empty() ? "-" : contents.undecodable_examples.front(),
+                                 TopicList(contents)));
+  }
   if (candidates.empty()) {
     throw InputError(contents.path, 0,
                      "no sensor_msgs/LaserScan messages in the recording; its topics: " + TopicList(contents));
@@ -318,6 +326,7 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
 
   ChooseScanTopic(contents, choice, &info);
   const std::vector<RecordedScan>& scans = contents.scans.at(info.scan_topic);
+  SLAMTUNE_CHECK(!scans.empty());  // a scan topic has an entry only once a scan of it decoded
   info.scan_messages = scans.size();
   info.laser_frame = NormalizeFrameId(scans.front().message.header.frame_id);
   OdometrySource source;

@@ -9,6 +9,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/log_reader.h"
+#include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
 namespace {
@@ -80,7 +81,7 @@ TEST(RecordingToLog, ScansOutsideTheOdometryOrInAGapAreCountedNotPosed) {
   const LaserLog log = RecordingToLog(c, {});
   EXPECT_EQ(log.scans.size(), 9u);
   EXPECT_EQ(log.recording->scans_unplaced, 1u);
-  EXPECT_THAT(log.recording->unplaced_examples.front(), testing::HasSubstr("scan 9 at 5.000000 s"));
+  EXPECT_THAT(log.recording->unplaced_examples.front(), ::testing::HasSubstr("scan 9 at 5.000000 s"));
   // tf every 50 ms; a scan between two samples is placed unless the samples are farther apart
   // than --max-odom-gap.
   RecordingContents between = Drive();
@@ -129,8 +130,8 @@ TEST(RecordingToLog, MissingOffsetSaysWhatToDoAndTheOptionSuppliesIt) {
     RecordingToLog(no_static, {});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("no laser offset: base_footprint -> laser"));
-    EXPECT_THAT(e.what(), testing::HasSubstr("--laser-offset"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("no laser offset: base_footprint -> laser"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("--laser-offset"));
   }
   LogReadOptions o;
   o.recording.laser_offset = Pose2{0.3, 0.0, 0.0};
@@ -146,8 +147,8 @@ TEST(RecordingToLog, SeveralScanTopicsNeedAChoice) {
     RecordingToLog(c, {});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("2 LaserScan topics: /scan (9 messages), /scan_rear (9 messages)"));
-    EXPECT_THAT(e.what(), testing::HasSubstr("--scan-topic"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("2 LaserScan topics: /scan (9 messages), /scan_rear (9 messages)"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("--scan-topic"));
   }
   LogReadOptions o;
   o.recording.scan_topic = "/scan_rear";
@@ -163,8 +164,8 @@ TEST(RecordingToLog, RangesThatDisagreeWithTheAnglesAreAnErrorOrSkippedWhenLenie
     RecordingToLog(c, {});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("LaserScan has 6 ranges but its angles"));
-    EXPECT_THAT(e.what(), testing::HasSubstr("give 5 beams"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("LaserScan has 6 ranges but its angles"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("give 5 beams"));
   }
   LogReadOptions lenient;
   lenient.lenient = true;
@@ -254,7 +255,7 @@ TEST(RecordingToLog, WithoutTfOdometryTheOnlyOdometryTopicIsUsedAndSaid) {
     c.odometry["/wheel_odom"].push_back(s);
   }
   const LaserLog log = RecordingToLog(c, {});
-  EXPECT_THAT(log.recording->odometry_rule, testing::HasSubstr("the only Odometry topic"));
+  EXPECT_THAT(log.recording->odometry_rule, ::testing::HasSubstr("the only Odometry topic"));
   EXPECT_EQ(log.scans.size(), 3u);
   c.odometry.clear();
   EXPECT_THROW(RecordingToLog(c, {}), InputError);
@@ -283,7 +284,7 @@ TEST(RecordingFixtures, PlantedFaultsAreReportedByTheReader) {
     ReadLaserLog(kFixtures + "fault_no_tf_static.mcap");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("no laser offset"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("no laser offset"));
   }
   const LaserLog gap = ReadLaserLog(kFixtures + "fault_tf_gap.mcap");
   EXPECT_EQ(gap.recording->scans_unplaced, 9u);
@@ -298,4 +299,19 @@ TEST(RecordingFixtures, PlantedFaultsAreReportedByTheReader) {
 }
 
 }  // namespace
+TEST(RecordingFiles, EveryScanUndecodableIsAnErrorEvenWhenLenient) {
+  // SmallMcap's LaserScan payloads are placeholders ("scan-1", ...) that no decoder reads.
+  const std::string path = testing::FreshTempDir("undecodable_scans") + "/small.mcap";
+  testing::WriteFile(path, testing::SmallMcap(""));
+  LogReadOptions lenient;
+  lenient.lenient = true;
+  try {
+    ReadLaserLog(path, lenient);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("none of the 3 sensor_msgs/LaserScan messages in the recording could "
+                                               "be decoded (first: "));
+  }
+}
+
 }  // namespace slamtune::io

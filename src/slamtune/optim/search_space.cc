@@ -8,6 +8,7 @@
 #include <set>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/yaml_text.h"
 
 namespace slamtune::optim {
 namespace {
@@ -125,12 +126,12 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
   if (!root.IsMap()) throw InputError(path, 0, "search space must be a map with keys 'vary' and 'fix'");
   SearchSpace s;
   for (const auto& top : root) {
-    const std::string key = top.first.as<std::string>();
+    const std::string key = io::YamlScalarText(top.first, path, "a top-level key");
     if (key == "vary") {
       if (!top.second.IsMap()) throw InputError(path, top.second.Mark().line + 1, "'vary' must be a map");
       for (const auto& item : top.second) {
         Dimension d;
-        d.name = item.first.as<std::string>();
+        d.name = io::YamlScalarText(item.first, path, "a parameter name");
         const std::size_t line = item.first.Mark().line + 1;
         s.lines[d.name] = line;
         const slam::ParamInfo* info = NumericParam(d.name, path, line);
@@ -141,7 +142,7 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
                            fmt::format("'{}' needs {{min: LOW, max: HIGH[, type: int|real]}}", d.name));
         }
         for (const auto& field : spec) {
-          const std::string f = field.first.as<std::string>();
+          const std::string f = io::YamlScalarText(field.first, path, "a key of '" + d.name + "'");
           if (f != "min" && f != "max" && f != "type" && f != "step") {
             throw InputError(path, field.first.Mark().line + 1,
                              fmt::format("'{}': unknown key '{}' (allowed: min, max, step, type)", d.name, f));
@@ -151,7 +152,7 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
         d.upper = ReadNumber(spec["max"], path, d.name + ".max");
         if (spec["step"]) d.step = ReadNumber(spec["step"], path, d.name + ".step");
         if (spec["type"]) {
-          const std::string type = spec["type"].as<std::string>();
+          const std::string type = io::YamlScalarText(spec["type"], path, d.name + ".type");
           if (type != "int" && type != "real") {
             throw InputError(path, spec["type"].Mark().line + 1,
                              fmt::format("'{}': type must be int or real, not '{}'", d.name, type));
@@ -167,7 +168,7 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
     } else if (key == "fix") {
       if (!top.second.IsMap()) throw InputError(path, top.second.Mark().line + 1, "'fix' must be a map");
       for (const auto& item : top.second) {
-        const std::string name = item.first.as<std::string>();
+        const std::string name = io::YamlScalarText(item.first, path, "a parameter name");
         s.lines[name] = item.first.Mark().line + 1;
         if (slam::FindParam(name) == nullptr) throw InputError(path, s.lines[name], slam::UnknownParamMessage(name));
         s.fixed[name] = ReadNumber(item.second, path, name);

@@ -147,6 +147,17 @@ fix:
   EXPECT_DOUBLE_EQ(s.fixed.at("loop_match_maximum_variance_coarse"), 0.4);
 }
 
+TEST(SearchSpace, KeysAndTypesThatAreNotTextAreInputErrors) {
+  EXPECT_EQ(ErrorOf("[vary]: 1\n"), WriteTemp("err", "[vary]: 1\n") + ":1: a top-level key must be plain text, not a YAML sequence");
+  EXPECT_EQ(MessageOf("key", "vary:\n  {a: 1}: {min: 1, max: 2}\n"), "a parameter name must be plain text, not a YAML map");
+  EXPECT_EQ(MessageOf("field", "vary:\n  scan_buffer_size: {min: 1, max: 2, [t]: 1}\n"),
+            "a key of 'scan_buffer_size' must be plain text, not a YAML sequence");
+  EXPECT_EQ(MessageOf("type", "vary:\n  scan_buffer_size: {min: 1, max: 2, type: {int: 1}}\n"),
+            "scan_buffer_size.type must be plain text, not a YAML map");
+  EXPECT_EQ(MessageOf("fix", "vary:\n  scan_buffer_size: {min: 1, max: 2}\nfix:\n  [a, b]: 1\n"),
+            "a parameter name must be plain text, not a YAML sequence");
+}
+
 TEST(SearchSpace, RejectsBadSpacesWithReadableMessages) {
   EXPECT_NE(ErrorOf("vary: {}\n").find("search space is empty"), std::string::npos);
   EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 6, max: 2}\n").find("bounds reversed"),

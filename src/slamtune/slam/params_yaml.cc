@@ -9,6 +9,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/text_file.h"
+#include "slamtune/io/yaml_text.h"
 #include "slamtune/slam/ros_node_files.h"
 #include "slamtune/slam/ros_params_section.h"
 
@@ -53,7 +54,7 @@ ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_t
   ParamsYamlReport report;
   const bool have_resolution = map["resolution"].IsDefined();
   for (const auto& entry : map) {
-    const std::string key = entry.first.as<std::string>();
+    const std::string key = io::YamlScalarText(entry.first, source, "a parameter name");
     const YAML::Node& value = entry.second;
     const std::size_t line = LineOf(value);
     if (!value.IsScalar()) {

@@ -79,6 +79,22 @@ TEST(ParamsYaml, RejectsUnknownWrongTypeAndOutOfRange) {
   EXPECT_EQ(p, before);  // nothing applied on error
 }
 
+TEST(ParamsYaml, KeysThatAreNotTextAreInputErrorsAndARepeatedNodeKeyIsRead) {
+  MapperParams p;
+  EXPECT_EQ(ErrorOf(p, "{a: 1}: 2\n"), "test.yaml:1: a parameter name must be plain text, not a YAML map");
+  EXPECT_EQ(ErrorOf(p, "[x]:\n  ros__parameters: {}\n"),
+            "test.yaml:1: a node name must be plain text, not a YAML sequence");
+  // The node key written twice: the entry that holds ros__parameters is read, whichever comes
+  // first (a lookup by key would take the first and find no ros__parameters in it).
+  const std::string twice =
+      "slam_toolbox: 1\n"
+      "slam_toolbox:\n"
+      "  ros__parameters:\n"
+      "    loop_search_maximum_distance: 3.5\n";
+  EXPECT_EQ(ErrorOf(p, twice), "");
+  EXPECT_EQ(p.loop_search_maximum_distance, 3.5);
+}
+
 TEST(ParamsYaml, AConsistentMatcherSetIsTakenInAnyOrder) {
   MapperParams p;
   ApplyParamsYaml(p,

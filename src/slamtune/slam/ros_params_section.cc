@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/yaml_text.h"
 
 namespace slamtune::slam {
 namespace {
@@ -37,25 +38,30 @@ ParamsSection FindParamsSection(const YAML::Node& root, const std::string& sourc
   if (!root.IsMap()) throw InputError(source, LineOf(root), "a parameter file must be a YAML map");
   if (root["ros__parameters"]) return Checked({root["ros__parameters"], true, ""}, source);
 
+  // The sections are kept as iterated, not looked up again by key: a key written twice names two
+  // entries, and a lookup would find the first whether or not it holds ros__parameters.
   std::vector<std::string> nodes;
-  std::string chosen;
-  std::string wildcard;
+  std::vector<YAML::Node> sections;
+  int chosen = -1;
+  int wildcard = -1;
   for (const auto& entry : root) {
     if (!entry.second.IsMap() || !entry.second["ros__parameters"]) continue;
-    const std::string key = entry.first.as<std::string>();
+    const std::string key = io::YamlScalarText(entry.first, source, "a node name");
+    const int index = static_cast<int>(nodes.size());
     nodes.push_back(key);
-    if (NamesSlamToolbox(key) && chosen.empty()) chosen = key;
-    if (key == "/**" && wildcard.empty()) wildcard = key;
+    sections.push_back(entry.second["ros__parameters"]);
+    if (NamesSlamToolbox(key) && chosen < 0) chosen = index;
+    if (key == "/**" && wildcard < 0) wildcard = index;
   }
   if (nodes.empty()) return {root, false, ""};
-  if (chosen.empty()) chosen = wildcard;
-  if (chosen.empty() && nodes.size() == 1) chosen = nodes.front();
-  if (chosen.empty()) {
+  if (chosen < 0) chosen = wildcard;
+  if (chosen < 0 && nodes.size() == 1) chosen = 0;
+  if (chosen < 0) {
     throw InputError(source, LineOf(root),
                      fmt::format("the file has parameters for the nodes {} and none for slam_toolbox",
                                  fmt::join(nodes, ", ")));
   }
-  return Checked({root[chosen]["ros__parameters"], true, chosen}, source);
+  return Checked({sections[chosen], true, nodes[chosen]}, source);
 }
 
 }  // namespace slamtune::slam

@@ -1,0 +1,16 @@
+// Mapper parameter YAML, slam_toolbox ROS 2 files and flat slam_karto files (slam/params_yaml.h).
+#include <string>
+
+#include "fuzz_files.h"
+#include "slamtune/common/error.h"
+#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params_yaml.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  slamtune::slam::MapperParams params;
+  try {
+    slamtune::slam::ApplyParamsYaml(params, std::string(slamtune::fuzz::AsText(data, size)), "fuzz.yaml");
+  } catch (const slamtune::InputError&) {
+  }
+  return 0;
+}
