@@ -31,9 +31,13 @@ if [[ ! -d "$corpus_root/$target" ]]; then
   echo "fuzz.sh: unknown target '$target'; targets: $(list_targets | tr '\n' ' ')" >&2
   exit 2
 fi
+# What the build needs, and Debian's clang for libFuzzer.
+bash scripts/install-deps.sh >/dev/null
 if ! command -v clang++ >/dev/null; then
-  echo "fuzz.sh: clang++ not found (Debian: apt-get install clang)" >&2
-  exit 2
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends clang >/dev/null
 fi
 
 jobs="${FUZZ_BUILD_JOBS:-2}"

@@ -9,6 +9,7 @@
 # is clean. Tests that need the shared datasets skip themselves when those are absent.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh >/dev/null
 
 jobs="${SANITIZE_BUILD_JOBS:-2}"
 build=build-asan
