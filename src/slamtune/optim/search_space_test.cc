@@ -14,8 +14,10 @@
 namespace slamtune::optim {
 namespace {
 
+// One file per test and name: ctest runs the tests of this file in parallel processes.
 std::string WriteTemp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("slamtune_space_" + name + ".yaml");
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const auto path = std::filesystem::temp_directory_path() / ("slamtune_space_" + test + "_" + name + ".yaml");
   std::ofstream(path) << text;
   return path.string();
 }
