@@ -12,15 +12,6 @@
 namespace slamtune::optim {
 namespace {
 
-bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
-  bool strictly = false;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (a[k] > b[k]) return false;
-    if (a[k] < b[k]) strictly = true;
-  }
-  return strictly;
-}
-
 // Sum over objectives of (f - min) / (max - min) over the given records (zero ranges -> 0).
 std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records, const std::vector<std::size_t>& among,
                                    const ObjectiveSet& objectives) {
@@ -71,43 +62,42 @@ Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& populati
   return best;
 }
 
-std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
-  const auto ok = OkIndices(records);
-  std::vector<std::vector<double>> scores(records.size());
-  for (std::size_t i : ok) scores[i] = objectives.Score(records[i]);
+bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
+  bool strictly = false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k] > b[k]) return false;
+    if (a[k] < b[k]) strictly = true;
+  }
+  return strictly;
+}
+
+std::vector<std::size_t> NonDominatedIndices(const std::vector<std::vector<double>>& f) {
   std::vector<std::size_t> front;
-  for (std::size_t i : ok) {
+  for (std::size_t i = 0; i < f.size(); ++i) {
     bool dominated = false;
-    for (std::size_t j : ok) {
-      if (j != i && Dominates(scores[j], scores[i])) {
-        dominated = true;
-        break;
-      }
-    }
+    for (std::size_t j = 0; j < f.size() && !dominated; ++j) dominated = j != i && Dominates(f[j], f[i]);
     if (!dominated) front.push_back(i);
   }
   return front;
 }
 
-std::size_t Knee(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
-  const auto front = NonDominated(records, objectives);
+std::size_t KneeIndex(const std::vector<std::vector<double>>& f) {
+  const auto front = NonDominatedIndices(f);
   SLAMTUNE_CHECK(!front.empty());
-  const std::size_t m = objectives.size();
+  const std::size_t m = f[front.front()].size();
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
   for (std::size_t i : front) {
-    const auto f = objectives.Score(records[i]);
     for (std::size_t k = 0; k < m; ++k) {
-      lo[k] = std::min(lo[k], f[k]);
-      hi[k] = std::max(hi[k], f[k]);
+      lo[k] = std::min(lo[k], f[i][k]);
+      hi[k] = std::max(hi[k], f[i][k]);
     }
   }
   std::size_t best = front.front();
   double best_d = std::numeric_limits<double>::infinity();
   for (std::size_t i : front) {
-    const auto f = objectives.Score(records[i]);
     double d = 0.0;
     for (std::size_t k = 0; k < m; ++k) {
-      const double z = hi[k] > lo[k] ? (f[k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+      const double z = hi[k] > lo[k] ? (f[i][k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
       d += z * z;
     }
     if (d < best_d) {
@@ -116,6 +106,23 @@ std::size_t Knee(const std::vector<EvaluationRecord>& records, const ObjectiveSe
     }
   }
   return best;
+}
+
+std::vector<std::size_t> NonDominated(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
+  const auto ok = OkIndices(records);
+  std::vector<std::vector<double>> scores;
+  for (std::size_t i : ok) scores.push_back(objectives.Score(records[i]));
+  std::vector<std::size_t> front;
+  for (std::size_t k : NonDominatedIndices(scores)) front.push_back(ok[k]);
+  return front;
+}
+
+std::size_t Knee(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {
+  const auto ok = OkIndices(records);
+  SLAMTUNE_CHECK(!ok.empty());
+  std::vector<std::vector<double>> scores;
+  for (std::size_t i : ok) scores.push_back(objectives.Score(records[i]));
+  return ok[KneeIndex(scores)];
 }
 
 std::size_t Worst(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives) {

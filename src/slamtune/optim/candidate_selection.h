@@ -25,6 +25,14 @@ struct Recommendation {
   int share = 0;          // individuals with the same parameter set
 };
 
+// Pareto helpers on objective vectors (all minimised), shared with the settling rule.
+bool Dominates(const std::vector<double>& a, const std::vector<double>& b);
+// Indices of the non-dominated vectors of `f`, in input order.
+std::vector<std::size_t> NonDominatedIndices(const std::vector<std::vector<double>>& f);
+// Index into `f` of the non-dominated vector closest to the ideal point once each objective is
+// normalised by the front's range. `f` must not be empty.
+std::size_t KneeIndex(const std::vector<std::vector<double>>& f);
+
 // Every function below ranks records by `objectives` (objective_set.h).
 
 // `population`: the final population's records (one per individual). Must not be empty.

@@ -8,18 +8,10 @@
 #include <map>
 
 #include "slamtune/common/error.h"
+#include "slamtune/optim/candidate_selection.h"
 
 namespace slamtune::optim {
 namespace {
-
-bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
-  bool strictly = false;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (a[k] > b[k]) return false;
-    if (a[k] < b[k]) strictly = true;
-  }
-  return strictly;
-}
 
 // The key of the parameter set most individuals share; ties to the first.
 std::string MajorityKey(const SearchSpace& space, const std::vector<std::vector<double>>& x) {
@@ -37,37 +29,9 @@ std::string MajorityKey(const SearchSpace& space, const std::vector<std::vector<
   return best;
 }
 
-// The key of the front member closest to the ideal point, objectives normalised by the front's range.
 std::string KneeKey(const SearchSpace& space, const std::vector<std::vector<double>>& x,
                     const std::vector<std::vector<double>>& f) {
-  std::vector<std::size_t> front;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    bool dominated = false;
-    for (std::size_t j = 0; j < f.size() && !dominated; ++j) dominated = j != i && Dominates(f[j], f[i]);
-    if (!dominated) front.push_back(i);
-  }
-  if (front.empty()) return "";
-  const std::size_t m = f[front.front()].size();
-  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
-  for (std::size_t i : front)
-    for (std::size_t k = 0; k < m; ++k) {
-      lo[k] = std::min(lo[k], f[i][k]);
-      hi[k] = std::max(hi[k], f[i][k]);
-    }
-  std::size_t best = front.front();
-  double best_d = std::numeric_limits<double>::infinity();
-  for (std::size_t i : front) {
-    double d = 0.0;
-    for (std::size_t k = 0; k < m; ++k) {
-      const double z = hi[k] > lo[k] ? (f[i][k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
-      d += z * z;
-    }
-    if (d < best_d) {
-      best_d = d;
-      best = i;
-    }
-  }
-  return SearchSpace::Key(space.Assign(x[best]));
+  return SearchSpace::Key(space.Assign(x[KneeIndex(f)]));
 }
 
 }  // namespace
@@ -81,11 +45,8 @@ void SettlingOptions::Validate() const {
 
 std::vector<std::vector<double>> NonDominatedVectors(const std::vector<std::vector<double>>& f) {
   std::vector<std::vector<double>> out;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    bool dominated = false;
-    for (std::size_t j = 0; j < f.size() && !dominated; ++j) dominated = j != i && Dominates(f[j], f[i]);
-    if (!dominated && std::find(out.begin(), out.end(), f[i]) == out.end()) out.push_back(f[i]);
-  }
+  for (std::size_t i : NonDominatedIndices(f))
+    if (std::find(out.begin(), out.end(), f[i]) == out.end()) out.push_back(f[i]);
   return out;
 }
 
