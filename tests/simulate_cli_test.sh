@@ -53,6 +53,12 @@ cmp -s <(grep -v '^#' "$tmp/u/office-jump.clf") <(grep -v '^#' "$tmp/a/office.cl
   fail "a jump and its opposite did not give the plain office log"
 "$bin" simulate --seed 3 --fault spin,45,0.1,60 --fault reverse,100,1 --out "$tmp/s" > "$tmp/s.txt" || fail "two --fault"
 [[ $(grep -c '^# planted odometry fault' "$tmp/s/office.clf") == 2 ]] || fail "two faults not both in the header"
+# --without-world-faults: the fault world's healthy twin is the plain world's log.
+"$bin" simulate --world office-jump --seed 3 --without-world-faults --out "$tmp/t" > "$tmp/t.txt" ||
+  fail "--without-world-faults"
+cmp -s <(grep -v '^#' "$tmp/t/office-jump.clf") <(grep -v '^#' "$tmp/a/office.clf") ||
+  fail "office-jump without its fault is not the plain office log"
+if grep -q 'planted' "$tmp/t.txt"; then fail "--without-world-faults still names a fault"; fi
 
 # Bad input: non-zero exit, nothing claimed.
 expect_failure() {

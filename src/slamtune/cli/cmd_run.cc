@@ -31,6 +31,7 @@
 #include "slamtune/metrics/gt_error.h"
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/metrics/relation_match.h"
+#include "slamtune/report/front_end_json.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/occupancy_grid.h"
@@ -84,33 +85,14 @@ void WriteLoopClosuresCsv(const std::string& path, const slam::RunSummary& s) {
 // One row per sequential match (slam/front_end_evidence.h), `suspect` by the run's median response.
 void WriteFrontEndCsv(const std::string& path, const std::vector<slam::SequentialMatchStep>& steps,
                       const slam::FrontEndEvidence& evidence) {
-  std::string csv = "log_index,time,response,dx,dy,dtheta,sigma_xy,at_window_edge,at_heading_edge,suspect\n";
+  std::string csv = "log_index,time,response,dx,dy,x,y,dtheta,sigma_xy,sigma_minor,at_window_edge,at_heading_edge,suspect,degenerate\n";
   for (const slam::SequentialMatchStep& s : steps) {
-    csv += fmt::format("{},{:.6f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", s.log_index, s.time, s.response, s.dx,
-                       s.dy, s.dtheta, s.sigma_xy, s.at_window_edge ? 1 : 0, s.at_heading_edge ? 1 : 0,
-                       slam::IsSuspect(s, evidence.median_response, {}) ? 1 : 0);
+    csv += fmt::format("{},{:.6f},{:.6g},{:.6g},{:.6g},{:.4f},{:.4f},{:.6g},{:.6g},{:.6g},{},{},{},{}\n", s.log_index,
+                       s.time, s.response, s.dx, s.dy, s.x, s.y, s.dtheta, s.sigma_xy, s.sigma_minor,
+                       s.at_window_edge ? 1 : 0, s.at_heading_edge ? 1 : 0,
+                       slam::IsSuspect(s, evidence.median_response, {}) ? 1 : 0, slam::IsDegenerate(s, {}) ? 1 : 0);
   }
   WriteFileAtomically(path, csv);
-}
-
-nlohmann::json FrontEndJson(const slam::FrontEndEvidence& e) {
-  nlohmann::json stretches = nlohmann::json::array();
-  for (const slam::SuspectStretch& s : e.stretches) {
-    stretches.push_back({{"first_log_index", s.first_log_index},
-                         {"last_log_index", s.last_log_index},
-                         {"first_time", s.first_time},
-                         {"last_time", s.last_time},
-                         {"suspects", s.suspects},
-                         {"at_edge", s.at_edge},
-                         {"low_response", s.low_response},
-                         {"min_response", s.min_response}});
-  }
-  return {{"sequential_matches", e.matches},
-          {"median_response", e.median_response},
-          {"at_edge", e.at_edge},
-          {"low_response", e.low_response},
-          {"points_at_front_end", e.points_at_front_end()},
-          {"suspect_stretches", stretches}};
 }
 
 slam::MapperParams ResolveParams(const RunArgs& args) {
@@ -251,7 +233,7 @@ int Run(const RunArgs& args) {
     gt_line = fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e.trans_mean_m,
                           e.trans_std_m, e.rot_mean_deg, e.rot_std_deg, e.relations_used);
   }
-  run["front_end"] = FrontEndJson(front_end);
+  run["front_end"] = report::FrontEndEvidenceJson(front_end);
   run["peak_memory_mb"] = PeakMemoryMb();
   WriteFileAtomically(file("run.json"), run.dump(2) + "\n");
 

@@ -24,6 +24,7 @@ struct SimulateState {
   bool list = false;
   std::vector<double> laser_offset;  // X,Y,YAW when given
   std::vector<std::string> faults;   // --fault KIND,START_M,LENGTH_M[,MAGNITUDE], in order
+  bool without_world_faults = false;  // --without-world-faults
 };
 
 int ListWorlds() {
@@ -40,6 +41,7 @@ int Run(const SimulateState& state) {
   if (!state.laser_offset.empty()) {
     options.laser_offset = Pose2{state.laser_offset[0], state.laser_offset[1], state.laser_offset[2]};
   }
+  options.plant_world_faults = !state.without_world_faults;
   for (const std::string& fault : state.faults) options.odometry.faults.push_back(sim::ParseOdometryFault(fault));
   const auto start = std::chrono::steady_clock::now();
   const sim::Simulation simulation = sim::Simulate(options);
@@ -92,6 +94,10 @@ std::function<int()> Setup(CLI::App& app) {
                  "Plant an odometry fault, KIND,START_M,LENGTH_M[,MAGNITUDE] (repeatable): spin (MAGNITUDE deg "
                  "reported, not turned), jump (MAGNITUDE m reported, not travelled) or reverse (travel reported "
                  "backwards), over LENGTH_M of true travel from START_M along the route");
+  app.add_flag("--without-world-faults", state->without_world_faults,
+               "Leave out the world's planted faults (e.g. corridor-long's odometry scale error): the healthy "
+               "twin of a fault world, for the error it would have without its failure")
+      ;
   app.add_option("--relation-stride", o.relations.stride, "Scans between relation samples")->capture_default_str();
   app.add_option("--relation-gap", o.relations.local_gap_s, "Time between the scans of a local relation (s)")
       ->capture_default_str();

@@ -6,8 +6,8 @@ namespace slamtune::optim {
 
 std::string DefaultSpaceChoice::Reason() const {
   if (kind == DefaultSpaceKind::kFrontEnd) {
-    return "search space: front-end (sequential matching, node spacing and loop closure), because the base "
-           "configuration's map breaks before loop closure can help — " +
+    return "search space: front-end (sequential matching, node spacing and loop closure), because a run of the "
+           "base configuration shows its front end failing where no loop closure can mend it — " +
            evidence.Summary();
   }
   return "search space: r and g around the base configuration (" + evidence.Summary() + ")";

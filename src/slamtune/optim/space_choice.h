@@ -1,6 +1,7 @@
 // The search space `slamtune optimize` takes when the user names none: r and g around the base
 // configuration (loop closure, the seed paper's question) — unless the base configuration's own
-// run shows its front end losing its place (slam/front_end_evidence.h). A map that breaks before
+// run shows its front end losing its place, or following the odometry along tens of metres of
+// featureless corridor (slam/front_end_evidence.h). A map that breaks before
 // any loop closes cannot be mended by loop-closure parameters, so the tuner then searches the
 // front-end space (SearchSpace::FrontEnd) on its own: a user with a broken map should not need
 // to know which parameters to add. A user who gives --space keeps that space.

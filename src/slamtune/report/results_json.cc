@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "slamtune/report/front_end_json.h"
+
 namespace slamtune::report {
 
 nlohmann::json CandidateJson(const optim::Candidate& candidate) {
@@ -51,17 +53,9 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   j["input"] = result.log_input;
   j["relations"] = result.relations_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.relations_path);
   if (result.base_front_end) {
-    const slam::FrontEndEvidence& e = result.base_front_end->evidence;
-    nlohmann::json stretches = nlohmann::json::array();
-    for (const slam::SuspectStretch& s : e.stretches) {
-      stretches.push_back({{"first_log_index", s.first_log_index}, {"last_log_index", s.last_log_index},
-                           {"first_time", s.first_time},           {"last_time", s.last_time},
-                           {"at_edge", s.at_edge},                 {"low_response", s.low_response},
-                           {"min_response", s.min_response},       {"breaks", s.breaks}});
-    }
-    j["base_front_end"] = {{"choice", result.base_front_end->choice}, {"sequential_matches", e.matches},
-                           {"median_response", e.median_response},    {"breaks", e.breaks},
-                           {"stretches", stretches}};
+    nlohmann::json front_end = FrontEndEvidenceJson(result.base_front_end->evidence);
+    front_end["choice"] = result.base_front_end->choice;
+    j["base_front_end"] = front_end;
   }
   if (correlation) {
     nlohmann::json c = {{"parameter_sets", correlation->parameter_sets}};

@@ -10,9 +10,11 @@
 //   office-jump    office, with a 1 m translation jump 20 m along the route (leaving the first
 //                  room): more than six times the +-0.15 m sequential window; the scans after
 //                  it are placed too far on and the middle corridor's walls come out doubled.
-//   corridor-long  a 64 x 12 m corridor loop whose south corridor has bare walls: along its axis
-//                  scan matching is degenerate and the pose follows the odometry, which there
-//                  reports 2 m more travel than driven (a scale error of 5 % over 40 m).
+//   corridor-long  a 64 x 12 m corridor loop whose south corridor has bare walls from x = 16 m to
+//                  48 m: along them scan matching is degenerate and the pose follows the odometry,
+//                  which there reports 1.5 m more travel than driven (a scale error of 5 % over
+//                  30 m); the pillars at both ends show the map doubled. Without the fault
+//                  (simulate --without-world-faults) the same corridor maps within a few cm.
 #include "slamtune/common/karto_math.h"
 #include "slamtune/sim/route_builder.h"
 #include "slamtune/sim/world_catalog.h"
@@ -46,9 +48,10 @@ World MakeOfficeJumpWorld() {
 World MakeCorridorLongWorld() {
   using V = Eigen::Vector2d;
   WallBuilder walls;
-  // Outer wall, counter-clockwise; the south wall (y = 0) and the block's south face (y = 2.5)
-  // are bare, every other wall has niches every few metres (negative depth: away from the corridor).
-  walls.Wall(V(0, 0), V(64, 0));
+  // Outer wall, counter-clockwise; walls have niches every few metres (negative depth: away from
+  // the corridor), except the south corridor's two walls (y = 0 and the block's face at y = 2.5):
+  // pillars jut 0.4 m into it near both ends, and between x = 16 and x = 48 m they are bare.
+  walls.WallWithOpenings(V(0, 0), V(64, 0), {{6.0, 1.2, 0.4}, {12.0, 1.2, 0.4}, {52.0, 1.2, 0.4}, {58.0, 1.2, 0.4}});
   walls.WallWithOpenings(V(64, 0), V(64, 12), {{4.0, 1.2, -0.4}, {8.5, 1.2, -0.4}});
   std::vector<WallBuilder::Opening> north;
   for (double at = 5.0; at < 62.0; at += 7.0) north.push_back({at, 1.2, -0.4});
@@ -60,7 +63,7 @@ World MakeCorridorLongWorld() {
   for (double at = 6.0; at < 58.0; at += 9.0) block_north.push_back({at, 1.0, -0.4});
   walls.WallWithOpenings(V(2.5, 9.5), V(61.5, 9.5), block_north);
   walls.WallWithOpenings(V(61.5, 9.5), V(61.5, 2.5), {{3.0, 1.0, -0.4}});
-  walls.Wall(V(61.5, 2.5), V(2.5, 2.5));
+  walls.WallWithOpenings(V(61.5, 2.5), V(2.5, 2.5), {{6.5, 1.0, 0.4}, {50.5, 1.0, 0.4}});
 
   RouteBuilder route(V(4, 1.25));
   route.To(62.75, 1.25).To(62.75, 10.75).To(1.25, 10.75).To(1.25, 1.25);
@@ -70,7 +73,7 @@ World MakeCorridorLongWorld() {
   world.walls = walls.Take();
   world.waypoints = route.Take();
   world.turn_radius = 0.6;
-  world.odometry_faults = {Fault(OdometryFaultKind::kJump, 10.0, 40.0, 2.0)};
+  world.odometry_faults = {Fault(OdometryFaultKind::kJump, 13.0, 30.0, 1.5)};
   return world;
 }
 

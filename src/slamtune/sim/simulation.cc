@@ -100,7 +100,9 @@ Simulation Simulate(const SimulationOptions& options) {
   }
   Random laser_random(StreamSeed(options.seed, kLaserStream));
   sim.odometry = options.odometry;
-  for (const OdometryFault& fault : sim.world.odometry_faults) sim.odometry.faults.push_back(fault);
+  if (options.plant_world_faults) {
+    for (const OdometryFault& fault : sim.world.odometry_faults) sim.odometry.faults.push_back(fault);
+  }
   sim.odometry.Validate();
   OdometryModel odometry(route.PoseAt(0.0), sim.odometry, StreamSeed(options.seed, kOdometryStream));
 

@@ -23,7 +23,7 @@
 // 181, or 361), and ROBOTLASER1 records, which state their geometry, for any other laser.
 //
 // Faults: the world's planted odometry faults (World::odometry_faults) are added after those of
-// `odometry.faults`; both are located by true distance travelled.
+// `odometry.faults` unless plant_world_faults is false; both are located by true distance travelled.
 //
 // Determinism: everything follows from `seed`; laser noise and odometry noise use separate
 // streams (random.h), so e.g. changing the beam count leaves the odometry unchanged.
@@ -60,6 +60,9 @@ struct SimulationOptions {
   double start_time_s = 100.0;     // s: timestamp of the first record, in [0, 1e9]
   Pose2 laser_offset;              // laser in the robot frame (m, m, rad): |x|, |y| <= 5, |theta| <= pi
   std::size_t max_scans = 200000;  // refuse settings that would produce more scans than this
+  // false: leave out the world's planted faults, e.g. to measure the error a fault world would
+  // have without its failure (its healthy twin); faults in `odometry.faults` still apply.
+  bool plant_world_faults = true;
 
   // Throws InputError naming the field, its value and the rule (checks the nested options too).
   void Validate() const;

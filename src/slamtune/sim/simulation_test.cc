@@ -221,6 +221,26 @@ TEST(Simulate, PlantedFaultActsWhereAndOnlyWhereConfigured) {
   EXPECT_THAT(faulty.summary.Report(), testing::HasSubstr("planted odometry fault: jump at 20 m over 0.1 m"));
 }
 
+// The healthy twin of a fault world: the world's own faults left out, the user's kept.
+TEST(Simulate, WithoutWorldFaultsTheFaultWorldDrivesItsRouteWithPlainOdometry) {
+  SimulationOptions options;
+  options.world = "office-jump";
+  options.plant_world_faults = false;
+  const Simulation twin = Simulate(options);
+  const Simulation& plain = Cached("office");
+  EXPECT_TRUE(twin.odometry.faults.empty());
+  EXPECT_TRUE(twin.summary.odometry_faults.empty());
+  ASSERT_EQ(twin.log.odometry.size(), plain.log.odometry.size());
+  EXPECT_EQ(twin.log.odometry.back().pose, plain.log.odometry.back().pose);
+  OdometryFault spin;
+  spin.kind = OdometryFaultKind::kSpin;
+  spin.start_m = 30.0;
+  spin.length_m = 0.1;
+  spin.magnitude = 0.5;
+  options.odometry.faults = {spin};
+  EXPECT_EQ(Simulate(options).odometry.faults.size(), 1u);
+}
+
 TEST(Simulate, FaultsOfTheOptionsComeBeforeTheWorldsAndAreDeterministic) {
   SimulationOptions options;
   options.world = "office-slip";

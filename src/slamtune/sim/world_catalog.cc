@@ -27,8 +27,8 @@ constexpr Entry kWorlds[] = {
     {"office-jump", "office with a 1 m odometry jump at 20 m, leaving the first room (beyond the +-0.15 m "
      "sequential window)",
      &MakeOfficeJumpWorld},
-    {"corridor-long", "64 x 12 m corridor loop whose 60 m south corridor has bare walls; odometry reports 5 % "
-     "too much travel along it",
+    {"corridor-long", "64 x 12 m corridor loop whose south corridor has 32 m of bare walls; odometry reports 5 % "
+     "too much travel along them",
      &MakeCorridorLongWorld},
 };
 

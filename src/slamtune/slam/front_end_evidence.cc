@@ -16,11 +16,18 @@ SequentialMatchStep StepOf(const ProcessResult& result, int log_index, double ti
   s.log_index = log_index;
   s.time = time;
   s.response = result.sequential_response;
+  s.x = result.sequential_mean.x;
+  s.y = result.sequential_mean.y;
   s.dx = result.sequential_mean.x - result.sequential_guess.x;
   s.dy = result.sequential_mean.y - result.sequential_guess.y;
   s.dtheta = NormalizeAngle(result.sequential_mean.theta - result.sequential_guess.theta);
-  const double var = std::max(result.sequential_covariance(0, 0), result.sequential_covariance(1, 1));
-  s.sigma_xy = std::sqrt(std::max(0.0, var));
+  // Principal standard deviations of the positional covariance: the larger one is the match's
+  // positional uncertainty, their ratio says whether the scan constrained both directions.
+  const double a = result.sequential_covariance(0, 0), b = result.sequential_covariance(0, 1);
+  const double d = result.sequential_covariance(1, 1);
+  const double mid = 0.5 * (a + d), spread = std::hypot(0.5 * (a - d), b);
+  s.sigma_xy = std::sqrt(std::max(0.0, mid + spread));
+  s.sigma_minor = std::sqrt(std::max(0.0, mid - spread));
   // The search offsets run to +-D/2 in steps of rho (§4.2); the mean of the best poses of a
   // match that hit the border lies within a step or so of it.
   const double half = 0.5 * params.correlation_search_space_dimension;
@@ -51,6 +58,51 @@ void FrontEndEvidenceOptions::Validate() const {
     throw InputError(
         fmt::format("FrontEndEvidenceOptions.recovered_fraction = {}: must be in (0, 1)", recovered_fraction));
   }
+  if (!(degenerate_anisotropy > 1.0 && std::isfinite(degenerate_anisotropy))) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.degenerate_anisotropy = {}: must be a number > 1",
+                                 degenerate_anisotropy));
+  }
+  if (!(min_degenerate_length_m > 0.0 && std::isfinite(min_degenerate_length_m))) {
+    throw InputError(fmt::format("FrontEndEvidenceOptions.min_degenerate_length_m = {}: must be a number > 0",
+                                 min_degenerate_length_m));
+  }
+}
+
+bool IsDegenerate(const SequentialMatchStep& step, const FrontEndEvidenceOptions& options) {
+  return step.sigma_xy > 0.0 && step.sigma_xy >= options.degenerate_anisotropy * step.sigma_minor;
+}
+
+std::vector<DegenerateStretch> FindDegenerateStretches(const std::vector<SequentialMatchStep>& steps,
+                                                       const FrontEndEvidenceOptions& options) {
+  std::vector<DegenerateStretch> out;
+  DegenerateStretch current;
+  std::size_t first = 0, last = 0;  // indices of the current stretch's first and last degenerate step
+  auto close = [&] {
+    if (current.matches == 0) return;
+    for (std::size_t k = first + 1; k <= last; ++k) {
+      current.length_m += std::hypot(steps[k].x - steps[k - 1].x, steps[k].y - steps[k - 1].y);
+    }
+    if (current.length_m >= options.min_degenerate_length_m) out.push_back(current);
+    current = {};
+  };
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const SequentialMatchStep& s = steps[i];
+    if (!IsDegenerate(s, options)) continue;
+    if (current.matches > 0 && i - last > static_cast<std::size_t>(options.max_gap) + 1) close();
+    if (current.matches == 0) {
+      first = i;
+      current.first_log_index = s.log_index;
+      current.first_time = s.time;
+    }
+    last = i;
+    current.last_log_index = s.log_index;
+    current.last_time = s.time;
+    ++current.matches;
+    const double ratio = s.sigma_minor > 0.0 ? s.sigma_xy / s.sigma_minor : HUGE_VAL;
+    current.max_anisotropy = std::max(current.max_anisotropy, ratio);
+  }
+  close();
+  return out;
 }
 
 bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options) {
@@ -114,20 +166,14 @@ FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, c
     last_suspect = static_cast<int>(i);
   }
   if (current.suspects > 0) close();
+  for (const SequentialMatchStep& s : steps) out.degenerate += IsDegenerate(s, options) ? 1 : 0;
+  out.degenerate_stretches = FindDegenerateStretches(steps, options);
   return out;
 }
 
-std::string FrontEndEvidence::Summary() const {
-  if (matches == 0) return "front end: no sequential match was made";
-  if (!points_at_front_end()) {
-    return fmt::format("front end: no sign of a broken sequential match ({} matches, median response {:.2f}; {} "
-                       "at the search's edge, {} with a collapsed response, {} minor stretch{})",
-                       matches, median_response, at_edge, low_response, stretches.size(),
-                       stretches.size() == 1 ? "" : "es");
-  }
-  std::vector<const SuspectStretch*> strong;
-  for (const SuspectStretch& s : stretches)
-    if (s.strong()) strong.push_back(&s);
+namespace {
+
+std::string BreakSummary(const std::vector<const SuspectStretch*>& strong) {
   std::string parts;
   const std::size_t shown = std::min<std::size_t>(strong.size(), 3);
   for (std::size_t k = 0; k < shown; ++k) {
@@ -145,5 +191,39 @@ std::string FrontEndEvidence::Summary() const {
   return fmt::format("front end: {} stretch{} where sequential matching lost its place ({})", strong.size(),
                      strong.size() == 1 ? "" : "es", parts);
 }
+
+std::string DegenerateSummary(const std::vector<DegenerateStretch>& stretches) {
+  std::string parts;
+  const std::size_t shown = std::min<std::size_t>(stretches.size(), 3);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const DegenerateStretch& s = stretches[k];
+    parts += fmt::format("{}scans {}-{}, {:.1f}-{:.1f} s into the log: {:.0f} m", k ? "; " : "", s.first_log_index,
+                         s.last_log_index, s.first_time, s.last_time, s.length_m);
+  }
+  if (stretches.size() > shown) parts += fmt::format("; {} more", stretches.size() - shown);
+  return fmt::format("front end: {} stretch{} where the scans saw structure in one direction only and the map "
+                     "follows the odometry along it ({})",
+                     stretches.size(), stretches.size() == 1 ? "" : "es", parts);
+}
+
+}  // namespace
+
+std::string FrontEndEvidence::Summary() const {
+  if (matches == 0) return "front end: no sequential match was made";
+  if (!points_at_front_end()) {
+    return fmt::format("front end: no sign of a broken sequential match ({} matches, median response {:.2f}; {} "
+                       "at the search's edge, {} with a collapsed response, {} minor stretch{})",
+                       matches, median_response, at_edge, low_response, stretches.size(),
+                       stretches.size() == 1 ? "" : "es");
+  }
+  std::vector<const SuspectStretch*> strong;
+  for (const SuspectStretch& s : stretches)
+    if (s.strong()) strong.push_back(&s);
+  std::string lines;
+  if (!strong.empty()) lines = BreakSummary(strong);
+  if (!degenerate_stretches.empty()) lines += (lines.empty() ? "" : "\n") + DegenerateSummary(degenerate_stretches);
+  return lines;
+}
+
 
 }  // namespace slamtune::slam

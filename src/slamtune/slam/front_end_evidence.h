@@ -19,8 +19,18 @@
 // back at least half of its own: of the heading when it hit the heading range's edge — a
 // heading error dominates, and the position corrections after it follow from it — else of the
 // position) — the node stays where the failed search left it, and the map breaks there. A
-// stretch holding a break is strong evidence. Calibrated on the built-in worlds with planted
-// breaks and the four public logs (docs/metrics.md).
+// stretch holding a break is strong evidence.
+//
+// A front end can also fail without any such event: where the scans see structure in one
+// direction only (a long corridor with bare walls), the match cannot tell motion along it: the
+// poses along the corridor fit equally well, the distance penalty favours the search's centre
+// (§4.5), so the node keeps the odometry's guess and the odometry's error along the corridor goes
+// into the map unchecked. Karto's own covariance says so: its positional ellipse is long along
+// the corridor and thin across (§4.6). A degenerate match is
+// one whose principal standard deviations differ by a large factor; a long run of them — tens
+// of metres of travel — is a degenerate stretch, the second kind of strong evidence. Short runs
+// are common in working runs (a few metres of plain corridor between doors). Calibrated on the
+// built-in worlds with planted failures and the four public logs (docs/metrics.md).
 #pragma once
 
 #include <string>
@@ -40,7 +50,9 @@ struct SequentialMatchStep {
   double dx = 0.0;          // m, match - guess, world frame (the search window's axes)
   double dy = 0.0;          // m
   double dtheta = 0.0;      // rad, normalised
-  double sigma_xy = 0.0;    // m, sqrt of the larger positional variance of the match
+  double sigma_xy = 0.0;    // m, larger principal standard deviation of the match's position
+  double sigma_minor = 0.0; // m, smaller one: sigma_xy / sigma_minor >> 1 where the scan saw one direction only
+  double x = 0.0, y = 0.0;  // m, the matched position in the map's frame (where to mark the step on a map)
   bool at_window_edge = false;   // |dx| or |dy| reached the window's half side
   bool at_heading_edge = false;  // |dtheta| reached the coarse angular range
 };
@@ -64,6 +76,13 @@ struct FrontEndEvidenceOptions {
   int recovery_matches = 3;
   // They undo it when their summed correction leaves less than this fraction of its own; in (0, 1).
   double recovered_fraction = 0.5;
+  // A match is degenerate when its larger principal standard deviation is at least this many
+  // times its smaller one; > 1. Matches in rooms and junctions stay below 3; plain corridor, 5-8.
+  double degenerate_anisotropy = 5.0;
+  // Degenerate matches (gaps of at most max_gap other matches allowed) over at least this much
+  // travel form a degenerate stretch; m, > 0. The public logs' longest runs at slam_karto's
+  // defaults are 3-29 m, the corridor-long world's 44-47 m (docs/metrics.md).
+  double min_degenerate_length_m = 35.0;
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
@@ -80,6 +99,15 @@ struct SuspectStretch {
   bool strong() const { return breaks > 0; }
 };
 
+// Travel over which the scans constrained one direction only (see the file comment).
+struct DegenerateStretch {
+  int first_log_index = -1, last_log_index = -1;  // log scan indices of its first and last match
+  double first_time = 0.0, last_time = 0.0;        // s since the log's first scan
+  int matches = 0;              // degenerate matches in it
+  double length_m = 0.0;        // travel from its first to its last match, along the matched positions
+  double max_anisotropy = 0.0;  // the largest sigma ratio in it
+};
+
 struct FrontEndEvidence {
   int matches = 0;              // sequential matches made
   double median_response = 0.0;
@@ -87,9 +115,12 @@ struct FrontEndEvidence {
   int low_response = 0;         // matches below low_response_fraction x median
   int breaks = 0;               // matches that broke the map (see above)
   std::vector<SuspectStretch> stretches;  // in log order
+  int degenerate = 0;           // degenerate matches (anisotropy at or above the option)
+  std::vector<DegenerateStretch> degenerate_stretches;  // at least min_degenerate_length_m long, in log order
 
-  // True when the run shows a break: the front end lost its place there.
-  bool points_at_front_end() const { return breaks > 0; }
+  // True when the run shows a break or a degenerate stretch: the front end lost its place there,
+  // or never had one.
+  bool points_at_front_end() const { return breaks > 0 || !degenerate_stretches.empty(); }
   // One line for the terminal, e.g. "front end: 2 suspect stretches (scans 812-840 at
   // 162.4-168.0 s: 5 matches at the search window's edge; ...)" or "front end: no sign of a
   // broken sequential match (1469 matches, median response 0.71)".
@@ -100,6 +131,13 @@ FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, c
 
 // True when a step is suspect given the run's median response.
 bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options);
+
+// True when a step is degenerate: sigma_xy >= degenerate_anisotropy x sigma_minor (and not both 0).
+bool IsDegenerate(const SequentialMatchStep& step, const FrontEndEvidenceOptions& options);
+
+// The degenerate stretches of a run, in log order.
+std::vector<DegenerateStretch> FindDegenerateStretches(const std::vector<SequentialMatchStep>& steps,
+                                                       const FrontEndEvidenceOptions& options);
 
 // True when steps[i] is a break: suspect by both edge and response, and not undone by the
 // recovery_matches steps after it.

@@ -1,5 +1,7 @@
 #include "slamtune/slam/front_end_evidence.h"
 
+#include <cmath>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -46,6 +48,69 @@ TEST(StepOf, JudgesTheMatchAgainstTheWindowAndTheHeadingRange) {
   EXPECT_TRUE(s.at_heading_edge);
   params.correlation_search_space_dimension = 1.2;  // a wider window holds the same correction
   EXPECT_FALSE(StepOf(r, 7, 3.5, params).at_window_edge);
+}
+
+TEST(StepOf, ReadsThePrincipalDeviationsOfTheCovarianceWhateverItsAxes) {
+  MapperParams params;
+  ProcessResult r;
+  r.sequential_response = 0.9;
+  r.sequential_guess = {3.0, 4.0, 0.0};
+  r.sequential_mean = {3.01, 4.0, 0.0};
+  // 0.1 m along the diagonal x = y, 0.01 m across it.
+  const double c = std::sqrt(0.5);
+  Eigen::Matrix2d rotation;
+  rotation << c, -c, c, c;
+  const Eigen::Matrix2d xy = rotation * Eigen::Vector2d(0.01, 0.0001).asDiagonal() * rotation.transpose();
+  r.sequential_covariance = Eigen::Matrix3d::Identity();
+  r.sequential_covariance.topLeftCorner<2, 2>() = xy;
+  const SequentialMatchStep s = StepOf(r, 1, 0.2, params);
+  EXPECT_NEAR(s.sigma_xy, 0.1, 1e-12);
+  EXPECT_NEAR(s.sigma_minor, 0.01, 1e-12);
+  EXPECT_DOUBLE_EQ(s.x, 3.01);
+  EXPECT_DOUBLE_EQ(s.y, 4.0);
+  EXPECT_TRUE(IsDegenerate(s, {}));  // ratio 10 >= 5
+}
+
+// n matches 0.5 m apart along x, each seeing the corridor's walls only (sigma 0.08 m along, 0.01 across).
+std::vector<SequentialMatchStep> Corridor(int n) {
+  std::vector<SequentialMatchStep> steps = Steady(n);
+  for (int i = 0; i < n; ++i) {
+    steps[i].x = 0.5 * i;
+    steps[i].sigma_xy = 0.08;
+    steps[i].sigma_minor = 0.01;
+  }
+  return steps;
+}
+
+TEST(AssessFrontEnd, ALongDegenerateCorridorPointsAtTheFrontEnd) {
+  const FrontEndEvidence e = AssessFrontEnd(Corridor(81));  // 40 m
+  EXPECT_EQ(e.degenerate, 81);
+  ASSERT_EQ(e.degenerate_stretches.size(), 1u);
+  EXPECT_NEAR(e.degenerate_stretches[0].length_m, 40.0, 1e-9);
+  EXPECT_EQ(e.degenerate_stretches[0].first_log_index, 0);
+  EXPECT_EQ(e.degenerate_stretches[0].last_log_index, 800);
+  EXPECT_DOUBLE_EQ(e.degenerate_stretches[0].max_anisotropy, 8.0);
+  EXPECT_EQ(e.breaks, 0);
+  EXPECT_TRUE(e.points_at_front_end());
+  EXPECT_THAT(e.Summary(), HasSubstr("1 stretch where the scans saw structure in one direction only"));
+  EXPECT_THAT(e.Summary(), HasSubstr("scans 0-800, 0.0-40.0 s into the log: 40 m"));
+}
+
+TEST(AssessFrontEnd, AShortDegenerateRunOrAnIsotropicMatchIsNoEvidence) {
+  EXPECT_FALSE(AssessFrontEnd(Corridor(61)).points_at_front_end());  // 30 m < 35 m
+  auto steps = Corridor(81);
+  for (auto& s : steps) s.sigma_minor = 0.02;  // ratio 4 < 5
+  const FrontEndEvidence e = AssessFrontEnd(steps);
+  EXPECT_EQ(e.degenerate, 0);
+  EXPECT_FALSE(e.points_at_front_end());
+}
+
+TEST(AssessFrontEnd, AFewOrdinaryMatchesDoNotSplitADegenerateStretchButManyDo) {
+  auto steps = Corridor(101);  // 50 m
+  for (int i = 50; i < 53; ++i) steps[i].sigma_minor = 0.08;  // 3 ordinary matches: within max_gap
+  ASSERT_EQ(AssessFrontEnd(steps).degenerate_stretches.size(), 1u);
+  for (int i = 45; i < 58; ++i) steps[i].sigma_minor = 0.08;  // a junction: 2 x ~22 m, each too short
+  EXPECT_TRUE(AssessFrontEnd(steps).degenerate_stretches.empty());
 }
 
 TEST(AssessFrontEnd, ASteadyRunShowsNothing) {
@@ -133,6 +198,12 @@ TEST(AssessFrontEnd, RefusesBadOptionsAndHandlesNoMatches) {
   EXPECT_THROW(bad.Validate(), InputError);
   bad = {};
   bad.recovered_fraction = 1.0;
+  EXPECT_THROW(bad.Validate(), InputError);
+  bad = {};
+  bad.degenerate_anisotropy = 1.0;
+  EXPECT_THROW(bad.Validate(), InputError);
+  bad = {};
+  bad.min_degenerate_length_m = 0.0;
   EXPECT_THROW(bad.Validate(), InputError);
   EXPECT_EQ(AssessFrontEnd({}).Summary(), "front end: no sequential match was made");
 }
