@@ -32,7 +32,7 @@ fast=(--set minimum_travel_distance=0.4 --set scan_buffer_size=20 --set loop_mat
 if ! "$bin" run "$log" --out "$work/a" --relations "$rel" "${fast[@]}" --quiet >"$work/a.out" 2>"$work/a.err"; then
   fail "run exited non-zero: $(cat "$work/a.err")"
 fi
-for f in map.pgm map.yaml map.png trajectory.txt loop_closures.csv run.json; do
+for f in map.pgm map.yaml map.png trajectory.txt loop_closures.csv front_end.csv front_end_map.png run.json; do
   [[ -s "$work/a/$f" ]] || fail "missing or empty output $f"
 done
 for key in scans nodes loop_closures wall_s params edges solver_runs peak_memory_mb gt_error map; do

@@ -32,6 +32,8 @@
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/report/front_end_json.h"
+#include "slamtune/report/front_end_map.h"
+#include "slamtune/report/png_encoding.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/occupancy_grid.h"
@@ -177,6 +179,9 @@ int Run(const RunArgs& args) {
   WriteLoopClosuresCsv(file("loop_closures.csv"), summary);
   const slam::FrontEndEvidence front_end = slam::AssessFrontEnd(runner.sequential_matches());
   WriteFrontEndCsv(file("front_end.csv"), runner.sequential_matches(), front_end);
+  report::WriteBytes(
+      report::EncodePng(report::RenderFrontEndMap(map, trajectory, runner.sequential_matches(), front_end)),
+      file("front_end_map.png"));
 
   nlohmann::json edges = nlohmann::json::object(), duplicates = nlohmann::json::object();
   for (int k = 0; k < slam::kNumEdgeKinds; ++k) {
@@ -247,8 +252,8 @@ int Run(const RunArgs& args) {
               gt_line.c_str(), args.out.c_str());
   std::printf("%s\n", front_end.Summary().c_str());
   if (front_end.points_at_front_end()) {
-    std::printf("  (front_end.csv has every match; front-end parameters are searched by: slamtune optimize "
-                "--space front-end)\n");
+    std::printf("  (front_end_map.png marks them on the map, front_end.csv has every match; the default "
+                "optimize searches the front-end parameters for this log)\n");
   }
   return 0;
 }
@@ -256,7 +261,7 @@ int Run(const RunArgs& args) {
 const SubcommandRegistrar kRun(Subcommand{
     "run",
     "Run the Karto-faithful SLAM engine on a log or bag: map.pgm/map.yaml/map.png, trajectory.txt, "
-    "loop_closures.csv and run.json in --out",
+    "loop_closures.csv, front_end.csv, front_end_map.png and run.json in --out",
     20,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RunArgs>();

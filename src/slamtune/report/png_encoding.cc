@@ -4,6 +4,7 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
+#include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
 
 namespace slamtune::report {
@@ -19,11 +20,8 @@ std::vector<std::uint8_t> EncodePng(const cv::Mat& image) {
 }
 
 void WriteBytes(const std::vector<std::uint8_t>& bytes, const std::string& path) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path, 0, "cannot write the file (missing folder or no permission?)");
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw InputError(path, 0, "writing the file failed (disk full?)");
+  // Atomically (common/atomic_file.h): an interrupted run leaves the old file or the new one.
+  WriteFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 std::string Base64Encode(std::span<const std::uint8_t> bytes) {

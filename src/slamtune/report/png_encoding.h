@@ -19,7 +19,7 @@ namespace slamtune::report {
 // PNG bytes of an 8-bit image (1 or 3 channels, BGR order as OpenCV keeps it).
 std::vector<std::uint8_t> EncodePng(const cv::Mat& image);
 
-// Writes bytes to `path` (replacing it). Throws InputError naming the path if it cannot be
+// Writes bytes to `path` atomically (replacing it). Throws InputError naming the path if it cannot be
 // written.
 void WriteBytes(const std::vector<std::uint8_t>& bytes, const std::string& path);
 
