@@ -60,6 +60,26 @@ printf '%s\n' "${matcher[@]}" | sed 's/=/: /' > "$work/matcher.yaml"
 "$bin" optimize --out "$work/fix" "${tiny[@]}" --space "$work/fix.yaml" >/dev/null 2>"$work/fix.err" ||
   fail "fix: of a consistent matcher set refused: $(cat "$work/fix.err")"
 
+# The search space from the command line: --vary NAME=MIN:MAX[:STEP] and --fix NAME=VALUE.
+expect_line "slamtune: error: --vary r: write NAME=MIN:MAX or NAME=MIN:MAX:STEP" "$bin" optimize --vary r
+expect_line "slamtune: error: --vary loop_search_maximum_distance MAX: 'x' is not a number" "$bin" optimize --vary r=2:x
+expect_line "slamtune: error: --vary: unknown mapper parameter 'loop_search_maximum_distanc' (did you mean 'loop_search_maximum_distance'?)" \
+  "$bin" optimize --vary loop_search_maximum_distanc=2:6
+expect_line "slamtune: error: --vary: 'loop_match_minimum_chain_size': an int parameter needs a whole-number step, got 0.5" \
+  "$bin" optimize --vary g=6:20:0.5
+expect_line "slamtune: error: --fix goes with --vary (it holds a value while others are searched); to change a base value, use --set NAME=VALUE" \
+  "$bin" optimize --fix p=0.7
+expect_line "slamtune: error: give the search space either with --space or with --vary/--fix, not both" \
+  "$bin" optimize --space loop --vary r=2:6
+expect_line "slamtune: error: --vary/--fix: mapper parameter loop_match_minimum_chain_size = 0 is out of range: must be an integer >= 1" \
+  "$bin" optimize --vary r=2:6 --fix g=0
+# A consistent space from flags runs, and a resume rebuilds it from the folder alone.
+"$bin" optimize --out "$work/flags" "${tiny[@]}" --vary r=2:6:0.01 --vary g=6:20 --fix p=0.7 >/dev/null 2>"$work/flags.err" ||
+  fail "--vary/--fix refused: $(cat "$work/flags.err")"
+grep -q '"loop_match_minimum_response_coarse": 0.7' "$work/flags/results.json" || fail "--fix p=0.7 not in results.json"
+"$bin" optimize --resume "$work/flags" --quiet >/dev/null 2>"$work/flags_resume.err" ||
+  fail "resume of a --vary run failed: $(cat "$work/flags_resume.err")"
+
 # Readings all filtered out give an empty map: such runs fail, and one is never recommended.
 s=$(space minrange 'vary:\n  min_laser_range: {min: 0, max: 37}\n')
 "$bin" optimize --space "$s" --out "$work/minrange" --population 8 --generations 2 --divisions 3 --jobs 2 --quiet \

@@ -29,13 +29,17 @@ r1=$(grep -E '^loop_search_maximum_distance:' "$work/whole/best_slam_karto.yaml"
 [[ -n "$r1" && "$r1" == "$r2" ]] || fail "best_slam_karto.yaml r '$r1' is not best.yaml's '$r2'"
 if grep -q "ros__parameters" "$work/whole/best_slam_karto.yaml"; then fail "best_slam_karto.yaml is nested"; fi
 
-# Progress lines (plain, not a terminal) say how much scan matching the runs shared, and
-# nothing of it with --no-share.
+# With --verbose, progress lines (plain, not a terminal) say how much scan matching the runs
+# shared and the end lists the caches; without it, or with --no-share, nothing of it.
 tiny=(--population 4 --generations 1 --divisions 3 --seed 5 --jobs 2)
-"$bin" optimize --out "$work/tiny" "${tiny[@]}" > "$work/tiny.txt" 2>&1 || fail "optimize (tiny) failed: $(tail -3 "$work/tiny.txt")"
+"$bin" optimize --out "$work/tiny" "${tiny[@]}" --verbose > "$work/tiny.txt" 2>&1 || fail "optimize (tiny) failed: $(tail -3 "$work/tiny.txt")"
 grep -Eq '^gen 1/1 .*\| matches: [0-9.]+% of [0-9.]+( [kM])? shared, [0-9.]+( [kM])? computed$' "$work/tiny.txt" ||
   fail "progress lacks the shared-match summary: $(grep '^gen' "$work/tiny.txt" | tail -1)"
-"$bin" optimize --out "$work/tiny_noshare" "${tiny[@]}" --no-share > "$work/tiny_noshare.txt" 2>&1 ||
+grep -q '^match cache: ' "$work/tiny.txt" || fail "--verbose did not list the caches"
+grep -q '^generation 0: [0-9]* SLAM runs in .* to come take up to' "$work/tiny.txt" || fail "no budget estimate after generation 0"
+"$bin" optimize --out "$work/tiny_plain" "${tiny[@]}" > "$work/tiny_plain.txt" 2>&1 || fail "optimize (plain) failed"
+if grep -Eq 'matches:|^match cache' "$work/tiny_plain.txt"; then fail "cache statistics without --verbose"; fi
+"$bin" optimize --out "$work/tiny_noshare" "${tiny[@]}" --no-share --verbose > "$work/tiny_noshare.txt" 2>&1 ||
   fail "optimize --no-share failed: $(tail -3 "$work/tiny_noshare.txt")"
 grep -q '^gen 1/1 ' "$work/tiny_noshare.txt" || fail "--no-share run printed no progress line"
 if grep '^gen' "$work/tiny_noshare.txt" | grep -q 'matches:'; then fail "--no-share progress mentions shared matches"; fi

@@ -140,6 +140,11 @@ const SubcommandRegistrar kEvaluate(Subcommand{
       app.add_option("--corner-threshold", o.corner_threshold,
                      "Corner pixel: response > this fraction of the map's largest response")
           ->capture_default_str();
+      app.footer(
+          "Examples:\n"
+          "  slamtune evaluate map.yaml\n"
+          "  slamtune evaluate runs/a/map.yaml runs/b/map.yaml --json\n"
+          "  slamtune evaluate map.pgm --debug-dir overlays/");
       return [args]() -> int { return Run(*args); };
     }});
 

@@ -47,6 +47,10 @@ const SubcommandRegistrar kGtError(Subcommand{
       app.add_option("--time-tolerance", args->options.time_tolerance_s,
                      "Largest timestamp difference (s) for a pose to match a relation timestamp")
           ->capture_default_str();
+      app.footer(
+          "Examples:\n"
+          "  slamtune gt-error runs/intel/trajectory.txt intel.relations\n"
+          "  slamtune gt-error trajectory.txt aces.relations --json");
       return [args]() -> int {
         args->options.Validate();
         const auto trajectory = io::ReadTrajectory(args->trajectory);

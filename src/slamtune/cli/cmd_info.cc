@@ -78,6 +78,10 @@ const SubcommandRegistrar kInfo(Subcommand{
           ->required();
       app.add_flag("--json", args->json, "Print the summary as one JSON object");
       args->input.AddTo(app);
+      app.footer(
+          "Examples:\n"
+          "  slamtune info intel.clf.gz\n"
+          "  slamtune info drive.mcap --scan-topic /scan --json");
       return [args]() -> int {
         const io::LogSummary summary = io::SummarizeLog(ReadLog(args->log, args->input));
         if (args->json) {

@@ -35,6 +35,12 @@ struct OptimizeArgs {
   std::string out;
   std::string resume;
   std::string space_file;
+  std::vector<std::string> vary;  // --vary NAME=MIN:MAX[:STEP]: the space from the command line
+  std::vector<std::string> fix;   // --fix NAME=VALUE, with --vary
+  bool verbose = false;           // --verbose: the shared-work caches' statistics
+  // Resuming a folder written before named spaces (no space, no --vary): r and g around the
+  // base without steps (SearchSpace::AroundBase), not the default-space probe.
+  bool around_base_without_steps = false;
   std::string objectives = optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kConsistency);
   optim::SettlingOptions settling;  // --no-early-stop, --stop-tolerance, --stop-window
   std::size_t population = 66;
@@ -69,7 +75,8 @@ std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
 }
 
 nlohmann::json InvocationJson(const OptimizeArgs& a) {
-  return {{"inputs", a.inputs.ToJson()},  {"space", a.space_file}, {"population", a.population},
+  return {{"inputs", a.inputs.ToJson()},  {"space", a.space_file}, {"vary", a.vary}, {"fix", a.fix},
+          {"population", a.population},
           {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed},
           {"objectives", a.objectives}, {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
           {"settling", {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
@@ -81,7 +88,7 @@ bool OnlyResumeOptions(const CLI::App& app) {
   for (const CLI::Option* opt : app.get_options()) {
     const std::string name = opt->get_name();
     if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out" &&
-        name != "--no-share" && name != "--share-mb") {
+        name != "--no-share" && name != "--share-mb" && name != "--verbose") {
       return false;
     }
   }
@@ -111,6 +118,9 @@ void PrepareResume(const std::string& dir, const std::string& db_path, const CLI
     if (!inv) throw InputError(db_path, 0, "--resume: the run database holds no command line");
     args.inputs = TuningInputOptions::FromJson(inv->at("inputs"));
     args.space_file = inv->at("space");
+    args.vary = inv->value("vary", std::vector<std::string>{});
+    args.fix = inv->value("fix", std::vector<std::string>{});
+    args.around_base_without_steps = args.space_file.empty() && args.vary.empty();
     args.population = inv->at("population");
     args.generations = inv->at("generations");
     args.divisions = inv->at("divisions");
@@ -183,12 +193,21 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   settings.divisions = args.divisions;
   settings.seed = args.seed;
   if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
+  if (!args.vary.empty() && !args.space_file.empty()) {
+    throw InputError("give the search space either with --space or with --vary/--fix, not both");
+  }
+  if (args.vary.empty() && !args.fix.empty()) {
+    throw InputError("--fix goes with --vary (it holds a value while others are searched); to change a base "
+                     "value, use --set NAME=VALUE");
+  }
+  std::optional<optim::SearchSpace> flag_space;
+  if (!args.vary.empty()) flag_space = optim::SearchSpace::FromFlags(args.vary, args.fix);
   settings.Validate();  // the budget, before any run
   // No --space: loop closure, or the front end when the base configuration's map breaks there
   // (one SLAM run, after the output folder is known to be usable).
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   std::optional<optim::BaseFrontEnd> base_front_end;
-  if (args.space_file.empty()) {
+  if (args.space_file.empty() && !flag_space && !args.around_base_without_steps) {
     EnsureWritableDir(dir);
     if (!lock) {
       lock.emplace(dir);
@@ -200,9 +219,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
     base_front_end = optim::BaseFrontEnd{choice.evidence, choice.steps, choice.Reason()};
   }
-  if (args.space_file == "loop") {
+  if (flag_space) {
+    settings.space = *flag_space;
+  } else if (args.space_file == "loop") {
     settings.space = optim::SearchSpace::Loop(inputs.base);
-  } else if (args.space_file.empty()) {  // a folder written before named spaces: no steps
+  } else if (args.around_base_without_steps) {
     settings.space = optim::SearchSpace::AroundBase(inputs.base.loop_search_maximum_distance,
                                                     inputs.base.loop_match_minimum_chain_size);
   } else if (args.space_file == "paper") {
@@ -214,7 +235,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   }
   settings.Validate();
   const bool named_space = args.space_file == "loop" || args.space_file == "paper" || args.space_file == "front-end";
-  optim::CheckSpaceAgainst(settings.space, inputs.base, named_space ? "--space" : args.space_file);
+  optim::CheckSpaceAgainst(settings.space, inputs.base,
+                           flag_space ? "--vary/--fix" : named_space ? "--space" : args.space_file);
   auto context = probed && settings.space.fixed.empty()
                      ? probed
                      : MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
@@ -260,8 +282,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   optim::OptimizeHooks hooks;
   // Under mpirun the counts are rank 0's own runs (each rank has its own caches).
   const std::string shared_label = workers ? "rank 0 " : "";
-  hooks.progress = [&progress, context, shared_label](const std::string& line, bool force) {
-    const std::string shared = optim::SharedWorkBrief(*context);
+  hooks.progress = [&progress, context, shared_label, verbose = args.verbose](const std::string& line, bool force) {
+    const std::string shared = verbose ? optim::SharedWorkBrief(*context) : std::string();
     progress.Update(shared.empty() ? line : line + " | " + shared_label + shared, force);
   };
   hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
@@ -317,7 +339,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     if (workers) {
       std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
     }
-    std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
+    if (args.verbose) std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
   }
   return 0;
 }
@@ -337,6 +359,10 @@ const SubcommandRegistrar kRegistrar{{
                      "q = 0.4); 'front-end' for sequential matching and node spacing plus r, g, p, q (maps that "
                      "break before any loop closes); default: 'loop', or 'front-end' when a run of the base "
                      "configuration shows its sequential matching losing its place");
+      app.add_option("--vary", args->vary,
+                     "search this parameter, NAME=MIN:MAX[:STEP] (repeatable; NAME a ROS name or r, g, p, q; an "
+                     "integer parameter is searched by whole numbers): the search space without a YAML file");
+      app.add_option("--fix", args->fix, "hold a parameter at a value while --vary searches others, NAME=VALUE (repeatable)");
       app.add_option("--objectives", args->objectives,
                      "what the map is judged by: 'consistency' (default: unbacked hits u_h, corner pixels n_c, "
                      "enclosed areas n_e; does not reward a map for breaking apart) or 'paper' (the seed paper's "
@@ -359,11 +385,20 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--jobs,-j", args->jobs,
                      "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs one)");
       app.add_flag("--quiet,-q", args->quiet, "no progress output");
+      app.add_flag("--verbose,-v", args->verbose, "also show how much work the SLAM runs shared (cache statistics)");
       app.add_flag("--no-share", args->no_share,
                    "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for timing comparisons)");
       app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter, barycentres an eighth)")
           ->capture_default_str();
       args->inputs.AddTo(app);
+      app.footer(
+          "Examples:\n"
+          "  slamtune optimize --out runs/office-jump --world office-jump   # a built-in world whose defaults fail\n"
+          "  slamtune optimize drive.mcap --out runs/drive                  # your recording; the space is chosen for you\n"
+          "  slamtune optimize drive.mcap --out runs/drive2 --params my_slam_toolbox.yaml\n"
+          "  slamtune optimize intel.clf.gz --out runs/intel --vary r=2:8:0.01 --vary g=4:20 --fix p=0.7\n"
+          "  slamtune optimize aces.clf.gz --out runs/aces --space front-end --relations aces.relations\n"
+          "  slamtune optimize --resume runs/drive                          # after Ctrl-C or a crash");
       return [args, &app] { return RunOptimize(*args, app); };
     },
 }};

@@ -63,6 +63,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--preset", args->preset, "parameter preset (map resolution, laser range rules)");
       app.add_option("--params", args->params_file, "parameter YAML");
       app.add_option("--set", args->sets, "NAME=VALUE override (repeatable)");
+      app.footer(
+          "Examples:\n"
+          "  slamtune render intel.clf.gz --poses odometry --out runs/intel_odometry   # the map before SLAM\n"
+          "  slamtune render intel.clf.gz --poses runs/intel/trajectory.txt --out runs/intel_again");
       return [args] { return RunRender(*args); };
     },
 }};

@@ -280,6 +280,12 @@ const SubcommandRegistrar kRun(Subcommand{
       app.add_flag("--no-loop-closure", args->no_loop_closure, "Same as --set do_loop_closing=false");
       args->input.AddTo(app);
       app.add_flag("--quiet", args->quiet, "No progress on stderr");
+      app.footer(
+          "Examples:\n"
+          "  slamtune run drive.mcap --out runs/drive_defaults\n"
+          "  slamtune run drive.mcap --out runs/drive_best --params runs/drive/best.yaml\n"
+          "  slamtune run intel.clf.gz --relations intel.relations --set loop_search_maximum_distance=6 --out runs/intel_r6\n"
+          "  slamtune run --world corridor-long --out runs/corridor   # a built-in world, error against its truth");
       return [args]() -> int { return Run(*args); };
     }});
 

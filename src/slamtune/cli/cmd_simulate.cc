@@ -105,6 +105,12 @@ std::function<int()> Setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--revisit-min-gap", o.relations.revisit_min_gap_s, "Min time between revisit scans (s)")
       ->capture_default_str();
+  app.footer(
+      "Examples:\n"
+      "  slamtune simulate --list\n"
+      "  slamtune simulate --world hall --seed 2 --out sim/hall\n"
+      "  slamtune simulate --world office --fault spin,45,0.1,60 --out sim/slip   # plant a wheel slip\n"
+      "  slamtune simulate --world corridor-long --without-world-faults --out sim/twin");
   return [state] { return Run(*state); };
 }
 

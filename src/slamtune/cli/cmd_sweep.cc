@@ -17,6 +17,7 @@
 #include "slamtune/common/progress.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/mpi_evaluation.h"
+#include "slamtune/optim/search_space.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/report/sweep_report.h"
 
@@ -34,26 +35,6 @@ struct SweepArgs {
   std::size_t share_mb = 512;  // MB, memory budget of the shared scan-match cache
 };
 
-// Short names of the seed paper.
-std::string Expand(const std::string& name) {
-  if (name == "r") return "loop_search_maximum_distance";
-  if (name == "g") return "loop_match_minimum_chain_size";
-  if (name == "p") return "loop_match_minimum_response_coarse";
-  if (name == "q") return "loop_match_maximum_variance_coarse";
-  return name;
-}
-
-double ParseNumber(const std::string& text, const std::string& what) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument(text);
-    return v;
-  } catch (const std::exception&) {
-    throw InputError(fmt::format("{}: '{}' is not a number", what, text));
-  }
-}
-
 int RunSweep(SweepArgs args, const CLI::App& app) {
   optim::MpiWorld world;
   if (world.rank() > 0) return ServeAsWorker(world);
@@ -68,7 +49,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   // --vary NAME=LO:HI[:STEP]
   const auto eq = args.vary.find('=');
   if (eq == std::string::npos) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + args.vary + "'");
-  const std::string name = Expand(args.vary.substr(0, eq));
+  const std::string name = optim::FullParamName(args.vary.substr(0, eq));
   std::vector<std::string> parts;
   for (std::string rest = args.vary.substr(eq + 1);;) {
     const auto c = rest.find(':');
@@ -77,8 +58,8 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
     rest = rest.substr(c + 1);
   }
   if (parts.size() < 2 || parts.size() > 3) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + args.vary + "'");
-  const double lo = ParseNumber(parts[0], "--vary LO"), hi = ParseNumber(parts[1], "--vary HI");
-  const double step = parts.size() == 3 ? ParseNumber(parts[2], "--vary STEP") : 1.0;
+  const double lo = optim::ParseFlagNumber(parts[0], "--vary LO"), hi = optim::ParseFlagNumber(parts[1], "--vary HI");
+  const double step = parts.size() == 3 ? optim::ParseFlagNumber(parts[2], "--vary STEP") : 1.0;
   if (!(lo <= hi)) throw InputError(fmt::format("--vary: bounds reversed ({} > {})", lo, hi));
   if (!(step > 0)) throw InputError(fmt::format("--vary: STEP must be > 0, got {}", step));
   if ((hi - lo) / step > 10000) throw InputError("--vary: more than 10000 values; use a larger STEP");
@@ -90,7 +71,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   for (const auto& f : args.fix) {
     const auto e = f.find('=');
     if (e == std::string::npos) throw InputError("--fix must be NAME=VALUE, got '" + f + "'");
-    fixed[Expand(f.substr(0, e))] = ParseNumber(f.substr(e + 1), "--fix " + f.substr(0, e));
+    fixed[optim::FullParamName(f.substr(0, e))] = optim::ParseFlagNumber(f.substr(e + 1), "--fix " + f.substr(0, e));
   }
   std::vector<optim::Assignment> batch;
   for (int i = 0;; ++i) {
@@ -169,6 +150,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter, barycentres an eighth)")
           ->capture_default_str();
       args->inputs.AddTo(app);
+      app.footer(
+          "Examples:\n"
+          "  slamtune sweep --vary r=2:6:0.5 --out runs/sweep_r             # the built-in world\n"
+          "  slamtune sweep aces.clf.gz --vary g=4:20 --fix r=4 --relations aces.relations --out runs/aces_g");
       return [args, &app] { return RunSweep(*args, app); };
     },
 }};

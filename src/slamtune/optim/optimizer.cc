@@ -16,6 +16,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/optim/budget_estimate.h"
 #include "slamtune/optim/candidate_selection.h"
 #include "slamtune/optim/nsga3.h"
 #include "slamtune/optim/tuning_problem.h"
@@ -195,6 +196,12 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     pop = InitialPopulation(problem, settings.population, settings.seed);
     store.PutGeneration(0, PopulationJson({pop.get_x().begin(), pop.get_x().end()},
                                           {pop.get_f().begin(), pop.get_f().end()}, ""));
+    if (hooks.progress && total_gens > 0) {
+      const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      hooks.progress(BudgetEstimateLine(settings.population, total_gens, evaluator.stats().evaluated, seconds,
+                                        settings.settling.enabled),
+                     true);
+    }
   }
   current_f.assign(pop.get_f().begin(), pop.get_f().end());
   // The settling rule sees every finished generation, the saved ones replayed on a resume.

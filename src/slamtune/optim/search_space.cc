@@ -183,6 +183,62 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
   return s;
 }
 
+std::string FullParamName(const std::string& name) {
+  if (name == "r") return "loop_search_maximum_distance";
+  if (name == "g") return "loop_match_minimum_chain_size";
+  if (name == "p") return "loop_match_minimum_response_coarse";
+  if (name == "q") return "loop_match_maximum_variance_coarse";
+  return name;
+}
+
+double ParseFlagNumber(const std::string& text, const std::string& what) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument(text);
+    return v;
+  } catch (const std::exception&) {
+    throw InputError(fmt::format("{}: '{}' is not a number", what, text));
+  }
+}
+
+SearchSpace SearchSpace::FromFlags(const std::vector<std::string>& vary, const std::vector<std::string>& fix) {
+  SearchSpace s;
+  for (const std::string& entry : vary) {
+    const std::string form = fmt::format("--vary {}: write NAME=MIN:MAX or NAME=MIN:MAX:STEP", entry);
+    const auto eq = entry.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError(form);
+    std::vector<std::string> parts;
+    for (std::string rest = entry.substr(eq + 1);;) {
+      const auto colon = rest.find(':');
+      parts.push_back(rest.substr(0, colon));
+      if (colon == std::string::npos) break;
+      rest = rest.substr(colon + 1);
+    }
+    if (parts.size() < 2 || parts.size() > 3) throw InputError(form);
+    Dimension d;
+    d.name = FullParamName(entry.substr(0, eq));
+    const slam::ParamInfo* info = NumericParam(d.name, "--vary", 0);
+    d.integer = info->type == slam::ParamType::kInt;
+    d.lower = ParseFlagNumber(parts[0], "--vary " + d.name + " MIN");
+    d.upper = ParseFlagNumber(parts[1], "--vary " + d.name + " MAX");
+    if (parts.size() == 3) d.step = ParseFlagNumber(parts[2], "--vary " + d.name + " STEP");
+    if (d.integer && d.step == 1.0) d.step = 0.0;  // integers move by whole numbers anyway
+    s.dimensions.push_back(d);
+  }
+  for (const std::string& entry : fix) {
+    const auto eq = entry.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError(fmt::format("--fix {}: write NAME=VALUE", entry));
+    const std::string name = FullParamName(entry.substr(0, eq));
+    if (slam::FindParam(name) == nullptr) throw InputError("--fix: " + slam::UnknownParamMessage(name));
+    if (s.fixed.count(name)) throw InputError(fmt::format("--fix {}: given twice", name));
+    s.fixed[name] = ParseFlagNumber(entry.substr(eq + 1), "--fix " + name);
+  }
+  SortRealsFirst(s.dimensions);
+  s.Validate("--vary");
+  return s;
+}
+
 std::size_t SearchSpace::LineOf(const std::string& name) const {
   const auto it = lines.find(name);
   return it == lines.end() ? 0 : it->second;

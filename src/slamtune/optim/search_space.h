@@ -69,6 +69,11 @@ struct SearchSpace {
   // number — booleans and strings cannot be searched —, an integer parameter declared real, a
   // name both varied and fixed). An integer parameter without `type` is searched as int.
   static SearchSpace FromYaml(const std::string& path);
+  // The same from the command line: each of `vary` is NAME=MIN:MAX[:STEP] (an integer parameter
+  // is searched as int, its STEP a whole number), each of `fix` NAME=VALUE; NAME is a ROS name
+  // or one of the seed paper's short names r, g, p, q (FullParamName). Throws InputError naming
+  // the flag, the entry and the rule; the same rules as FromYaml.
+  static SearchSpace FromFlags(const std::vector<std::string>& vary, const std::vector<std::string>& fix);
 
   // Rejects an empty space, reversed or non-finite bounds, integer dimensions with
   // fractional bounds, duplicates. `source` prefixes the message (file name or "--space").
@@ -85,6 +90,15 @@ struct SearchSpace {
   // A stable fingerprint of the space (names, bounds, types, fixed values) for --resume checks.
   std::string Fingerprint() const;
 };
+
+// The ROS name of a seed-paper short name (r = loop_search_maximum_distance, g =
+// loop_match_minimum_chain_size, p = loop_match_minimum_response_coarse, q =
+// loop_match_maximum_variance_coarse); any other name unchanged.
+std::string FullParamName(const std::string& name);
+
+// A number written on the command line: the whole of `text`, finite. InputError
+// "WHAT: 'TEXT' is not a number" otherwise.
+double ParseFlagNumber(const std::string& text, const std::string& what);
 
 // Refuses, before any work, a space whose bounds or fixed values the engine would reject on top
 // of `base` (e.g. g = 0, a negative distance): each bound is tried with the fixed values,

@@ -250,3 +250,44 @@ TEST(SearchSpace, KeyIsCanonicalAndExact) {
 
 }  // namespace
 }  // namespace slamtune::optim
+
+namespace slamtune::optim {
+namespace {
+
+TEST(SearchSpaceFromFlags, BuildsTheSpaceAYamlFileWouldHold) {
+  const SearchSpace s = SearchSpace::FromFlags({"g=6:20", "r=2:6:0.01"}, {"p=0.7"});
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s.dimensions[0].name, "loop_search_maximum_distance");  // reals first
+  EXPECT_FALSE(s.dimensions[0].integer);
+  EXPECT_DOUBLE_EQ(s.dimensions[0].step, 0.01);
+  EXPECT_EQ(s.dimensions[1].name, "loop_match_minimum_chain_size");
+  EXPECT_TRUE(s.dimensions[1].integer);
+  EXPECT_EQ(s.dimensions[1].lower, 6.0);
+  EXPECT_EQ(s.fixed.at("loop_match_minimum_response_coarse"), 0.7);
+}
+
+TEST(SearchSpaceFromFlags, RefusesMalformedEntriesNamingTheFlag) {
+  for (const std::vector<std::string>& vary : std::vector<std::vector<std::string>>{
+           {"r"}, {"r=2"}, {"r=2:3:4:5"}, {"=2:3"}, {"r=a:3"}, {"r=2:3:nan"}, {"r=3:2"}, {"r=2:6", "r=3:4"}}) {
+    EXPECT_THROW(SearchSpace::FromFlags(vary, {}), InputError) << vary[0];
+  }
+  EXPECT_THROW(SearchSpace::FromFlags({"r=2:6"}, {"p"}), InputError);
+  EXPECT_THROW(SearchSpace::FromFlags({"r=2:6"}, {"r=3"}), InputError);  // varied and fixed
+  EXPECT_THROW(SearchSpace::FromFlags({"r=2:6"}, {"p=0.7", "p=0.8"}), InputError);
+  EXPECT_THROW(SearchSpace::FromFlags({"use_scan_matching=0:1"}, {}), InputError);  // a bool
+  try {
+    SearchSpace::FromFlags({"r=2:x"}, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--vary loop_search_maximum_distance MAX: 'x' is not a number");
+  }
+}
+
+TEST(FullParamName, ExpandsTheSeedPapersShortNamesOnly) {
+  EXPECT_EQ(FullParamName("r"), "loop_search_maximum_distance");
+  EXPECT_EQ(FullParamName("q"), "loop_match_maximum_variance_coarse");
+  EXPECT_EQ(FullParamName("resolution"), "resolution");
+}
+
+}  // namespace
+}  // namespace slamtune::optim
