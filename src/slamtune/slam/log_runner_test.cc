@@ -103,7 +103,8 @@ TEST(LogRunner, MitCsailNodeCountMatchesReferenceKarto) {
 // The back end's arithmetic decides loops on mit-killian (spa_system.h): with r = 5.90, g = 8,
 // p = 0.7, the reference Karto build (open_karto + slam_karto's SPA) closes its first four loops
 // at these log scans with these coarse responses; the fourth (6314) needs bit-exact solves after
-// the first three, and an algebraically equal variant of the solver closes one at 6267 instead.
+// the first three: with algebraically equal variants of the edge measurement, mean heading and
+// SPA arithmetic the engine closes one at 6267 instead.
 TEST(LogRunner, MitKillianFirstLoopsMatchReferenceKarto) {
   const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/mit-killian.clf.gz";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "dataset not available: " << path;

@@ -4,7 +4,8 @@
 //
 // Why the order matters: the solver runs after every loop closure and its result decides where
 // every later scan is matched; a last-bit difference in one solve can decide a later loop on a
-// long log (mit-killian closes 8 loops instead of 14 with an algebraically equal variant).
+// long log (on mit-killian at r 5.90, g 8, p 0.7, algebraically equal variants of this
+// arithmetic, the edge measurement and the mean heading close 8 loops where Karto closes 14).
 //
 // The order, as sba computes it (all with Eigen fixed-size types, whose evaluation order is
 // part of the result, so the expressions here keep sba's types and groupings):
