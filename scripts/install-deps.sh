@@ -4,7 +4,7 @@
 set -euo pipefail
 PKGS=(
   build-essential cmake pkg-config git
-  libeigen3-dev libceres-dev libopencv-dev libpagmo-dev libboost-serialization-dev libtbb-dev
+  libeigen3-dev libceres-dev libsuitesparse-dev libopencv-dev libpagmo-dev libboost-serialization-dev libtbb-dev
   libcli11-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libsqlite3-dev zlib1g-dev libpng-dev libzstd-dev liblz4-dev libbz2-dev libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin

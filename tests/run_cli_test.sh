@@ -56,6 +56,22 @@ grep -q '^image: map.pgm' "$work/a/map.yaml" || fail "map.yaml does not name map
 cmp -s "$work/a/trajectory.txt" "$work/b/trajectory.txt" || fail "trajectories of two identical runs differ"
 cmp -s "$work/a/map.pgm" "$work/b/map.pgm" || fail "maps of two identical runs differ"
 
+# 2b. --trace: the same run (same trajectory), one line per match and solve (docs/trace.md).
+"$bin" run "$log" --out "$work/t" --relations "$rel" "${fast[@]}" --trace "$work/trace.txt" --quiet >/dev/null 2>&1 ||
+  fail "run with --trace failed"
+cmp -s "$work/a/trajectory.txt" "$work/t/trajectory.txt" || fail "--trace changed the trajectory"
+nodes=$(json_int "$work/a/run.json" nodes)
+seq_lines=$(grep -c '^match sequential ' "$work/trace.txt")
+[[ "$seq_lines" == "$((nodes - 1))" ]] || fail "trace has $seq_lines sequential matches for $nodes nodes"
+accepted=$(grep -c '^match loop_fine .* accepted$' "$work/trace.txt")
+[[ "$accepted" == "$loops" ]] || fail "trace has $accepted accepted loop matches, run.json $loops loops"
+solves=$(grep -c '^solve ' "$work/trace.txt")
+[[ "$solves" == "$loops" ]] || fail "trace has $solves solves for $loops loops"
+awk '$1 == "match" && NF != 21 { bad = 1 } $1 == "solve" && NF != 11 { bad = 1 } $1 == "step" && NF != 5 { bad = 1 }
+     END { exit bad }' "$work/trace.txt" || fail "trace lines with the wrong number of fields"
+"$bin" run "$log" --out "$work/t2" "${fast[@]}" --trace "$work/no_such_dir/trace.txt" --quiet >/dev/null 2>&1 &&
+  fail "an unwritable --trace path was accepted"
+
 # 3. --no-loop-closure and a ROS 2 parameter file.
 cat >"$work/params.yaml" <<'EOF'
 slam_toolbox:

@@ -38,6 +38,7 @@
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/occupancy_grid.h"
 #include "slamtune/slam/params_yaml.h"
+#include "slamtune/slam/run_trace.h"
 
 namespace slamtune::cli {
 namespace {
@@ -52,6 +53,7 @@ struct RunArgs {
   std::string world = sim::kDefaultWorld;  // simulated when no LOG is given
   unsigned world_seed = 1;
   bool no_loop_closure = false;
+  std::string trace;  // --trace FILE: every match and solve (slam/run_trace.h)
   LogInputOptions input;
   bool quiet = false;
 };
@@ -144,6 +146,11 @@ int Run(const RunArgs& args) {
   }
 
   slam::LogRunner runner(log, params);
+  std::shared_ptr<slam::RunTrace> trace;
+  if (!args.trace.empty()) {
+    trace = std::make_shared<slam::RunTrace>(args.trace);
+    runner.set_trace(trace);
+  }
   const auto start = std::chrono::steady_clock::now();
   runner.RunToEnd([&](std::size_t done, std::size_t total) {
     if (progress.quiet() || (done % 50 != 0 && done != total)) return;
@@ -152,6 +159,7 @@ int Run(const RunArgs& args) {
                                 runner.mapper().counters().scans_processed, runner.mapper().counters().loops_closed,
                                 FormatDuration(elapsed)));
   });
+  if (trace) trace->Close();
   const slam::RunSummary summary = runner.Summary();
   const std::vector<io::TimedPose> trajectory = runner.Trajectory();
 
@@ -278,6 +286,8 @@ const SubcommandRegistrar kRun(Subcommand{
           ->capture_default_str();
       app.add_option("--world-seed", args->world_seed, "seed of the simulated world")->capture_default_str();
       app.add_flag("--no-loop-closure", args->no_loop_closure, "Same as --set do_loop_closing=false");
+      app.add_option("--trace", args->trace,
+                     "Write every scan match and back-end solve to FILE at full precision (docs/trace.md)");
       args->input.AddTo(app);
       app.add_flag("--quiet", args->quiet, "No progress on stderr");
       app.footer(

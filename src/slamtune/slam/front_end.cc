@@ -65,7 +65,10 @@ Pose2 WeightedMean(std::span<const Pose2> means, std::span<const Eigen::Matrix3d
     x += w(0, 0) * p.x + w(0, 1) * p.y + w(0, 2) * p.theta;
     y += w(1, 0) * p.x + w(1, 1) * p.y + w(1, 2) * p.theta;
   }
-  return {x, y, std::atan2(sum_sin, sum_cos)};
+  // Karto divides both sums by the number of means before atan2; atan2 of the undivided sums
+  // can differ in the last bit.
+  const double n = static_cast<double>(means.size());
+  return {x, y, std::atan2(sum_sin / n, sum_cos / n)};
 }
 
 }  // namespace slamtune::slam

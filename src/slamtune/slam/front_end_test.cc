@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 namespace slamtune::slam {
@@ -79,6 +80,22 @@ TEST(TrimRunningBuffer, ByCountAndByFrontBackDistance) {
   buffer = {0, 1, 2, 3, 4};
   TrimRunningBuffer(buffer, pose, 70, std::sqrt(4.0 + 1.5e-6));  // kept
   EXPECT_THAT(buffer, ElementsAre(0, 1, 2, 3, 4));
+}
+
+// Karto's ComputeWeightedMean divides the sums of cosines and sines by the number of means
+// before atan2; on these three headings that gives a result one ulp below atan2 of the sums.
+TEST(WeightedMean, HeadingIsAtan2OfTheMeanCosineAndSine) {
+  const std::vector<Pose2> means{{0, 0, 0.14000000000000001}, {0, 0, -0.050000000000000003}, {0, 0, 1.3899999999999999}};
+  const std::vector<Eigen::Matrix3d> covs(3, Eigen::Matrix3d::Identity());
+  double sum_cos = 0.0, sum_sin = 0.0;
+  for (const Pose2& m : means) {
+    sum_cos += std::cos(m.theta);
+    sum_sin += std::sin(m.theta);
+  }
+  const double heading = WeightedMean(means, covs).theta;
+  EXPECT_EQ(heading, std::atan2(sum_sin / 3.0, sum_cos / 3.0));
+  EXPECT_EQ(heading, 0x1.d6907d2c3dda1p-2);
+  EXPECT_EQ(std::atan2(sum_sin, sum_cos), 0x1.d6907d2c3dda2p-2);  // the undivided sums
 }
 
 TEST(WeightedMean, InverseCovarianceWeightsAndCircularHeading) {

@@ -97,6 +97,8 @@ class LogRunner {
   const Mapper& mapper() const { return mapper_; }
   // Back-end solves shared with other runs of this log (solve_cache.h); may be null.
   void set_solve_cache(std::shared_ptr<SolveCache> cache) { mapper_.set_solve_cache(std::move(cache)); }
+  // Every match and solve is also written to `trace` (run_trace.h); null: none.
+  void set_trace(std::shared_ptr<RunTrace> trace) { mapper_.set_trace(std::move(trace)); }
   // Scan barycentres shared with other runs of this log (barycenter_cache.h); may be null.
   void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { mapper_.set_barycenter_cache(std::move(cache)); }
   // See Mapper::set_skip_unlinkable_near_chains (same results either way).

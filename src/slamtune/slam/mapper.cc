@@ -118,10 +118,12 @@ ProcessResult Mapper::Process(LaserScan scan) {
   // 6-7. Sequential match against the running buffer, penalties and refinement on.
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
   if (params_.use_scan_matching && last != nullptr) {
-    const std::vector<const LaserScan*> buffer =
-        ScanPointers(std::vector<int>(running_buffer_.begin(), running_buffer_.end()));
+    const std::vector<int> buffer_ids(running_buffer_.begin(), running_buffer_.end());
+    const std::vector<const LaserScan*> buffer = ScanPointers(buffer_ids);
     result.sequential_guess = scan.SensorPose();
     const MatchResult match = MatchWith(MatchRole::kSequential, scan, buffer, true, true);
+    TraceMatch("sequential", static_cast<int>(scans_.size()), scan.log_index, buffer_ids, result.sequential_guess,
+               match, "used");
     scan.SetSensorPose(match.mean);
     covariance = match.covariance;
     result.sequential_response = match.response;
@@ -216,15 +218,21 @@ void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eig
   for (const std::vector<int>& chain : chains) {
     if (static_cast<int>(chain.size()) < params_.loop_match_minimum_chain_size) continue;  // g gates here too
     ++counters_.near_chain_matches;
+    const Pose2 pose_in = scans_[scan].SensorPose();
     const MatchResult m = MatchNearChain(scans_[scan], ScanPointers(chain), threshold);
+    const int log_index = scans_[scan].log_index;
     if (IsProvenBelowThreshold(m)) {
       ++counters_.near_chain_matches_skipped;
+      TraceMatch("near_chain", scan, log_index, chain, pose_in, m, "proven_below");
       continue;
     }
     if (m.response > threshold) {
       means->push_back(m.mean);
       covariances->push_back(m.covariance);
-      LinkChainToScan(chain, scan, m.mean, m.covariance, EdgeKind::kNearChain, result);
+      const int linked = LinkChainToScan(chain, scan, m.mean, m.covariance, EdgeKind::kNearChain, result);
+      TraceMatch("near_chain", scan, log_index, chain, pose_in, m, linked < 0 ? "too_far" : "linked");
+    } else {
+      TraceMatch("near_chain", scan, log_index, chain, pose_in, m, "below");
     }
   }
 }
@@ -243,18 +251,23 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
     attempt.chain_first = chain.front();
     attempt.chain_last = chain.back();
     const std::vector<const LaserScan*> base = ScanPointers(chain);
+    const Pose2 pose_in = scans_[scan].SensorPose();
     const MatchResult coarse = MatchWith(MatchRole::kLoop, scans_[scan], base, false, false);
     attempt.coarse_response = coarse.response;
     attempt.coarse_covariance = coarse.covariance;
     // §6.3: strict on all three.
     attempt.coarse_passed = coarse.response > params_.loop_match_minimum_response_coarse &&
                             coarse.covariance(0, 0) < q2 && coarse.covariance(1, 1) < q2;
+    TraceMatch("loop_coarse", scan, attempt.log_index, chain, pose_in, coarse,
+               attempt.coarse_passed ? "passed" : "rejected");
     if (attempt.coarse_passed) {
       LaserScan tmp = scans_[scan];
       tmp.SetSensorPose(coarse.mean);
       const MatchResult fine = MatchWith(MatchRole::kSequential, tmp, base, false, true);
       attempt.fine_response = fine.response;
       attempt.accepted = fine.response >= params_.loop_match_minimum_response_fine;  // §6.4
+      TraceMatch("loop_fine", scan, attempt.log_index, chain, coarse.mean, fine,
+                 attempt.accepted ? "accepted" : "rejected");
       if (attempt.accepted) {
         SetScanSensorPose(scan, fine.mean);
         attempt.linked_to = LinkChainToScan(chain, scan, fine.mean, fine.covariance, EdgeKind::kLoop, result);
@@ -322,7 +335,31 @@ int Mapper::CorrectPoses() {
     }
     solve_cache_->Store(std::move(key), std::move(solved));
   }
-  return static_cast<int>(solver_runs_.size()) - 1;
+  const int index = static_cast<int>(solver_runs_.size()) - 1;
+  if (trace_) {
+    trace_->WriteSolve(index, static_cast<int>(nodes.size()), static_cast<int>(graph_.edges().size()), summary);
+  }
+  return index;
+}
+
+void Mapper::TraceMatch(const char* kind, int scan, int log_index, const std::vector<int>& base,
+                        const Pose2& pose_in, const MatchResult& match, const char* decision) {
+  if (!trace_) return;
+  TracedMatch t;
+  t.kind = kind;
+  t.log_index = log_index;
+  t.scan = scan;
+  if (!base.empty()) {
+    t.base_first = base.front();
+    t.base_last = base.back();
+  }
+  t.base_size = static_cast<int>(base.size());
+  t.pose_in = pose_in;
+  t.response = match.response;
+  t.mean = match.mean;
+  t.covariance = match.covariance;
+  t.decision = decision;
+  trace_->WriteMatch(t);
 }
 
 }  // namespace slamtune::slam

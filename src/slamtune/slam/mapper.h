@@ -33,6 +33,7 @@
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/pose_graph_solver.h"
 #include "slamtune/slam/response_bound.h"
+#include "slamtune/slam/run_trace.h"
 #include "slamtune/slam/scan_matcher.h"
 #include "slamtune/slam/solve_cache.h"
 
@@ -105,6 +106,8 @@ class Mapper {
   const std::shared_ptr<MatchCache>& match_cache() const { return match_cache_; }
   // Back-end solves shared with other runs of the same log (may be null: no sharing).
   void set_solve_cache(std::shared_ptr<SolveCache> cache) { solve_cache_ = std::move(cache); }
+  // Every match and solve from now on is also written to `trace` (run_trace.h); null: none.
+  void set_trace(std::shared_ptr<RunTrace> trace) { trace_ = std::move(trace); }
   // Scan barycentres shared with other runs of the same log (may be null: no sharing).
   void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { barycenter_cache_ = std::move(cache); }
 
@@ -147,6 +150,9 @@ class Mapper {
   void LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
                       ProcessResult* result);
   int TryCloseLoop(int scan, ProcessResult* result);
+  // Writes a match to the trace (when there is one); `base` are the state ids matched against.
+  void TraceMatch(const char* kind, int scan, int log_index, const std::vector<int>& base, const Pose2& pose_in,
+                  const MatchResult& match, const char* decision);
   int CorrectPoses();
 
   MapperParams params_;
@@ -159,6 +165,7 @@ class Mapper {
   std::shared_ptr<MatchCache> match_cache_;  // null: no sharing; thread-safe, shared by copies
   std::shared_ptr<SolveCache> solve_cache_;  // likewise
   std::shared_ptr<BarycenterCache> barycenter_cache_;  // likewise
+  std::shared_ptr<RunTrace> trace_;                     // observer only; shared by copies
   std::vector<LaserScan> scans_;
   std::vector<Pose2> reference_poses_;
   PoseGraph graph_;

@@ -31,7 +31,30 @@ Eigen::Matrix3d Multiply(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
   return out;
 }
 
+// Karto's Matrix3 * Pose2: each row summed left to right, heading included.
+Pose2 Times(const Eigen::Matrix3d& m, const Pose2& p) {
+  return {m(0, 0) * p.x + m(0, 1) * p.y + m(0, 2) * p.theta, m(1, 0) * p.x + m(1, 1) * p.y + m(1, 2) * p.theta,
+          m(2, 0) * p.x + m(2, 1) * p.y + m(2, 2) * p.theta};
+}
+
 }  // namespace
+
+Pose2 LinkMeasurement(const Pose2& p1, const Pose2& p2) {
+  if (p1 == Pose2{}) {  // Karto's Transform of two equal poses: identity, zero offset
+    const Pose2 moved = Times(Eigen::Matrix3d::Identity(), p2);
+    return {0.0 + moved.x, 0.0 + moved.y, NormalizeAngle(p2.theta + 0.0)};
+  }
+  const double turn = 0.0 - p1.theta;  // target heading (0) minus source heading
+  const Eigen::Matrix3d r = RotationZ(turn);
+  double offset_x = 0.0, offset_y = 0.0;
+  if (p1.x != 0.0 || p1.y != 0.0) {
+    const Pose2 rotated_p1 = Times(r, p1);
+    offset_x = 0.0 - rotated_p1.x;
+    offset_y = 0.0 - rotated_p1.y;
+  }
+  const Pose2 rotated_p2 = Times(r, p2);
+  return {offset_x + rotated_p2.x, offset_y + rotated_p2.y, NormalizeAngle(p2.theta + turn)};
+}
 
 const char* EdgeKindName(EdgeKind kind) {
   switch (kind) {
@@ -60,11 +83,11 @@ Eigen::Matrix3d KartoInverse(const Eigen::Matrix3d& m) {
   return inv * inv_det;
 }
 
-// §5.1: z = P1 (-) P2; Sigma' = Rz(-P1.theta) Sigma Rz(-P1.theta)^T; information = Sigma'^-1 with
+// §5.1: z = P1 (-) P2 by LinkMeasurement; Sigma' = Rz(-P1.theta) Sigma Rz(-P1.theta)^T; information = Sigma'^-1 with
 // the lower triangle copied from the upper one (as slam_karto's SPA adapter does).
 Constraint MakeConstraint(const Pose2& source_pose, const Pose2& target_pose, const Eigen::Matrix3d& covariance) {
   Constraint c;
-  c.measurement = Between(source_pose, target_pose);
+  c.measurement = LinkMeasurement(source_pose, target_pose);
   const Eigen::Matrix3d r = RotationZ(-source_pose.theta);
   const Eigen::Matrix3d rotated = Multiply(Multiply(r, covariance), r.transpose());
   const Eigen::Matrix3d precision = KartoInverse(rotated);

@@ -23,7 +23,7 @@ enum class EdgeKind { kSequential = 0, kRunningBuffer = 1, kNearChain = 2, kLoop
 inline constexpr int kNumEdgeKinds = 4;
 const char* EdgeKindName(EdgeKind kind);  // "sequential", "running_buffer", "near_chain", "loop"
 
-// The constraint label of an edge (§5.1): measurement z = P1 (-) P2 and information
+// The constraint label of an edge (§5.1): measurement z = P1 (-) P2 (LinkMeasurement) and information
 // (Rz(-P1.theta) Sigma Rz(-P1.theta)^T)^-1, symmetrised from its upper triangle.
 struct Constraint {
   Pose2 measurement;
@@ -32,6 +32,16 @@ struct Constraint {
 
 // open_karto's label: P1 = sensor pose of the source scan, P2 = the match mean (sensor pose).
 Constraint MakeConstraint(const Pose2& source_pose, const Pose2& target_pose, const Eigen::Matrix3d& covariance);
+
+// P2 seen from P1 (§5.1), with the arithmetic of Karto's LinkInfo::Update, which builds the
+// transform from P1 to the origin and applies it to P2: with R = Rz(-P1.theta) (Karto's
+// axis-angle matrix), xy = (-(R P1)) + R P2, each product summed as Karto's Matrix3 * Pose2
+// ((m0 x + m1 y) + m2 theta), and theta = normalize(P2.theta + (0 - P1.theta)). The
+// subtraction comes after the two rotations, so the result can differ in the last bit from
+// Between(P1, P2) = R (P2 - P1); those bits change which loops a long log closes. When P1 is
+// exactly the origin the transform is the identity, and when only its position is zero the
+// offset is zero, as in Karto's Transform.
+Pose2 LinkMeasurement(const Pose2& p1, const Pose2& p2);
 
 // Karto's 3x3 inverse by cofactors (§1.4): when |det| <= 1e-14 it returns the unscaled
 // cofactor matrix, as Karto's release builds do.

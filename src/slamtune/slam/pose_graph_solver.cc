@@ -5,32 +5,22 @@
 #include <cmath>
 
 #include "slamtune/common/error.h"
-#include "slamtune/common/karto_math.h"
 #include "slamtune/slam/ceres_solver.h"
 #include "slamtune/slam/spa_solver.h"
+#include "slamtune/slam/spa_system.h"
 
 namespace slamtune::slam {
 
-// §7.2.
+// §7.2, with the SPA system's arithmetic.
 Eigen::Vector3d EdgeError(const Pose2& a, const Pose2& b, const Pose2& z) {
-  const double c = std::cos(a.theta), s = std::sin(a.theta);
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  double et = b.theta - a.theta - z.theta;
-  if (et > kPi) {
-    et -= kTwoPi;
-  } else if (et < -kPi) {
-    et += kTwoPi;
-  }
-  return {c * dx + s * dy - z.x, -s * dx + c * dy - z.y, et};
+  return SpaEdgeError(MakeSpaNodeFrame(a), MakeSpaNodeFrame(b), z);
 }
 
 double GraphCost(std::span<const Pose2> nodes, std::span<const Edge> edges) {
-  double cost = 0.0;
-  for (const Edge& e : edges) {
-    const Eigen::Vector3d err = EdgeError(nodes[e.source], nodes[e.target], e.constraint.measurement);
-    cost += err.dot(e.constraint.information * err);
-  }
-  return cost;
+  std::vector<SpaNodeFrame> frames;
+  frames.reserve(nodes.size());
+  for (const Pose2& n : nodes) frames.push_back(MakeSpaNodeFrame(n));
+  return SpaGraphCost(frames, edges);
 }
 
 std::shared_ptr<const PoseGraphSolver> MakeSolver(const std::string& name, const std::string& ceres_loss) {

@@ -29,13 +29,21 @@ struct SolveSummary {
   bool usable = true;          // false: write nothing back (Ceres "solution unusable", §7.4)
   std::string termination;     // why it stopped
   double wall_s = 0.0;         // wall time of the solve (set by the caller that times it)
+  // Per iteration that took a step (spa only): the cost after the step and whether it was kept.
+  struct Step {
+    double cost = 0.0;
+    bool accepted = false;
+  };
+  std::vector<Step> steps;
+  int cholesky_failures = 0;   // spa: factorisations that failed (the step was then the gradient)
 };
 
 // §7.2 error of one edge for node values a (source) and b (target):
-// e_xy = R(a.theta)^T (b.xy - a.xy) - z.xy, e_theta = wrap(b.theta - a.theta - z.theta) (one +-2 pi wrap).
+// e_xy = R(a.theta)^T (b.xy - a.xy) - z.xy, e_theta = wrap(b.theta - a.theta - z.theta) (one +-2 pi wrap),
+// computed as the SPA back-end computes it (spa_system.h: R^T b.xy + (-(R^T a.xy)) - z.xy).
 Eigen::Vector3d EdgeError(const Pose2& a, const Pose2& b, const Pose2& z);
 
-// sum over edges of e^T Lambda e.
+// sum over edges, in order, of e^T Lambda e (SPA arithmetic).
 double GraphCost(std::span<const Pose2> nodes, std::span<const Edge> edges);
 
 class PoseGraphSolver {

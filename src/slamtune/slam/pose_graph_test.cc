@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 
+#include <cmath>
+
 namespace slamtune::slam {
 namespace {
 
@@ -36,6 +38,39 @@ TEST(PoseGraph, CorrelatedCovarianceRotatesAsSigmaPrimeEqualsRSigmaRt) {
   const Eigen::Matrix3d expected = (r * cov * r.transpose()).inverse();
   EXPECT_TRUE(c.information.isApprox(expected, 1e-9)) << c.information << "\n" << expected;
   EXPECT_EQ(c.measurement, Between(p1, p2));
+}
+
+// §5.1, Karto's LinkInfo::Update: R = Rz(-P1.theta) is applied to P1 and P2 separately and the
+// results subtracted, which rounds differently from R (P2 - P1) on this pair.
+TEST(LinkMeasurement, RotatesBothPosesBeforeSubtractingAsKarto) {
+  const Pose2 p1{-10.300000000000001, 10.57, -2.3300000000000001};
+  const Pose2 p2{-11.83, -15.24, 2.27};
+  const double c = std::cos(p1.theta), s = std::sin(p1.theta);
+  const double expected_x = -(c * p1.x + s * p1.y) + (c * p2.x + s * p2.y);
+  const double expected_y = -(-s * p1.x + c * p1.y) + (-s * p2.x + c * p2.y);
+  const Pose2 z = LinkMeasurement(p1, p2);
+  EXPECT_EQ(z.x, expected_x);
+  EXPECT_EQ(z.y, expected_y);
+  EXPECT_EQ(z.theta, NormalizeAngle(p2.theta - p1.theta));
+  EXPECT_EQ(z.x, 0x1.3c67c82e4d80ap+4);
+  const Pose2 between = Between(p1, p2);  // R (P2 - P1): one ulp away here
+  EXPECT_EQ(between.x, 0x1.3c67c82e4d80bp+4);
+  EXPECT_NE(z.x, between.x);
+  EXPECT_EQ(MakeConstraint(p1, p2, Eigen::Matrix3d::Identity()).measurement, z);
+}
+
+TEST(LinkMeasurement, SourceAtTheOriginUsesNoOffset) {
+  const Pose2 p2{3.25, -1.5, 2.0};
+  EXPECT_EQ(LinkMeasurement(Pose2{}, p2), p2);
+  // Position at the origin, heading not: only the rotation applies.
+  const Pose2 turned{0.0, 0.0, 0.5};
+  const double c = std::cos(0.5), s = std::sin(0.5);
+  const Pose2 z = LinkMeasurement(turned, p2);
+  EXPECT_EQ(z.x, c * p2.x + s * p2.y);
+  EXPECT_EQ(z.y, -s * p2.x + c * p2.y);
+  EXPECT_EQ(z.theta, 1.5);
+  // The heading difference is normalised.
+  EXPECT_NEAR(LinkMeasurement({1, 1, 3.0}, {2, 2, -3.0}).theta, kTwoPi - 6.0, 1e-15);
 }
 
 TEST(PoseGraph, KartoInverseReturnsCofactorsWhenSingular) {

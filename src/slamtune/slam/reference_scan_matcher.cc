@@ -79,7 +79,7 @@ double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& c
     ++count;
   }
   SLAMTUNE_CHECK(count > 0);
-  const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin, sum_cos)};
+  const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin / count, sum_cos / count)};
   if (!fine) {
     *cov = PositionalCovariance(average, best, center, offset_xy, step_xy, angle_step, probabilities_);
   } else {

@@ -274,7 +274,8 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     }
   }
   SLAMTUNE_CHECK(count > 0);
-  const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin, sum_cos)};
+  // Karto divides the cosine and sine sums by the count before atan2, as it does the positions.
+  const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin / count, sum_cos / count)};
 
   if (!fine) {
     *cov = PositionalCovariance(average, best, center, offset_xy, step_xy, angle_step, probabilities);

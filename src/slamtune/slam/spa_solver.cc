@@ -1,53 +1,33 @@
 #include "slamtune/slam/spa_solver.h"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include <Eigen/Core>
 
 #include <cmath>
 
 #include "slamtune/common/karto_math.h"
+#include "slamtune/slam/sparse_cholesky.h"
+#include "slamtune/slam/spa_system.h"
 
 namespace slamtune::slam {
 namespace {
 
-using SparseMatrix = Eigen::SparseMatrix<double>;
+std::vector<SpaNodeFrame> Frames(const std::vector<Pose2>& nodes) {
+  std::vector<SpaNodeFrame> frames;
+  frames.reserve(nodes.size());
+  for (const Pose2& n : nodes) frames.push_back(MakeSpaNodeFrame(n));
+  return frames;
+}
 
-// One Gauss-Newton system H dx = b over the free nodes (node 0 fixed), Jacobians of §7.2.
-void BuildSystem(const std::vector<Pose2>& nodes, std::span<const Edge> edges, std::vector<Eigen::Triplet<double>>* h,
-                 Eigen::VectorXd* b) {
-  h->clear();
-  b->setZero();
-  for (const Edge& e : edges) {
-    const Pose2& a = nodes[e.source];
-    const Pose2& p = nodes[e.target];
-    const Eigen::Vector3d err = EdgeError(a, p, e.constraint.measurement);
-    const double c = std::cos(a.theta), s = std::sin(a.theta);
-    const double dx = p.x - a.x, dy = p.y - a.y;
-    Eigen::Matrix3d ji, jj;
-    ji << -c, -s, -s * dx + c * dy,  //
-        s, -c, -c * dx - s * dy,     //
-        0, 0, -1;
-    jj << c, s, 0,  //
-        -s, c, 0,   //
-        0, 0, 1;
-    const Eigen::Matrix3d& lambda = e.constraint.information;
-    const int vi = e.source - 1, vj = e.target - 1;  // free-variable block indices
-    const Eigen::Matrix3d* jac[2] = {&ji, &jj};
-    const int block[2] = {vi, vj};
-    for (int r = 0; r < 2; ++r) {
-      if (block[r] < 0) continue;
-      const Eigen::Matrix3d jt_lambda = jac[r]->transpose() * lambda;
-      b->segment<3>(3 * block[r]) -= jt_lambda * err;
-      for (int q = 0; q < 2; ++q) {
-        if (block[q] < 0) continue;
-        const Eigen::Matrix3d hb = jt_lambda * *jac[q];
-        for (int row = 0; row < 3; ++row) {
-          for (int col = 0; col < 3; ++col) {
-            h->emplace_back(3 * block[r] + row, 3 * block[q] + col, hb(row, col));
-          }
-        }
-      }
-    }
+// Adds the step to every free node; the heading is wrapped once, as the SPA node update does.
+void ApplyStep(const Eigen::VectorXd& step, std::vector<Pose2>& nodes) {
+  for (std::size_t k = 1; k < nodes.size(); ++k) {
+    const Eigen::Index at = 3 * static_cast<Eigen::Index>(k - 1);
+    Pose2& n = nodes[k];
+    n.x += step(at);
+    n.y += step(at + 1);
+    n.theta += step(at + 2);
+    if (n.theta > kPi) n.theta -= kTwoPi;
+    if (n.theta < -kPi) n.theta += kTwoPi;
   }
 }
 
@@ -56,64 +36,48 @@ void BuildSystem(const std::vector<Pose2>& nodes, std::span<const Edge> edges, s
 SolveSummary SpaSolver::Solve(std::vector<Pose2>& nodes, std::span<const Edge> edges) const {
   SolveSummary summary;
   summary.backend = "spa";
-  summary.initial_cost = summary.final_cost = GraphCost(nodes, edges);
+  std::vector<SpaNodeFrame> frames = Frames(nodes);
+  summary.initial_cost = summary.final_cost = SpaGraphCost(frames, edges);
   const int num_free = static_cast<int>(nodes.size()) - 1;
   if (num_free <= 0 || edges.empty()) {
     summary.termination = "nothing to optimise";
     return summary;
   }
-  const int dim = 3 * num_free;
   double cost = summary.initial_cost;
   double lambda = options_.initial_lambda;  // §7.3: reset at every call
-  double mu = 2.0;
+  double lambda_increase = 2.0;             // and so is the increase factor
 
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd b(dim);
-  SparseMatrix h(dim, dim);
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
-  bool analysed = false;
+  SpaNormalEquations system(static_cast<int>(nodes.size()), edges);
+  SparseCholesky cholesky(system.size(), system.column_starts(), system.row_indices());
+  Eigen::VectorXd step;
   summary.termination = "iteration limit";
   for (int iter = 0; iter < options_.max_iterations; ++iter) {
     ++summary.iterations;
-    BuildSystem(nodes, edges, &triplets, &b);
-    h.setFromTriplets(triplets.begin(), triplets.end());
-    for (int k = 0; k < dim; ++k) h.coeffRef(k, k) *= 1.0 + lambda;  // Marquardt scaling
-    if (!analysed) {
-      cholesky.analyzePattern(h);
-      analysed = true;
-    }
-    cholesky.factorize(h);
-    if (cholesky.info() != Eigen::Success) {
-      summary.termination = "sparse Cholesky failed";
-      break;
-    }
-    const Eigen::VectorXd delta = cholesky.solve(b);
-    if (delta.squaredNorm() < options_.min_squared_step) {
+    system.Fill(frames, lambda);
+    step = system.rhs();
+    // On failure CSparse leaves the right-hand side in place and sba goes on with it as the
+    // step; the same happens here (the summary notes it).
+    if (!cholesky.Solve(system.values(), step.data())) ++summary.cholesky_failures;
+    if (step.squaredNorm() < options_.min_squared_step) {
       summary.termination = "step below tolerance";
       break;
     }
     const std::vector<Pose2> old = nodes;
-    for (int k = 0; k < num_free; ++k) {
-      Pose2& n = nodes[k + 1];
-      n.x += delta(3 * k);
-      n.y += delta(3 * k + 1);
-      n.theta += delta(3 * k + 2);
-      if (n.theta > kPi) {  // one wrap, as the SPA node update
-        n.theta -= kTwoPi;
-      } else if (n.theta < -kPi) {
-        n.theta += kTwoPi;
-      }
-    }
-    const double new_cost = GraphCost(nodes, edges);
-    if (new_cost < cost) {
+    ApplyStep(step, nodes);
+    std::vector<SpaNodeFrame> new_frames = Frames(nodes);
+    const double new_cost = SpaGraphCost(new_frames, edges);
+    const bool accepted = new_cost < cost;
+    if (accepted) {
       cost = new_cost;
+      frames = std::move(new_frames);
       lambda *= 0.5;
       ++summary.accepted_steps;
     } else {
       nodes = old;
-      lambda *= mu;
-      mu *= 2.0;
+      lambda *= lambda_increase;
+      lambda_increase *= 2.0;
     }
+    summary.steps.push_back({new_cost, accepted});
   }
   summary.final_cost = cost;
   summary.updated = summary.accepted_steps > 0;

@@ -1,9 +1,14 @@
 // slam_karto's back-end: sparse Levenberg-Marquardt of Konolige et al. 2010 ("Efficient sparse
 // pose adjustment for 2D mapping", IROS), with the schedule of SysSPA2d::doSPA(40)
-// (karto-algorithm.md §7.3): lambda = 1e-4 and mu = 2 at every call; H = sum J^T Lambda J over
-// free nodes with its diagonal scaled by (1 + lambda); solve by sparse Cholesky; stop when
-// |delta|^2 < 1e-16 (delta not applied); on a cost decrease accept and halve lambda, else
-// restore, lambda *= mu and mu *= 2; at most 40 iterations; angles wrapped once after a step.
+// (karto-algorithm.md §7.3): lambda = 1e-4 and an increase factor of 2 at every call; H = sum
+// J^T Lambda J over free nodes with its diagonal scaled by (1 + lambda); solve by CSparse's
+// sparse Cholesky; stop when |delta|^2 < (1e-8)^2 (delta not applied); on a cost decrease
+// accept and halve lambda, else restore, multiply lambda by the factor and double the factor;
+// at most 40 iterations; angles wrapped once after a step.
+//
+// The arithmetic (residual, Jacobians, block assembly, matrix layout, ordering) is sba's, in
+// its order of operations (spa_system.h, sparse_cholesky.h), so that solves give the same bits
+// as slam_karto's and the later decisions of the front end are the same.
 #pragma once
 
 #include "slamtune/slam/pose_graph_solver.h"
@@ -13,7 +18,7 @@ namespace slamtune::slam {
 struct SpaOptions {
   int max_iterations = 40;         // doSPA(40)
   double initial_lambda = 1e-4;    // reset at every call
-  double min_squared_step = 1e-16;  // stop when |delta|^2 is below this
+  double min_squared_step = 1e-8 * 1e-8;  // stop when |delta|^2 is below this (sba's product, not 1e-16)
 };
 
 class SpaSolver final : public PoseGraphSolver {
