@@ -16,9 +16,28 @@
 
 namespace slamtune::report {
 
+// The recommendation in plain words, for the report's "Why this recommendation" section.
+struct RecommendationReading {
+  std::string why;                    // how many individuals share the set, or the fallback and why
+  std::vector<std::string> warnings;  // each recommended value that sits on a bound of its search range
+  std::vector<std::string> next;      // what to do next
+};
+
+// Reads `r`'s recommendation: its share of the final population (settings "population"), whether
+// it is also the knee, which of its values sit on a bound (an integer on the bound itself, a real
+// within 1 % of the range from it), and the next steps those findings and the verdict call for.
+RecommendationReading ReadRecommendation(const optim::OptimizeResult& r);
+
 // The PNG bytes of the figures (the same bytes as the files beside report.html).
 struct OptimizeFigures {
   std::vector<std::uint8_t> maps;                                       // empty: no candidates
+  struct MapPanel {
+    std::string label;  // "recommended = knee" when they are the same set
+    std::string file;   // the panel's PNG beside report.html
+    std::vector<std::uint8_t> png;
+    std::string caption;
+  };
+  std::vector<MapPanel> map_panels;  // one per distinct candidate parameter set
   std::vector<std::pair<int, std::vector<std::uint8_t>>> populations;  // (generation, png)
   std::vector<std::uint8_t> evolution;                                  // empty: no snapshots
   std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
