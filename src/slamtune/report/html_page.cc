@@ -19,6 +19,7 @@ h3{font-size:1.1em}
 table{border-collapse:collapse;font-size:.92em}
 th,td{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top;overflow-wrap:break-word}
 th{background:#f2f2f2}
+.kv td{overflow-wrap:anywhere}
 tr:nth-child(even) td{background:#fafafa}
 .verdict{background:#e8f3fa;border-left:5px solid #0072b2;padding:.7em 1em;font-weight:600}
 .note{background:#fff8e6;border-left:5px solid #e69f00;padding:.7em 1em}
@@ -66,7 +67,7 @@ void HtmlPage::Paragraph(const std::string& text, const std::string& css_class) 
 }
 
 void HtmlPage::KeyValues(const std::vector<std::pair<std::string, std::string>>& items) {
-  body_ += "<div class=\"table\"><table>\n";
+  body_ += "<div class=\"table\"><table class=\"kv\">\n";
   for (const auto& [key, value] : items) {
     body_ += "<tr><th>" + HtmlEscape(key) + "</th><td>" + HtmlEscape(value) + "</td></tr>\n";
   }

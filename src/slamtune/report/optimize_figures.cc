@@ -168,7 +168,8 @@ std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResu
   for (const auto& [c, v] : PlottableCandidates(result)) {
     if (c->label == "recommended" || c->label == "knee") shown.push_back(v);
   }
-  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -std::numeric_limits<double>::infinity());
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> lo(m, inf), hi(m, -inf), most(m, -inf);
   for (const auto& v : shown) {
     for (std::size_t k = 0; k < m && k < v.size(); ++k) {
       if (!std::isfinite(v[k])) continue;
@@ -176,13 +177,18 @@ std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResu
       hi[k] = std::max(hi[k], v[k]);
     }
   }
+  for (const auto& v : all)
+    for (std::size_t k = 0; k < m && k < v.size(); ++k)
+      if (std::isfinite(v[k])) most[k] = std::max(most[k], v[k]);
   std::vector<std::optional<AxisLimits>> out(m);
   for (std::size_t k = 0; k < m; ++k) {
     if (lo[k] > hi[k]) continue;
     double range = hi[k] - lo[k];
     if (!(range > 0.0)) range = std::max(std::abs(lo[k]) * 0.1, 1e-6);  // a single value: a band around it
-    const double pad = 0.12 * range;  // a margin around the front, so its extreme points sit off the frame
-    out[k] = AxisLimits{lo[k] - pad, hi[k] + pad};
+    // Up to one front range beyond the front's worst values, where the population still is.
+    const double upper = std::max(hi[k], std::min(most[k], hi[k] + range));
+    const double pad = 0.08 * (upper - lo[k] > 0.0 ? upper - lo[k] : range);  // extreme points off the frame
+    out[k] = AxisLimits{lo[k] - pad, upper + pad};
   }
   return out;
 }

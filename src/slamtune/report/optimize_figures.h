@@ -42,10 +42,11 @@ struct FigureOptions {
 };
 
 // Axis limits per objective (the result's objectives order), shared by every population
-// figure: the range of the non-dominated front of all snapshots' valid individuals together,
-// and of the recommended and knee sets, plus a 12 % margin on each side. Far-off individuals
-// (a broken map scores orders of magnitude worse) would otherwise squeeze the front into a
-// corner; the figures count what falls outside. nullopt for an objective with no valid value.
+// figure: from the best value of the non-dominated front of all snapshots' valid individuals
+// together (and of the recommended and knee sets) to at most one front range beyond its worst
+// value, plus an 8 % margin. Far-off individuals (a broken map scores orders of magnitude
+// worse) would otherwise squeeze the front into a corner; the figures count what falls
+// outside. nullopt for an objective with no valid value.
 std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResult& result);
 
 // One map panel per distinct parameter set among the candidates (MergedCandidates): labelled,

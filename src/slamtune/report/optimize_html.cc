@@ -295,8 +295,9 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   page.Heading(2, "Population in objective space", "population");
   if (!f.populations.empty()) {
     page.Paragraph("Every panel uses the same axes, fitted to the non-dominated front of all generations shown (black "
-                   "diamonds mark each generation's front) with a margin, so the generations compare directly; a "
-                   "panel's title counts the individuals that lie outside its axes (usually runs whose map broke).");
+                   "diamonds mark each generation's front) and reaching one front's width beyond it, so the generations "
+                   "compare directly; a panel's title counts the individuals that lie outside its axes (usually runs "
+                   "whose map broke).");
   }
   std::vector<HtmlPage::Figure> generations;
   for (const auto& [generation, png] : f.populations) {
@@ -320,6 +321,7 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   if (r.settings.is_object()) {
     for (const auto& [key, value] : r.settings.items()) {
       if (key == "engine") FlattenSettings(value, "", engine);
+      else if (key == "space") settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
       else FlattenSettings(value, key, settings);
     }
   }
