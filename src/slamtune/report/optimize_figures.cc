@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -249,6 +251,138 @@ cv::Mat PopulationEvolutionFigure(const optim::OptimizeResult& result, const Fig
   if (groups.empty()) groups.push_back({"no snapshots", {}, {}});
   return ProjectionPanels(groups, result, false, false, options,
                           "Population over the generations, axes on the front" + FailedNote(failed));
+}
+
+namespace {
+
+std::optional<double> ParamOf(const optim::EvaluationRecord& r, const std::string& name) {
+  const auto it = r.params.find(name);
+  if (it == r.params.end() || !std::isfinite(it->second)) return std::nullopt;
+  return it->second;
+}
+
+AxisLimits BoundsOf(const optim::Dimension& d) {
+  const double range = d.upper > d.lower ? d.upper - d.lower : std::max(std::abs(d.lower), 1.0);
+  return {d.lower - 0.04 * range, (d.upper > d.lower ? d.upper : d.lower + range) + 0.04 * range};
+}
+
+std::string DimensionTitle(const optim::Dimension& d) {
+  const std::string s = ShortParamName(d.name);
+  return s == d.name ? d.name : s + " = " + d.name;
+}
+
+// Candidates' markers at (their value of x, their value of y).
+void AddCandidates(std::vector<Series>& series, const optim::OptimizeResult& result,
+                   const std::function<std::optional<std::pair<double, double>>(const optim::Candidate&)>& at) {
+  for (const CandidateGroup& g : MergedCandidates(result)) {
+    for (const auto* c : g.members) {
+      if (const auto p = at(*c)) series.push_back(CandidateSeries(*c, p->first, p->second));
+    }
+  }
+}
+
+}  // namespace
+
+cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOptions& options) {
+  options.Validate();
+  const auto& dims = result.space.dimensions;
+  if (dims.empty() || result.evaluations.empty() || result.objectives.size() == 0) return {};
+  const optim::Objective first = result.objectives.objectives()[0];
+  const std::string objective = ObjectiveAt(result, 0).short_name;
+  std::vector<double> values;
+  for (const auto& e : result.evaluations)
+    if (e.status == "ok") values.push_back(optim::ValueOf(e, first));
+  std::sort(values.begin(), values.end());
+
+  if (dims.size() == 2) {
+    // Quarters of the first objective over the successful sets.
+    auto quantile = [&](double q) { return values.empty() ? 0.0 : values[static_cast<std::size_t>(q * (values.size() - 1))]; };
+    const std::array<double, 3> cut = {quantile(0.25), quantile(0.5), quantile(0.75)};
+    const std::array<std::size_t, 4> colours = {2, 5, 4, 3};  // green, sky blue, orange, purple
+    std::vector<Series> series;
+    for (int q = 0; q < 4; ++q) {
+      const std::string range = q == 0   ? fmt::format("<= {}", Readable(cut[0]))
+                                : q == 3 ? fmt::format("> {}", Readable(cut[2]))
+                                         : fmt::format("{}-{}", Readable(cut[q - 1]), Readable(cut[q]));
+      Series s = MakeSeries(fmt::format("{} {}", objective, range), {}, {});
+      s.colour = PaletteColour(colours[q]);
+      s.marker = Marker::kCircle;
+      s.marker_size = 8;
+      series.push_back(std::move(s));
+    }
+    Series failed = MakeSeries("failed run", {}, {});
+    failed.colour = cv::Scalar(150, 150, 150);
+    failed.marker = Marker::kCross;
+    failed.marker_size = 8;
+    for (const auto& e : result.evaluations) {
+      const auto x = ParamOf(e, dims[0].name), y = ParamOf(e, dims[1].name);
+      if (!x || !y) continue;
+      Series* s = &failed;
+      if (e.status == "ok") {
+        const double v = optim::ValueOf(e, first);
+        const int q = v <= cut[0] ? 0 : v <= cut[1] ? 1 : v <= cut[2] ? 2 : 3;
+        s = &series[static_cast<std::size_t>(q)];
+      }
+      s->x.push_back(*x);
+      s->y.push_back(*y);
+    }
+    if (!failed.x.empty()) series.push_back(std::move(failed));
+    AddCandidates(series, result, [&](const optim::Candidate& c) -> std::optional<std::pair<double, double>> {
+      const auto x = ParamOf(c.record, dims[0].name), y = ParamOf(c.record, dims[1].name);
+      if (!x || !y) return std::nullopt;
+      return std::pair{*x, *y};
+    });
+    PlotOptions o = PanelOptions(options);
+    o.width = 2 * options.panel_width;
+    o.height = options.panel_height + options.panel_height / 2;
+    o.x_limits = BoundsOf(dims[0]);
+    o.y_limits = BoundsOf(dims[1]);
+    o.x_label = DimensionTitle(dims[0]);
+    o.y_label = DimensionTitle(dims[1]);
+    o.title = fmt::format("The {} evaluated parameter sets, coloured by {} (quarters, lower is better)",
+                          result.evaluations.size(), objective);
+    return RenderPlot(series, o).image;
+  }
+
+  const auto limits = ObjectiveLimits(result);
+  std::vector<cv::Mat> panels;
+  int most_outside = 0;
+  for (const auto& d : dims) {
+    Series all = MakeSeries(fmt::format("evaluated sets ({})", values.size()), {}, {});
+    all.colour = PaletteColour(5);
+    all.marker = Marker::kCircle;
+    all.marker_size = 6;
+    int outside = 0;
+    for (const auto& e : result.evaluations) {
+      const auto x = ParamOf(e, d.name);
+      if (!x || e.status != "ok") continue;
+      const double v = optim::ValueOf(e, first);
+      all.x.push_back(*x);
+      all.y.push_back(v);
+      if (limits[0] && (v < limits[0]->lower || v > limits[0]->upper)) ++outside;
+    }
+    std::vector<Series> series = {all};
+    AddCandidates(series, result, [&](const optim::Candidate& c) -> std::optional<std::pair<double, double>> {
+      const auto x = ParamOf(c.record, d.name);
+      if (!x || c.record.status != "ok") return std::nullopt;
+      return std::pair{*x, optim::ValueOf(c.record, first)};
+    });
+    PlotOptions o = PanelOptions(options);
+    o.x_limits = BoundsOf(d);
+    o.y_limits = limits[0];
+    o.x_label = DimensionTitle(d);
+    o.y_label = ObjectiveAt(result, 0).title;
+    o.title = ShortParamName(d.name);
+    o.legend = panels.empty();
+    panels.push_back(RenderPlot(series, o).image);
+    most_outside = std::max(most_outside, outside);
+  }
+  GridOptions g;
+  g.columns = 3;
+  g.title = fmt::format("{} of every evaluated parameter set against each parameter (lower is better){}", objective,
+                        most_outside > 0 ? fmt::format("; {} of {} sets lie outside the axes", most_outside, values.size())
+                                         : "");
+  return ComposeGrid(panels, g);
 }
 
 cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions& options) {

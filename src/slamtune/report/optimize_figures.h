@@ -73,6 +73,14 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
                                const ErrorCorrelationSummary& correlation, const optim::OptimizeResult& result,
                                const FigureOptions& options);
 
+// Where the search went: every evaluated parameter set in the search space, with the
+// candidates marked. Two varied parameters: one scatter of the two, each set coloured by the
+// quarter of the first objective it falls in (best quarter green ... worst quarter purple,
+// failed runs grey). Otherwise one panel per varied parameter (three per row): the first
+// objective against the parameter's value, on the population figures' objective axes (the
+// figure's title counts the sets outside). Empty when nothing varied or nothing was evaluated.
+cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOptions& options);
+
 // The base configuration's sequential matches along the log (response against seconds into the
 // log): every match, those that ended at the search's edge, and the breaks
 // (slam/front_end_evidence.h), so a user sees where the map broke.

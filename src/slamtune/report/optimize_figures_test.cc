@@ -69,5 +69,21 @@ TEST(CandidateMapPanels, OnePanelPerParameterSet) {
   EXPECT_FALSE(panels[0].image.empty());
 }
 
+TEST(ParameterSpaceFigure, OnePlotForTwoParametersAPanelEachOtherwise) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  ASSERT_EQ(r.space.dimensions.size(), 2u);
+  const cv::Mat two = ParameterSpaceFigure(r, FigureOptions{});
+  ASSERT_FALSE(two.empty());
+  EXPECT_EQ(two.cols, 2 * FigureOptions{}.panel_width);
+  r.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
+  const cv::Mat three = ParameterSpaceFigure(r, FigureOptions{});
+  EXPECT_GT(three.cols, 3 * FigureOptions{}.panel_width);  // three panels in a row
+  r.space.dimensions.clear();
+  EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+  r = testing::FakeOptimizeResult(false);
+  r.evaluations.clear();
+  EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+}
+
 }  // namespace
 }  // namespace slamtune::report

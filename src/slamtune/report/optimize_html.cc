@@ -311,6 +311,14 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   }
   if (f.populations.empty()) page.Paragraph("No population snapshot was recorded.");
 
+  if (!f.parameter_space.empty()) {
+    page.Heading(2, "Parameter space", "parameters");
+    page.Image(f.parameter_space, "evaluated parameter sets in the search space",
+               "Where the search went: every evaluated parameter set, with the candidates marked, inside the search "
+               "range of each parameter (parameter_space.png). A recommendation at the edge of a range may lie "
+               "beyond it.");
+  }
+
   if (correlation) CorrelationSection(page, f, *correlation);
 
   page.Heading(2, "What the objectives can tell");
@@ -326,13 +334,24 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
     }
   }
   if (!settings.empty()) page.KeyValues(settings);
+  // The search ranges, with the default and recommended values beside them.
+  const optim::Candidate* base = r.Find("default");
+  const optim::Candidate* rec = r.Find("recommended");
+  auto value_of = [](const optim::Candidate* c, const std::string& name) {
+    if (c == nullptr) return std::string();
+    const auto it = c->record.params.find(name);
+    return it == c->record.params.end() ? std::string() : FormatParam(it->second);
+  };
   std::vector<std::vector<std::string>> dims;
   for (const auto& d : r.space.dimensions) {
-    dims.push_back({d.name + " (" + ShortParamName(d.name) + ")", FormatParam(d.lower), FormatParam(d.upper),
-                    d.integer ? "int" : "real"});
+    const std::string symbol = ShortParamName(d.name);
+    dims.push_back({symbol == d.name ? d.name : d.name + " (" + symbol + ")", FormatParam(d.lower),
+                    FormatParam(d.upper), d.integer ? "int" : "real", value_of(base, d.name), value_of(rec, d.name)});
   }
-  for (const auto& [name, value] : r.space.fixed) dims.push_back({name, FormatParam(value), FormatParam(value), "fixed"});
-  page.Table({"parameter", "lower", "upper", "type"}, dims);
+  for (const auto& [name, value] : r.space.fixed) {
+    dims.push_back({name, FormatParam(value), FormatParam(value), "fixed", value_of(base, name), value_of(rec, name)});
+  }
+  page.Table({"parameter", "lower", "upper", "type", "default", "recommended"}, dims);
   if (!engine.empty()) {
     page.BeginDetails(fmt::format("Engine settings ({} values: base parameters, metric options, log identity)",
                                   engine.size()));

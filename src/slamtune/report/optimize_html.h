@@ -40,6 +40,7 @@ struct OptimizeFigures {
   std::vector<MapPanel> map_panels;  // one per distinct candidate parameter set
   std::vector<std::pair<int, std::vector<std::uint8_t>>> populations;  // (generation, png)
   std::vector<std::uint8_t> evolution;                                  // empty: no snapshots
+  std::vector<std::uint8_t> parameter_space;                            // empty: nothing varied or evaluated
   std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
   std::vector<std::uint8_t> front_end;                                  // empty: no base front end
 };

@@ -134,6 +134,9 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   if (!result.snapshots.empty()) {
     figures.evolution = out.Png(PopulationEvolutionFigure(result, options), "population_evolution.png");
   }
+  if (const cv::Mat space = ParameterSpaceFigure(result, options); !space.empty()) {
+    figures.parameter_space = out.Png(space, "parameter_space.png");
+  }
   if (gt) {
     figures.objective_vs_error =
         out.Png(ObjectiveVsErrorFigure(gt_runs, *summary.correlation, result, options), "objective_vs_error.png");

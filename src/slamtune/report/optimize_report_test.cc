@@ -48,7 +48,7 @@ TEST(WriteOptimizeReport, WritesEveryFileWithGroundTruth) {
         "map_recommended.pgm", "map_recommended.yaml", "map_knee.pgm", "map_knee.yaml", "map_worst.pgm",
         "map_worst.yaml", "population_gen1.png", "population_gen3.png", "population_gen5.png",
         "population_evolution.png", "objective_vs_error.png", "map_recommended.png", "map_knee.png",
-        "map_worst.png", "map_default.png", "report.html"}) {
+        "map_worst.png", "map_default.png", "parameter_space.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
     EXPECT_THAT(summary.files, ::testing::Contains(std::string(name)));
   }
@@ -173,8 +173,8 @@ TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   const std::string html = Slurp(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("The recommendation &lt;r=3, g=12&gt; beats the defaults &amp; closes more loops."));
   EXPECT_THAT(html, Not(HasSubstr("<r=3")));
-  // four maps, three generations, evolution, objective vs error.
-  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 9);
+  // four maps, three generations, evolution, parameter space, objective vs error.
+  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 10);
   EXPECT_THAT(html, Not(HasSubstr("<script")));
   EXPECT_THAT(html, Not(HasSubstr("http://")));
   EXPECT_THAT(html, Not(HasSubstr("https://")));
@@ -238,7 +238,7 @@ TEST(WriteOptimizeReport, IsDeterministic) {
     EXPECT_EQ(Slurp(entry.path()), Slurp(b / entry.path().filename())) << entry.path().filename();
     ++compared;
   }
-  EXPECT_EQ(compared, 24);
+  EXPECT_EQ(compared, 25);
 }
 
 TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {
