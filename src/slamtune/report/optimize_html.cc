@@ -84,31 +84,31 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.KeyValues(items);
 }
 
+// The verdict, why this set was recommended (with any warning), then what to do and how.
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
   page.Paragraph(r.verdict.empty() ? "No verdict was given." : r.verdict, "verdict");
+  RecommendationReading reading;
+  if (r.Find("recommended") != nullptr) {
+    reading = ReadRecommendation(r);
+    page.Heading(3, "Why this recommendation");
+    page.Paragraph(reading.why);
+    for (const std::string& w : reading.warnings) page.Paragraph(w, "warning");
+  }
+  if (!r.lowest_error_label.empty()) {
+    page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
+                   r.lowest_error_label + "\".");
+  }
+  if (!reading.next.empty()) {
+    page.Heading(3, "What to do next");
+    page.List(reading.next);
+  }
   if (!r.how_to_load.empty()) {
     page.Paragraph(r.changes.empty() ? "Keep " + r.base_label + ": the parameter files repeat it unchanged."
                                      : "Changes from " + r.base_label + ":");
     if (!r.changes.empty()) page.List(r.changes);
     page.Paragraph("To run it on the robot:");
     page.List(r.how_to_load);
-  }
-  if (!r.lowest_error_label.empty()) {
-    page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
-                   r.lowest_error_label + "\".");
-  }
-}
-
-void RecommendationSection(HtmlPage& page, const optim::OptimizeResult& r) {
-  if (r.Find("recommended") == nullptr) return;
-  const RecommendationReading reading = ReadRecommendation(r);
-  page.Heading(2, "Why this recommendation");
-  page.Paragraph(reading.why);
-  for (const std::string& w : reading.warnings) page.Paragraph(w, "warning");
-  if (!reading.next.empty()) {
-    page.Paragraph("What to do next:");
-    page.List(reading.next);
   }
 }
 
@@ -195,7 +195,9 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
   const optim::Candidate* rec = r.Find("recommended");
   if (rec == nullptr) return out;
   const optim::Candidate* knee = r.Find("knee");
-  const std::string params = ParamSummary(rec->record.params, r.space);
+  // The set itself only when it is short (two or three parameters); the tables list it anyway.
+  const std::string summary = ParamSummary(rec->record.params, r.space);
+  const std::string params = summary.size() <= 60 ? " (" + summary + ")" : "";
   int population = 0;
   if (r.settings.is_object() && r.settings.contains("population") && r.settings["population"].is_number_integer()) {
     population = r.settings["population"].get<int>();
@@ -206,27 +208,29 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
   if (share <= 1) {
     out.why = fmt::format(
         "The rule is the seed paper's: recommend the parameter set most individuals of the final population share. "
-        "Here no set is shared by more than one individual{}, so there is no majority to go by: the recommendation "
-        "({}) falls back to the tie-break, the individual with the lowest sum of objectives normalised over the "
+        "Here no set is shared by more than one individual{}, so there is no majority to go by: the recommendation{} "
+        "falls back to the tie-break, the individual with the lowest sum of objectives normalised over the "
         "population. The population had not converged.",
         of, params);
   } else if (converged) {
-    out.why = fmt::format("{}{} individuals of the final population hold the recommended set ({}): the search "
+    out.why = fmt::format("{}{} individuals of the final population hold the recommended set{}: the search "
                           "converged on it, as the seed paper's rule (the set most individuals share) asks.",
                           share, of, params);
   } else {
     out.why = fmt::format(
-        "The recommended set ({}) is the one most individuals of the final population share, but only {}{} hold it: "
+        "The recommended set{} is the one most individuals of the final population share, but only {}{} hold it: "
         "the largest group, not a majority, so the search had not settled and the choice is tentative.",
         params, share, of);
   }
   if (knee != nullptr && knee != rec) {
     const bool same = !rec->record.key.empty() ? rec->record.key == knee->record.key
                                                : rec->record.params == knee->record.params;
+    const std::string knee_summary = ParamSummary(knee->record.params, r.space);
     out.why += same ? " It is also the knee of the final front (the front's member closest to the ideal point), so "
                       "both rules agree."
-                    : " The knee of the final front is another set (" + ParamSummary(knee->record.params, r.space) +
-                          "): compare the two maps below.";
+                    : " The knee of the final front is another set" +
+                          (knee_summary.size() <= 60 ? " (" + knee_summary + ")" : std::string()) +
+                          ": compare the two maps below.";
   }
 
   for (const optim::Dimension& d : r.space.dimensions) {
@@ -236,17 +240,18 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
     const double tolerance = d.integer ? 0.0 : 0.01 * (d.upper - d.lower);
     const bool low = v <= d.lower + tolerance, high = v >= d.upper - tolerance;
     if (!low && !high) continue;
+    const std::string symbol = ShortParamName(d.name);
     out.warnings.push_back(fmt::format(
-        "{} = {} sits on the {} bound of its search range [{}, {}] ({}): the best value may lie beyond it. Widen the "
-        "range on that side (a --space file: \"vary: {{{}: {{min: ..., max: ...}}}}\") and run again before trusting "
-        "this value.",
-        ShortParamName(d.name), FormatParam(v), low ? "lower" : "upper", FormatParam(d.lower), FormatParam(d.upper),
-        d.name, d.name));
+        "{} = {} sits on the {} bound of its search range [{}, {}]{}: the best value may lie beyond it. Widen the "
+        "range on that side (--space FILE, whose vary: gives each searched parameter its min and max) and run again "
+        "before trusting this value.",
+        symbol, FormatParam(v), low ? "lower" : "upper", FormatParam(d.lower), FormatParam(d.upper),
+        symbol == d.name ? "" : " (" + d.name + ")"));
   }
 
   if (r.verdict_kind == optim::VerdictKind::kBetter) {
     out.next.push_back("Load the recommended parameters (best.yaml, or best_slam_karto.yaml for slam_karto) as shown "
-                       "above, and map a log the tuning did not see to confirm.");
+                       "below, and map a log the tuning did not see to confirm.");
   } else if (r.verdict_kind == optim::VerdictKind::kFailed) {
     out.next.push_back("Read why the run failed (status column of the candidates) before changing anything.");
   } else {
@@ -273,9 +278,8 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   const std::string log_name = std::filesystem::path(r.log_path).filename().string();
   HtmlPage page("slamtune optimize: " + log_name);
   page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
-  RunSection(page, r);
   VerdictSection(page, r);
-  RecommendationSection(page, r);
+  RunSection(page, r);
   FrontEndSection(page, r, f);
   CandidatesSection(page, r, correlation.has_value());
 

@@ -1,8 +1,9 @@
 // report.html of `slamtune optimize`: one self-contained page (html_page.h) an engineer reads
-// after the run: the log and settings, the verdict, the candidates (parameters, objectives,
-// loop closures, errors), the loop-closure scan indices, the maps, the population figures,
-// the objectives against ground-truth error with their rank correlations, and what the
-// objectives can and cannot tell.
+// after the run: the verdict, why this set was recommended (with a warning for a value on a
+// bound of its range) and what to do next, the run, the candidates (parameters, objectives,
+// loop closures, errors), the maps with their loop closures, the population and
+// parameter-space figures, the objectives against ground-truth error with their rank
+// correlations, what the objectives can and cannot tell, and the settings.
 #pragma once
 
 #include <cstdint>
