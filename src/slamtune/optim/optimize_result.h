@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slamtune/io/map_image.h"
@@ -20,11 +21,28 @@
 
 namespace slamtune::optim {
 
+// A loop closure as drawn on a map: the world positions (m, the run's final robot poses) of
+// the scan that closed the loop and of the earlier scan its loop edge starts from.
+struct LoopEdge {
+  double from_x = 0.0, from_y = 0.0;  // the earlier scan (chain member linked to)
+  double to_x = 0.0, to_y = 0.0;      // the scan that closed the loop
+  int log_index = -1;                 // log scan index of the scan that closed the loop
+};
+
+// What re-running one parameter set gives the report: its map and its loop closures on it.
+struct CandidateMap {
+  io::MapImage map;
+  std::vector<LoopEdge> loop_edges;  // one per accepted loop closure
+  std::vector<std::pair<double, double>> path;  // robot positions (m) of the processed scans, in order
+};
+
 struct Candidate {
   std::string label;        // "recommended", "knee", "worst", "default"
   std::string description;  // one line: how it was chosen
   EvaluationRecord record;
   io::MapImage map;         // the map of its SLAM run (empty when not rendered)
+  std::vector<LoopEdge> loop_edges;  // its loop closures in the map's world frame (empty when not rendered)
+  std::vector<std::pair<double, double>> path;  // its robot positions (m), in order (empty when not rendered)
 };
 
 struct GenerationSnapshot {

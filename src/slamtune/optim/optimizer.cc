@@ -304,7 +304,12 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     }
   }
   if (hooks.render_map) {
-    for (auto& c : result.candidates) c.map = hooks.render_map(c.record.params);
+    for (auto& c : result.candidates) {
+      CandidateMap rendered = hooks.render_map(c.record.params);
+      c.map = std::move(rendered.map);
+      c.loop_edges = std::move(rendered.loop_edges);
+      c.path = std::move(rendered.path);
+    }
   }
   std::sort(result.snapshots.begin(), result.snapshots.end(),
             [](const auto& a, const auto& b) { return a.generation < b.generation; });

@@ -49,8 +49,8 @@ struct OptimizeSettings {
 struct OptimizeHooks {
   // A progress line; `force` for lines that must be shown (generation ends).
   std::function<void(const std::string& line, bool force)> progress;
-  // Renders the map of one parameter set (for the report); may be empty.
-  std::function<io::MapImage(const Assignment&)> render_map;
+  // Renders the map and loop closures of one parameter set (for the report); may be empty.
+  std::function<CandidateMap(const Assignment&)> render_map;
   // Called once the run's start is committed (or the stored run accepted for resuming),
   // before the first evaluation; may be empty.
   std::function<void()> started;

@@ -110,9 +110,23 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   return record;
 }
 
-io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {
+CandidateMap RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {
   const slam::MapperParams params = context.ParamsFor(assignment);
-  return GridOf(RunToEnd(context, params), params).ToMapImage();
+  const slam::LogRunner runner = RunToEnd(context, params);
+  CandidateMap out;
+  out.map = GridOf(runner, params).ToMapImage();
+  const std::vector<slam::LaserScan>& scans = runner.mapper().scans();
+  const auto valid = [&](int id) { return id >= 0 && static_cast<std::size_t>(id) < scans.size(); };
+  for (const slam::LoopClosureRecord& loop : runner.Summary().loop_closures) {
+    const int from = loop.linked_to >= 0 ? loop.linked_to : loop.chain_first;
+    if (!valid(from) || !valid(loop.node)) continue;
+    const Pose2& a = scans[static_cast<std::size_t>(from)].corrected_pose();
+    const Pose2& b = scans[static_cast<std::size_t>(loop.node)].corrected_pose();
+    out.loop_edges.push_back({a.x, a.y, b.x, b.y, loop.log_index});
+  }
+  out.path.reserve(scans.size());
+  for (const slam::LaserScan& scan : scans) out.path.emplace_back(scan.corrected_pose().x, scan.corrected_pose().y);
+  return out;
 }
 
 void ShareWork(SlamEvaluationContext& context, std::size_t share_mb) {

@@ -14,6 +14,7 @@
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/map_score_cache.h"
+#include "slamtune/optim/optimize_result.h"
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
@@ -67,7 +68,10 @@ struct SlamRun {
 EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment,
                               SlamRun* run = nullptr);
 
-// The map of the SLAM run of `assignment` (for the report's figures).
-io::MapImage RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment);
+// The map of the SLAM run of `assignment` and its loop closures as edges between the final
+// robot poses of the two scans each joins (for the report's figures). A loop closure that
+// added no edge (linked_to = -1) is drawn from the first scan of its candidate chain. The path
+// is the final robot position of every processed scan.
+CandidateMap RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment);
 
 }  // namespace slamtune::optim

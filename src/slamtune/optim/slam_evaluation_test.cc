@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <random>
@@ -202,6 +203,33 @@ TEST(SlamEvaluation, AnEmptyMapIsAFailedRun) {
   EXPECT_NE(r.reason.find("no occupied cell"), std::string::npos) << r.reason;
   context.base.min_laser_range = 0.0;
   EXPECT_EQ(EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}}).status, "ok");
+}
+
+// The report's map of a parameter set carries one loop edge per loop closure of its evaluation,
+// both ends inside the map.
+TEST(SlamEvaluation, RenderedMapCarriesTheLoopClosuresAsEdges) {
+  SlamEvaluationContext context;
+  context.log = WorldSlice("office", 1200);
+  const Assignment set = {{"loop_search_maximum_distance", 5.0}, {"loop_match_minimum_chain_size", 6.0}};
+  const EvaluationRecord record = EvaluateSlam(context, set);
+  const CandidateMap rendered = RenderSlamMap(context, set);
+  ASSERT_GT(record.loop_closures, 0) << "the slice closes no loop: the test checks nothing";
+  EXPECT_EQ(rendered.loop_edges.size(), static_cast<std::size_t>(record.loop_closures));
+  EXPECT_EQ(rendered.path.size(), static_cast<std::size_t>(record.nodes));
+  for (std::size_t k = 0; k < rendered.loop_edges.size(); ++k) {
+    EXPECT_EQ(rendered.loop_edges[k].log_index, record.loop_scans[k]);
+  }
+  const io::MapImage& m = rendered.map;
+  ASSERT_GT(m.width, 0);
+  const auto inside = [&](double x, double y) {
+    return x >= m.origin.x && x <= m.origin.x + m.width * m.resolution && y >= m.origin.y &&
+           y <= m.origin.y + m.height * m.resolution;
+  };
+  for (const LoopEdge& e : rendered.loop_edges) {
+    EXPECT_TRUE(inside(e.from_x, e.from_y)) << e.from_x << ", " << e.from_y;
+    EXPECT_TRUE(inside(e.to_x, e.to_y)) << e.to_x << ", " << e.to_y;
+    EXPECT_GT(std::hypot(e.to_x - e.from_x, e.to_y - e.from_y), 0.0);
+  }
 }
 
 TEST(SlamEvaluationShared, OfficeWorldResultsIdenticalWithTheCache) {

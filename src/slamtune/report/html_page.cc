@@ -15,12 +15,21 @@ max-width:1200px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}
 h1{font-size:1.6em;border-bottom:2px solid #0072b2;padding-bottom:.2em}
 h2{font-size:1.3em;margin-top:1.8em;border-bottom:1px solid #ccc}
 h3{font-size:1.1em}
-table{border-collapse:collapse;margin:.8em 0;font-size:.92em}
-th,td{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top}
+.table{max-width:100%;overflow-x:auto;margin:.8em 0}
+table{border-collapse:collapse;font-size:.92em}
+th,td{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top;overflow-wrap:break-word}
 th{background:#f2f2f2}
+.kv td{overflow-wrap:anywhere}
 tr:nth-child(even) td{background:#fafafa}
 .verdict{background:#e8f3fa;border-left:5px solid #0072b2;padding:.7em 1em;font-weight:600}
 .note{background:#fff8e6;border-left:5px solid #e69f00;padding:.7em 1em}
+.warning{background:#fdecea;border-left:5px solid #d55e00;padding:.7em 1em}
+.grid{display:grid;gap:1em}
+.grid figure{margin:0;min-width:0}
+.grid img{width:100%}
+figcaption b{color:#222}
+details{margin:.8em 0}
+summary{cursor:pointer;color:#0072b2}
 figure{margin:1em 0}
 figure img{max-width:100%;height:auto;border:1px solid #ddd}
 figcaption{font-size:.9em;color:#555}
@@ -46,9 +55,10 @@ std::string HtmlEscape(const std::string& text) {
 
 HtmlPage::HtmlPage(std::string title) : title_(std::move(title)) {}
 
-void HtmlPage::Heading(int level, const std::string& text) {
+void HtmlPage::Heading(int level, const std::string& text, const std::string& id) {
   const int l = std::clamp(level, 1, 3);
-  body_ += fmt::format("<h{0}>{1}</h{0}>\n", l, HtmlEscape(text));
+  const std::string anchor = id.empty() ? "" : " id=\"" + HtmlEscape(id) + "\"";
+  body_ += fmt::format("<h{0}{1}>{2}</h{0}>\n", l, anchor, HtmlEscape(text));
 }
 
 void HtmlPage::Paragraph(const std::string& text, const std::string& css_class) {
@@ -57,15 +67,15 @@ void HtmlPage::Paragraph(const std::string& text, const std::string& css_class) 
 }
 
 void HtmlPage::KeyValues(const std::vector<std::pair<std::string, std::string>>& items) {
-  body_ += "<table>\n";
+  body_ += "<div class=\"table\"><table class=\"kv\">\n";
   for (const auto& [key, value] : items) {
     body_ += "<tr><th>" + HtmlEscape(key) + "</th><td>" + HtmlEscape(value) + "</td></tr>\n";
   }
-  body_ += "</table>\n";
+  body_ += "</table></div>\n";
 }
 
 void HtmlPage::Table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
-  body_ += "<table>\n<tr>";
+  body_ += "<div class=\"table\"><table>\n<tr>";
   for (const auto& h : header) body_ += "<th>" + HtmlEscape(h) + "</th>";
   body_ += "</tr>\n";
   for (const auto& row : rows) {
@@ -75,7 +85,7 @@ void HtmlPage::Table(const std::vector<std::string>& header, const std::vector<s
     }
     body_ += "</tr>\n";
   }
-  body_ += "</table>\n";
+  body_ += "</table></div>\n";
 }
 
 void HtmlPage::List(const std::vector<std::string>& items) {
@@ -89,6 +99,25 @@ void HtmlPage::Image(const std::vector<std::uint8_t>& png, const std::string& al
   if (!caption.empty()) body_ += "<figcaption>" + HtmlEscape(caption) + "</figcaption>";
   body_ += "</figure>\n";
 }
+
+void HtmlPage::FigureGrid(const std::vector<Figure>& figures, int columns) {
+  const int n = std::clamp(columns, 1, 4);
+  body_ += fmt::format("<div class=\"grid\" style=\"grid-template-columns:repeat({},minmax(0,1fr))\">\n", n);
+  for (const Figure& f : figures) {
+    const std::string img = "<img src=\"" + PngDataUri(f.png) + "\" alt=\"" + HtmlEscape(f.alt) + "\">";
+    body_ += "<figure>";
+    body_ += f.link.empty() ? img : "<a href=\"" + HtmlEscape(f.link) + "\">" + img + "</a>";
+    if (!f.caption.empty()) body_ += "<figcaption>" + HtmlEscape(f.caption) + "</figcaption>";
+    body_ += "</figure>\n";
+  }
+  body_ += "</div>\n";
+}
+
+void HtmlPage::BeginDetails(const std::string& summary) {
+  body_ += "<details><summary>" + HtmlEscape(summary) + "</summary>\n";
+}
+
+void HtmlPage::EndDetails() { body_ += "</details>\n"; }
 
 std::string HtmlPage::Finish() const {
   return fmt::format(

@@ -1,6 +1,8 @@
 // A self-contained HTML page for the report: inline CSS, images as base64 data URIs (RFC
 // 2397), no scripts, no external resources, so report.html reads the same offline, mailed or
-// archived. Every piece of text goes through HtmlEscape: log paths, labels and verdicts come
+// archived (a figure may also link to its full-size file beside the page). The layout fits a
+// 1400 px window without horizontal scrolling: content is at most 1200 px wide, table cells
+// wrap long values anywhere, and a table still too wide scrolls inside its own box. Every piece of text goes through HtmlEscape: log paths, labels and verdicts come
 // from the user or the run and must not be able to inject markup.
 #pragma once
 
@@ -19,9 +21,10 @@ class HtmlPage {
  public:
   explicit HtmlPage(std::string title);
 
-  // <h1>..<h3>; level is clamped to [1, 3].
-  void Heading(int level, const std::string& text);
-  // A paragraph; `css_class` selects a style from the page's sheet ("verdict", "note", "" for plain).
+  // <h1>..<h3>; level is clamped to [1, 3]; `id` (optional) makes it a link target (#id).
+  void Heading(int level, const std::string& text, const std::string& id = "");
+  // A paragraph; `css_class` selects a style from the page's sheet ("verdict", "note",
+  // "warning", "" for plain).
   void Paragraph(const std::string& text, const std::string& css_class = "");
   // A two-column table of names and values.
   void KeyValues(const std::vector<std::pair<std::string, std::string>>& items);
@@ -31,6 +34,19 @@ class HtmlPage {
   void List(const std::vector<std::string>& items);
   // A figure with the PNG embedded as a data URI, its alt text and a caption.
   void Image(const std::vector<std::uint8_t>& png, const std::string& alt, const std::string& caption);
+
+  struct Figure {
+    std::vector<std::uint8_t> png;
+    std::string alt;
+    std::string caption;
+    std::string link;  // a file beside the page opened by a click (the full-size image); empty: none
+  };
+  // Figures side by side, `columns` per row (1..4), each as wide as its column.
+  void FigureGrid(const std::vector<Figure>& figures, int columns);
+
+  // A collapsed section the reader opens with a click (<details>), closed by EndDetails.
+  void BeginDetails(const std::string& summary);
+  void EndDetails();
 
   // The complete document.
   std::string Finish() const;

@@ -23,6 +23,7 @@ struct MapPanelOptions {
   bool crop = true;        // crop each map to its known (non-unknown) cells first
   int crop_margin = 10;    // cells of border kept around the known area, in [0, 1000]
   double font_scale = 0.6; // Hershey simplex scale of the label (caption 0.85x), in (0, 4]
+  bool scale_bar = true;   // a bar of a round length (1, 2 or 5 times a power of ten metres) under the map
 
   void Validate() const;
 };
@@ -34,9 +35,30 @@ bool HasMap(const io::MapImage& map);
 // kept inside the image; the whole image when every cell is unknown.
 cv::Rect KnownBounds(const io::MapImage& map, int margin);
 
-// A BGR panel: `label` on top, the map (cropped and scaled) under it, `caption` below. A map
-// without cells (HasMap false) gives a grey placeholder saying so, of the same height.
+// A segment in the map's world frame (m), e.g. a loop closure from an earlier robot pose
+// (x0, y0) to the pose that closed it (x1, y1), with a short label at its closing end.
+struct MapSegment {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  std::string label;
+};
+
+// What is drawn over a map: a path (world m, e.g. the robot's trajectory, thin sky blue) and
+// segments (vermillion: a line, a dot at the start, a ring and the label at the end).
+struct MapOverlay {
+  std::vector<cv::Point2d> path;
+  std::vector<MapSegment> segments;
+};
+
+// The round length (1, 2 or 5 times a power of ten, m) of a scale bar for a map drawn
+// `px_per_m` pixels per metre and `width_px` wide: the largest not longer than a quarter of
+// the width. px_per_m > 0, width_px > 0.
+double ScaleBarLength(double px_per_m, int width_px);
+
+// A BGR panel: `label` on top, the map (cropped and scaled) under it with `overlay` drawn
+// over it, a scale bar under the map (options.scale_bar), `caption` below, wrapped to the
+// map's width. A map without cells (HasMap false) gives a grey placeholder saying so, of the
+// same height.
 cv::Mat RenderMapPanel(const io::MapImage& map, const std::string& label, const std::string& caption,
-                       const MapPanelOptions& options);
+                       const MapPanelOptions& options, const MapOverlay& overlay = {});
 
 }  // namespace slamtune::report

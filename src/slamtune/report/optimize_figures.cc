@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -36,44 +38,6 @@ std::vector<std::pair<const optim::Candidate*, std::vector<double>>> PlottableCa
   return out;
 }
 
-// Scatter panels of the projections for the given point sets, with candidates on top.
-cv::Mat ProjectionPanels(const std::vector<std::pair<std::string, std::vector<std::vector<double>>>>& groups,
-                         const optim::OptimizeResult& result, bool mark_candidates, const FigureOptions& options,
-                         const std::string& title) {
-  const auto limits = ObjectiveLimits(result);
-  const auto candidates = PlottableCandidates(result);
-  std::vector<cv::Mat> panels;
-  for (const auto& [ix, iy] : kProjections) {
-    std::vector<Series> series;
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      Series s = MakeSeries(groups[g].first, {}, {});
-      s.colour = PaletteColour(g == 0 && groups.size() == 1 ? 0 : g);
-      s.marker = groups.size() == 1 ? Marker::kCircle : MarkerFor(g);
-      s.marker_size = 7;
-      for (const auto& v : groups[g].second) {
-        s.x.push_back(v[ix]);
-        s.y.push_back(v[iy]);
-      }
-      series.push_back(std::move(s));
-    }
-    if (mark_candidates) {
-      for (const auto& [c, v] : candidates) series.push_back(CandidateSeries(*c, v[ix], v[iy]));
-    }
-    PlotOptions o = PanelOptions(options);
-    o.x_limits = limits[ix];
-    o.y_limits = limits[iy];
-    o.x_label = ObjectiveAt(result, ix).title;
-    o.y_label = ObjectiveAt(result, iy).title;
-    o.title = fmt::format("{} vs {}", ObjectiveAt(result, iy).short_name, ObjectiveAt(result, ix).short_name);
-    o.legend = panels.empty();  // one legend is enough for the row
-    panels.push_back(RenderPlot(series, o).image);
-  }
-  GridOptions g;
-  g.columns = 3;
-  g.title = title;
-  return ComposeGrid(panels, g);
-}
-
 // Valid individuals of a snapshot, and how many were left out.
 std::pair<std::vector<std::vector<double>>, int> ValidIndividuals(const optim::GenerationSnapshot& snapshot,
                                                                    const optim::ObjectiveSet& objectives) {
@@ -84,6 +48,70 @@ std::pair<std::vector<std::vector<double>>, int> ValidIndividuals(const optim::G
     else valid.push_back(v);
   }
   return {valid, failed};
+}
+
+// One group of points of a projection figure, and which of them are non-dominated.
+struct PointGroup {
+  std::string name;
+  std::vector<std::vector<double>> points;
+  std::vector<std::size_t> front;  // indices into points; drawn on top when mark_front
+};
+
+bool Inside(const std::optional<AxisLimits>& l, double v) { return !l || (v >= l->lower && v <= l->upper); }
+
+// Scatter panels of the projections for the given point sets on the shared front-scaled axes,
+// with the non-dominated points and the candidates on top. Each panel title says how many
+// points lie outside its axes.
+cv::Mat ProjectionPanels(const std::vector<PointGroup>& groups, const optim::OptimizeResult& result,
+                         bool mark_candidates, bool mark_front, const FigureOptions& options, const std::string& title) {
+  const auto limits = ObjectiveLimits(result);
+  const auto candidates = PlottableCandidates(result);
+  std::vector<cv::Mat> panels;
+  for (const auto& [ix, iy] : kProjections) {
+    std::vector<Series> series;
+    Series front = MakeSeries("", {}, {});
+    front.colour = PaletteColour(6);  // black
+    front.marker = Marker::kDiamond;
+    front.marker_size = 11;
+    int outside = 0, total = 0;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      Series s = MakeSeries(groups[g].name, {}, {});
+      s.colour = groups.size() == 1 ? PaletteColour(5) : PaletteColour(g);
+      s.marker = groups.size() == 1 ? Marker::kCircle : MarkerFor(g);
+      s.marker_size = 7;
+      for (const auto& v : groups[g].points) {
+        s.x.push_back(v[ix]);
+        s.y.push_back(v[iy]);
+        ++total;
+        if (!Inside(limits[ix], v[ix]) || !Inside(limits[iy], v[iy])) ++outside;
+      }
+      for (std::size_t i : groups[g].front) {
+        front.x.push_back(groups[g].points[i][ix]);
+        front.y.push_back(groups[g].points[i][iy]);
+      }
+      series.push_back(std::move(s));
+    }
+    if (mark_front) {
+      front.name = fmt::format("non-dominated ({})", front.x.size());
+      series.push_back(std::move(front));
+    }
+    if (mark_candidates) {
+      for (const auto& [c, v] : candidates) series.push_back(CandidateSeries(*c, v[ix], v[iy]));
+    }
+    PlotOptions o = PanelOptions(options);
+    o.x_limits = limits[ix];
+    o.y_limits = limits[iy];
+    o.x_label = ObjectiveAt(result, ix).title;
+    o.y_label = ObjectiveAt(result, iy).title;
+    o.title = fmt::format("{} vs {}", ObjectiveAt(result, iy).short_name, ObjectiveAt(result, ix).short_name);
+    if (outside > 0) o.title += fmt::format(" ({} of {} outside)", outside, total);
+    o.legend = panels.empty();  // one legend is enough for the row
+    panels.push_back(RenderPlot(series, o).image);
+  }
+  GridOptions g;
+  g.columns = 3;
+  g.title = title;
+  return ComposeGrid(panels, g);
 }
 
 std::string FailedNote(int failed) {
@@ -133,70 +161,228 @@ Series CandidateSeries(const optim::Candidate& candidate, double x, double y) {
 
 std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResult& result) {
   const std::size_t m = result.objectives.size();
-  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -std::numeric_limits<double>::infinity());
-  auto include = [&](const std::vector<double>& v) {
-    for (std::size_t k = 0; k < m; ++k) {
+  std::vector<std::vector<double>> all;
+  for (const auto& snapshot : result.snapshots) {
+    for (auto& v : ValidIndividuals(snapshot, result.objectives).first) all.push_back(std::move(v));
+  }
+  std::vector<std::vector<double>> shown;  // the front of every snapshot together, and the chosen sets
+  for (std::size_t i : optim::NonDominatedIndices(all)) shown.push_back(all[i]);
+  for (const auto& [c, v] : PlottableCandidates(result)) {
+    if (c->label == "recommended" || c->label == "knee") shown.push_back(v);
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> lo(m, inf), hi(m, -inf), most(m, -inf);
+  for (const auto& v : shown) {
+    for (std::size_t k = 0; k < m && k < v.size(); ++k) {
+      if (!std::isfinite(v[k])) continue;
       lo[k] = std::min(lo[k], v[k]);
       hi[k] = std::max(hi[k], v[k]);
     }
-  };
-  for (const auto& snapshot : result.snapshots) {
-    for (const auto& v : ValidIndividuals(snapshot, result.objectives).first) include(v);
   }
-  for (const auto& [c, v] : PlottableCandidates(result)) include(v);
+  for (const auto& v : all)
+    for (std::size_t k = 0; k < m && k < v.size(); ++k)
+      if (std::isfinite(v[k])) most[k] = std::max(most[k], v[k]);
   std::vector<std::optional<AxisLimits>> out(m);
   for (std::size_t k = 0; k < m; ++k) {
     if (lo[k] > hi[k]) continue;
-    const AxisTicks t = MakeNiceTicks(lo[k], hi[k], 6);
-    const double range = hi[k] - lo[k];
-    const double pad = std::isfinite(range) ? 0.03 * range : 0.0;  // keeps extreme points off the frame
-    out[k] = AxisLimits{std::min(t.lower, lo[k] - pad), std::max(t.upper, hi[k] + pad)};
+    double range = hi[k] - lo[k];
+    if (!(range > 0.0)) range = std::max(std::abs(lo[k]) * 0.1, 1e-6);  // a single value: a band around it
+    // Up to one front range beyond the front's worst values, where the population still is.
+    const double upper = std::max(hi[k], std::min(most[k], hi[k] + range));
+    const double pad = 0.08 * (upper - lo[k] > 0.0 ? upper - lo[k] : range);  // extreme points off the frame
+    out[k] = AxisLimits{lo[k] - pad, upper + pad};
+  }
+  return out;
+}
+
+std::vector<CandidateMapPanel> CandidateMapPanels(const optim::OptimizeResult& result, const FigureOptions& options) {
+  options.Validate();
+  std::vector<CandidateMapPanel> out;
+  for (CandidateGroup& group : MergedCandidates(result)) {
+    const optim::Candidate& c = group.shown();
+    std::string caption = ParamSummary(c.record.params, result.space);
+    if (c.record.status == "ok") {
+      caption += fmt::format(", {} loop closure{}", c.record.loop_closures, c.record.loop_closures == 1 ? "" : "s");
+    } else {
+      caption += ", run failed";
+    }
+    MapOverlay overlay;
+    for (const auto& [x, y] : c.path) overlay.path.emplace_back(x, y);
+    for (const optim::LoopEdge& e : c.loop_edges) {
+      overlay.segments.push_back({e.from_x, e.from_y, e.to_x, e.to_y, e.log_index >= 0 ? std::to_string(e.log_index) : ""});
+    }
+    cv::Mat image = RenderMapPanel(c.map, group.label, caption, options.maps, overlay);
+    out.push_back({std::move(group), std::move(image)});
   }
   return out;
 }
 
 cv::Mat MapsSideBySide(const optim::OptimizeResult& result, const FigureOptions& options) {
   options.Validate();
-  const auto candidates = CandidatesInReportOrder(result);
-  SLAMTUNE_CHECK_MSG(!candidates.empty(), "MapsSideBySide needs at least one candidate");
+  SLAMTUNE_CHECK_MSG(!result.candidates.empty(), "MapsSideBySide needs at least one candidate");
   std::vector<cv::Mat> panels;
-  for (const auto* c : candidates) {
-    std::string caption = ParamSummary(c->record.params, result.space);
-    if (c->record.status == "ok") {
-      caption += fmt::format(", {} loop closure{}", c->record.loop_closures, c->record.loop_closures == 1 ? "" : "s");
-    } else {
-      caption += ", run failed";
-    }
-    panels.push_back(RenderMapPanel(c->map, c->label, caption, options.maps));
-  }
+  for (auto& p : CandidateMapPanels(result, options)) panels.push_back(std::move(p.image));
   GridOptions g;
-  g.columns = static_cast<int>(panels.size());
-  g.title = "Maps of the candidates";
+  g.columns = 2;
+  g.title = "Maps of the candidates (loop closures in vermillion)";
   return ComposeGrid(panels, g);
 }
 
 cv::Mat PopulationFigure(const optim::GenerationSnapshot& snapshot, const optim::OptimizeResult& result,
                          const FigureOptions& options) {
   options.Validate();
-  const auto [valid, failed] = ValidIndividuals(snapshot, result.objectives);
-  const std::string name = fmt::format("population ({})", valid.size());
-  return ProjectionPanels({{name, valid}}, result, true, options,
-                          fmt::format("Generation {}: population in objective space{}", snapshot.generation,
-                                      FailedNote(failed)));
+  auto [valid, failed] = ValidIndividuals(snapshot, result.objectives);
+  PointGroup group{fmt::format("population ({})", valid.size()), std::move(valid), {}};
+  group.front = optim::NonDominatedIndices(group.points);
+  return ProjectionPanels({group}, result, true, true, options,
+                          fmt::format("Generation {}: population in objective space, axes on the front{}",
+                                      snapshot.generation, FailedNote(failed)));
 }
 
 cv::Mat PopulationEvolutionFigure(const optim::OptimizeResult& result, const FigureOptions& options) {
   options.Validate();
-  std::vector<std::pair<std::string, std::vector<std::vector<double>>>> groups;
+  std::vector<PointGroup> groups;
   int failed = 0;
   for (const auto& snapshot : result.snapshots) {
     auto [valid, f] = ValidIndividuals(snapshot, result.objectives);
     failed += f;
-    groups.emplace_back(fmt::format("generation {}", snapshot.generation), std::move(valid));
+    groups.push_back({fmt::format("generation {}", snapshot.generation), std::move(valid), {}});
   }
-  if (groups.empty()) groups.emplace_back("no snapshots", std::vector<std::vector<double>>{});
-  return ProjectionPanels(groups, result, false, options,
-                          "Population over the generations" + FailedNote(failed));
+  if (groups.empty()) groups.push_back({"no snapshots", {}, {}});
+  return ProjectionPanels(groups, result, false, false, options,
+                          "Population over the generations, axes on the front" + FailedNote(failed));
+}
+
+namespace {
+
+std::optional<double> ParamOf(const optim::EvaluationRecord& r, const std::string& name) {
+  const auto it = r.params.find(name);
+  if (it == r.params.end() || !std::isfinite(it->second)) return std::nullopt;
+  return it->second;
+}
+
+AxisLimits BoundsOf(const optim::Dimension& d) {
+  const double range = d.upper > d.lower ? d.upper - d.lower : std::max(std::abs(d.lower), 1.0);
+  return {d.lower - 0.04 * range, (d.upper > d.lower ? d.upper : d.lower + range) + 0.04 * range};
+}
+
+std::string DimensionTitle(const optim::Dimension& d) {
+  const std::string s = ShortParamName(d.name);
+  return s == d.name ? d.name : s + " = " + d.name;
+}
+
+// Candidates' markers at (their value of x, their value of y).
+void AddCandidates(std::vector<Series>& series, const optim::OptimizeResult& result,
+                   const std::function<std::optional<std::pair<double, double>>(const optim::Candidate&)>& at) {
+  for (const CandidateGroup& g : MergedCandidates(result)) {
+    for (const auto* c : g.members) {
+      if (const auto p = at(*c)) series.push_back(CandidateSeries(*c, p->first, p->second));
+    }
+  }
+}
+
+}  // namespace
+
+cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOptions& options) {
+  options.Validate();
+  const auto& dims = result.space.dimensions;
+  if (dims.empty() || result.evaluations.empty() || result.objectives.size() == 0) return {};
+  const optim::Objective first = result.objectives.objectives()[0];
+  const std::string objective = ObjectiveAt(result, 0).short_name;
+  std::vector<double> values;
+  for (const auto& e : result.evaluations)
+    if (e.status == "ok") values.push_back(optim::ValueOf(e, first));
+  std::sort(values.begin(), values.end());
+
+  if (dims.size() == 2) {
+    // Quarters of the first objective over the successful sets.
+    auto quantile = [&](double q) { return values.empty() ? 0.0 : values[static_cast<std::size_t>(q * (values.size() - 1))]; };
+    const std::array<double, 3> cut = {quantile(0.25), quantile(0.5), quantile(0.75)};
+    const std::array<std::size_t, 4> colours = {2, 5, 4, 3};  // green, sky blue, orange, purple
+    std::vector<Series> series;
+    for (int q = 0; q < 4; ++q) {
+      const std::string range = q == 0   ? fmt::format("<= {}", Readable(cut[0]))
+                                : q == 3 ? fmt::format("> {}", Readable(cut[2]))
+                                         : fmt::format("{}-{}", Readable(cut[q - 1]), Readable(cut[q]));
+      Series s = MakeSeries(fmt::format("{} {}", objective, range), {}, {});
+      s.colour = PaletteColour(colours[q]);
+      s.marker = Marker::kCircle;
+      s.marker_size = 8;
+      series.push_back(std::move(s));
+    }
+    Series failed = MakeSeries("failed run", {}, {});
+    failed.colour = cv::Scalar(150, 150, 150);
+    failed.marker = Marker::kCross;
+    failed.marker_size = 8;
+    for (const auto& e : result.evaluations) {
+      const auto x = ParamOf(e, dims[0].name), y = ParamOf(e, dims[1].name);
+      if (!x || !y) continue;
+      Series* s = &failed;
+      if (e.status == "ok") {
+        const double v = optim::ValueOf(e, first);
+        const int q = v <= cut[0] ? 0 : v <= cut[1] ? 1 : v <= cut[2] ? 2 : 3;
+        s = &series[static_cast<std::size_t>(q)];
+      }
+      s->x.push_back(*x);
+      s->y.push_back(*y);
+    }
+    if (!failed.x.empty()) series.push_back(std::move(failed));
+    AddCandidates(series, result, [&](const optim::Candidate& c) -> std::optional<std::pair<double, double>> {
+      const auto x = ParamOf(c.record, dims[0].name), y = ParamOf(c.record, dims[1].name);
+      if (!x || !y) return std::nullopt;
+      return std::pair{*x, *y};
+    });
+    PlotOptions o = PanelOptions(options);
+    o.width = 2 * options.panel_width;
+    o.height = options.panel_height + options.panel_height / 2;
+    o.x_limits = BoundsOf(dims[0]);
+    o.y_limits = BoundsOf(dims[1]);
+    o.x_label = DimensionTitle(dims[0]);
+    o.y_label = DimensionTitle(dims[1]);
+    o.title = fmt::format("The {} evaluated parameter sets, coloured by {} (quarters, lower is better)",
+                          result.evaluations.size(), objective);
+    return RenderPlot(series, o).image;
+  }
+
+  const auto limits = ObjectiveLimits(result);
+  std::vector<cv::Mat> panels;
+  int most_outside = 0;
+  for (const auto& d : dims) {
+    Series all = MakeSeries(fmt::format("evaluated sets ({})", values.size()), {}, {});
+    all.colour = PaletteColour(5);
+    all.marker = Marker::kCircle;
+    all.marker_size = 6;
+    int outside = 0;
+    for (const auto& e : result.evaluations) {
+      const auto x = ParamOf(e, d.name);
+      if (!x || e.status != "ok") continue;
+      const double v = optim::ValueOf(e, first);
+      all.x.push_back(*x);
+      all.y.push_back(v);
+      if (limits[0] && (v < limits[0]->lower || v > limits[0]->upper)) ++outside;
+    }
+    std::vector<Series> series = {all};
+    AddCandidates(series, result, [&](const optim::Candidate& c) -> std::optional<std::pair<double, double>> {
+      const auto x = ParamOf(c.record, d.name);
+      if (!x || c.record.status != "ok") return std::nullopt;
+      return std::pair{*x, optim::ValueOf(c.record, first)};
+    });
+    PlotOptions o = PanelOptions(options);
+    o.x_limits = BoundsOf(d);
+    o.y_limits = limits[0];
+    o.x_label = DimensionTitle(d);
+    o.y_label = ObjectiveAt(result, 0).title;
+    o.title = ShortParamName(d.name);
+    o.legend = panels.empty();
+    panels.push_back(RenderPlot(series, o).image);
+    most_outside = std::max(most_outside, outside);
+  }
+  GridOptions g;
+  g.columns = 3;
+  g.title = fmt::format("{} of every evaluated parameter set against each parameter (lower is better){}", objective,
+                        most_outside > 0 ? fmt::format("; {} of {} sets lie outside the axes", most_outside, values.size())
+                                         : "");
+  return ComposeGrid(panels, g);
 }
 
 cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions& options) {

@@ -21,6 +21,7 @@
 #include "slamtune/report/error_correlation.h"
 #include "slamtune/report/map_panels.h"
 #include "slamtune/report/plot.h"
+#include "slamtune/report/report_text.h"
 
 namespace slamtune::report {
 
@@ -28,18 +29,35 @@ struct FigureOptions {
   int panel_width = 520;   // px, width of one plot panel, >= 160
   int panel_height = 420;  // px, height of one plot panel, >= 120
   double font_scale = 0.45;  // tick labels; titles 1.25x; in (0, 4]
-  MapPanelOptions maps;    // the side-by-side maps
+  MapPanelOptions maps = LargeMaps();  // the candidates' maps: 640 px high, labels readable at half size
+
+  static MapPanelOptions LargeMaps() {
+    MapPanelOptions m;
+    m.height = 640;
+    m.font_scale = 0.9;
+    return m;
+  }
 
   void Validate() const;
 };
 
-// Axis limits per objective (the result's objectives order) covering every valid individual of every
-// snapshot and every successful candidate, widened to nice ticks; nullopt for an objective
-// with no valid value.
+// Axis limits per objective (the result's objectives order), shared by every population
+// figure: from the best value of the non-dominated front of all snapshots' valid individuals
+// together (and of the recommended and knee sets) to at most one front range beyond its worst
+// value, plus an 8 % margin. Far-off individuals (a broken map scores orders of magnitude
+// worse) would otherwise squeeze the front into a corner; the figures count what falls
+// outside. nullopt for an objective with no valid value.
 std::vector<std::optional<AxisLimits>> ObjectiveLimits(const optim::OptimizeResult& result);
 
-// The candidates' maps, labelled, scaled to a common height, left to right in report order.
-// Requires at least one candidate.
+// One map panel per distinct parameter set among the candidates (MergedCandidates): labelled,
+// with its loop closures drawn on the map and a scale bar.
+struct CandidateMapPanel {
+  CandidateGroup group;
+  cv::Mat image;
+};
+std::vector<CandidateMapPanel> CandidateMapPanels(const optim::OptimizeResult& result, const FigureOptions& options);
+
+// The candidates' map panels, two per row, in report order. Requires at least one candidate.
 cv::Mat MapsSideBySide(const optim::OptimizeResult& result, const FigureOptions& options);
 
 // One snapshot's population (1 x 3 projections) with the candidates marked.
@@ -54,6 +72,14 @@ cv::Mat PopulationEvolutionFigure(const optim::OptimizeResult& result, const Fig
 cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
                                const ErrorCorrelationSummary& correlation, const optim::OptimizeResult& result,
                                const FigureOptions& options);
+
+// Where the search went: every evaluated parameter set in the search space, with the
+// candidates marked. Two varied parameters: one scatter of the two, each set coloured by the
+// quarter of the first objective it falls in (best quarter green ... worst quarter purple,
+// failed runs grey). Otherwise one panel per varied parameter (three per row): the first
+// objective against the parameter's value, on the population figures' objective axes (the
+// figure's title counts the sets outside). Empty when nothing varied or nothing was evaluated.
+cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOptions& options);
 
 // The base configuration's sequential matches along the log (response against seconds into the
 // log): every match, those that ended at the search's edge, and the breaks

@@ -28,14 +28,39 @@ namespace {
 
 bool Ok(const optim::EvaluationRecord& r) { return r.status == "ok"; }
 
-std::string Short(double v) { return fmt::format("{:.5g}", v); }
+std::string Short(double v) { return Readable(v, 4); }
 
 std::string Seconds(double s) {
   if (s < 120.0) return fmt::format("{:.1f} s", s);
   return fmt::format("{:.1f} min ({:.0f} s)", s / 60.0, s);
 }
 
-std::string SettingText(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+// A setting's value in plain text: numbers Readable, lists joined, strings as they are.
+std::string SettingText(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
+  if (v.is_number()) return Readable(v.get<double>(), 6);
+  if (v.is_null()) return "none";
+  if (v.is_array()) {
+    std::string out;
+    for (const auto& e : v) out += (out.empty() ? "" : ", ") + SettingText(e);
+    return out.empty() ? "(none)" : out;
+  }
+  std::string out;  // an object inside a list: "key: value; ..."
+  for (const auto& [key, value] : v.items()) out += (out.empty() ? "" : "; ") + key + ": " + SettingText(value);
+  return out;
+}
+
+// Nested settings as "parent.child" rows, one per leaf value.
+void FlattenSettings(const nlohmann::json& v, const std::string& prefix,
+                     std::vector<std::pair<std::string, std::string>>& rows) {
+  if (v.is_object() && !v.empty()) {
+    for (const auto& [key, value] : v.items()) FlattenSettings(value, prefix.empty() ? key : prefix + "." + key, rows);
+    return;
+  }
+  rows.push_back({prefix, SettingText(v)});
+}
 
 void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Run");
@@ -59,19 +84,31 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.KeyValues(items);
 }
 
+// The verdict, why this set was recommended (with any warning), then what to do and how.
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
   page.Paragraph(r.verdict.empty() ? "No verdict was given." : r.verdict, "verdict");
+  RecommendationReading reading;
+  if (r.Find("recommended") != nullptr) {
+    reading = ReadRecommendation(r);
+    page.Heading(3, "Why this recommendation");
+    page.Paragraph(reading.why);
+    for (const std::string& w : reading.warnings) page.Paragraph(w, "warning");
+  }
+  if (!r.lowest_error_label.empty()) {
+    page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
+                   r.lowest_error_label + "\".");
+  }
+  if (!reading.next.empty()) {
+    page.Heading(3, "What to do next");
+    page.List(reading.next);
+  }
   if (!r.how_to_load.empty()) {
     page.Paragraph(r.changes.empty() ? "Keep " + r.base_label + ": the parameter files repeat it unchanged."
                                      : "Changes from " + r.base_label + ":");
     if (!r.changes.empty()) page.List(r.changes);
     page.Paragraph("To run it on the robot:");
     page.List(r.how_to_load);
-  }
-  if (!r.lowest_error_label.empty()) {
-    page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
-                   r.lowest_error_label + "\".");
   }
 }
 
@@ -153,35 +190,138 @@ void CorrelationSection(HtmlPage& page, const OptimizeFigures& f, const ErrorCor
 
 }  // namespace
 
+RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
+  RecommendationReading out;
+  const optim::Candidate* rec = r.Find("recommended");
+  if (rec == nullptr) return out;
+  const optim::Candidate* knee = r.Find("knee");
+  // The set itself only when it is short (two or three parameters); the tables list it anyway.
+  const std::string summary = ParamSummary(rec->record.params, r.space);
+  const std::string params = summary.size() <= 60 ? " (" + summary + ")" : "";
+  int population = 0;
+  if (r.settings.is_object() && r.settings.contains("population") && r.settings["population"].is_number_integer()) {
+    population = r.settings["population"].get<int>();
+  }
+  const std::string of = population > 0 ? fmt::format(" of {}", population) : "";
+  const int share = r.recommended_share;
+  const bool converged = population > 0 ? 2 * share > population : share > 1;
+  if (share <= 1) {
+    out.why = fmt::format(
+        "The rule is the seed paper's: recommend the parameter set most individuals of the final population share. "
+        "Here no set is shared by more than one individual{}, so there is no majority to go by: the recommendation{} "
+        "falls back to the tie-break, the individual with the lowest sum of objectives normalised over the "
+        "population. The population had not converged.",
+        of, params);
+  } else if (converged) {
+    out.why = fmt::format("{}{} individuals of the final population hold the recommended set{}: the search "
+                          "converged on it, as the seed paper's rule (the set most individuals share) asks.",
+                          share, of, params);
+  } else {
+    out.why = fmt::format(
+        "The recommended set{} is the one most individuals of the final population share, but only {}{} hold it: "
+        "the largest group, not a majority, so the search had not settled and the choice is tentative.",
+        params, share, of);
+  }
+  if (knee != nullptr && knee != rec) {
+    const bool same = !rec->record.key.empty() ? rec->record.key == knee->record.key
+                                               : rec->record.params == knee->record.params;
+    const std::string knee_summary = ParamSummary(knee->record.params, r.space);
+    out.why += same ? " It is also the knee of the final front (the front's member closest to the ideal point), so "
+                      "both rules agree."
+                    : " The knee of the final front is another set" +
+                          (knee_summary.size() <= 60 ? " (" + knee_summary + ")" : std::string()) +
+                          ": compare the two maps below.";
+  }
+
+  for (const optim::Dimension& d : r.space.dimensions) {
+    const auto it = rec->record.params.find(d.name);
+    if (it == rec->record.params.end() || !(d.upper > d.lower)) continue;
+    const double v = it->second;
+    const double tolerance = d.integer ? 0.0 : 0.01 * (d.upper - d.lower);
+    const bool low = v <= d.lower + tolerance, high = v >= d.upper - tolerance;
+    if (!low && !high) continue;
+    const std::string symbol = ShortParamName(d.name);
+    out.warnings.push_back(fmt::format(
+        "{} = {} sits on the {} bound of its search range [{}, {}]{}: the best value may lie beyond it. Widen the "
+        "range on that side (--space FILE, whose vary: gives each searched parameter its min and max) and run again "
+        "before trusting this value.",
+        symbol, FormatParam(v), low ? "lower" : "upper", FormatParam(d.lower), FormatParam(d.upper),
+        symbol == d.name ? "" : " (" + d.name + ")"));
+  }
+
+  if (r.verdict_kind == optim::VerdictKind::kBetter) {
+    out.next.push_back("Load the recommended parameters (best.yaml, or best_slam_karto.yaml for slam_karto) as shown "
+                       "below, and map a log the tuning did not see to confirm.");
+  } else if (r.verdict_kind == optim::VerdictKind::kFailed) {
+    out.next.push_back("Read why the run failed (status column of the candidates) before changing anything.");
+  } else {
+    out.next.push_back("Keep " + (r.base_label.empty() ? std::string("the base configuration") : r.base_label) +
+                       ": the recommendation does not map this log clearly better.");
+  }
+  if (!out.warnings.empty()) out.next.push_back("Widen the search range where a value sits on a bound (above).");
+  if (!converged) {
+    out.next.push_back("Run again with more generations (--generations) or a larger population (--population) so "
+                       "the population converges on one set.");
+  }
+  out.next.push_back("Check the maps: each vermillion line is a loop closure and must join two places that are the "
+                     "same in the world; a line across a wall or between different corridors is a false loop closure.");
+  if (!HasGroundTruth(r)) {
+    out.next.push_back("With ground truth for this log (--relations FILE), the report also ranks the candidates by "
+                       "their true trajectory error.");
+  }
+  return out;
+}
+
 std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& f,
                          const std::optional<ErrorCorrelationSummary>& correlation,
                          const std::vector<std::string>& files) {
   const std::string log_name = std::filesystem::path(r.log_path).filename().string();
   HtmlPage page("slamtune optimize: " + log_name);
   page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
-  RunSection(page, r);
   VerdictSection(page, r);
+  RunSection(page, r);
   FrontEndSection(page, r, f);
   CandidatesSection(page, r, correlation.has_value());
 
-  page.Heading(2, "Maps");
-  if (!f.maps.empty()) {
-    page.Image(f.maps, "maps of the candidates",
-               "The candidates' maps, cropped to the mapped area and scaled to a common height (maps_side_by_side.png; "
-               "full maps as map_<label>.pgm/.yaml).");
+  page.Heading(2, "Maps", "maps");
+  if (!f.map_panels.empty()) {
+    std::vector<HtmlPage::Figure> figures;
+    for (const auto& m : f.map_panels) figures.push_back({m.png, "map of " + m.label, m.caption, m.file});
+    page.FigureGrid(figures, 2);
+    page.Paragraph("Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
+                   "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
+                   "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
+                   "note");
   } else {
     page.Paragraph("No candidate to show.");
   }
 
-  page.Heading(2, "Population in objective space");
-  for (const auto& [generation, png] : f.populations) {
-    page.Image(png, fmt::format("population of generation {}", generation),
-               fmt::format("Generation {} (population_gen{}.png).", generation, generation));
+  page.Heading(2, "Population in objective space", "population");
+  if (!f.populations.empty()) {
+    page.Paragraph("Every panel uses the same axes, fitted to the non-dominated front of all generations shown (black "
+                   "diamonds mark each generation's front) and reaching one front's width beyond it, so the generations "
+                   "compare directly; a panel's title counts the individuals that lie outside its axes (usually runs "
+                   "whose map broke).");
   }
+  std::vector<HtmlPage::Figure> generations;
+  for (const auto& [generation, png] : f.populations) {
+    generations.push_back({png, fmt::format("population of generation {}", generation),
+                           fmt::format("Generation {} (population_gen{}.png).", generation, generation),
+                           fmt::format("population_gen{}.png", generation)});
+  }
+  if (!generations.empty()) page.FigureGrid(generations, 1);
   if (!f.evolution.empty()) {
     page.Image(f.evolution, "population over the generations", "All snapshots overlaid (population_evolution.png).");
   }
   if (f.populations.empty()) page.Paragraph("No population snapshot was recorded.");
+
+  if (!f.parameter_space.empty()) {
+    page.Heading(2, "Parameter space", "parameters");
+    page.Image(f.parameter_space, "evaluated parameter sets in the search space",
+               "Where the search went: every evaluated parameter set, with the candidates marked, inside the search "
+               "range of each parameter (parameter_space.png). A recommendation at the edge of a range may lie "
+               "beyond it.");
+  }
 
   if (correlation) CorrelationSection(page, f, *correlation);
 
@@ -189,18 +329,39 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   page.Paragraph(kObjectivesCaveat, "note");
 
   page.Heading(2, "Settings");
-  std::vector<std::pair<std::string, std::string>> settings;
+  std::vector<std::pair<std::string, std::string>> settings, engine;
   if (r.settings.is_object()) {
-    for (const auto& [key, value] : r.settings.items()) settings.push_back({key, SettingText(value)});
+    for (const auto& [key, value] : r.settings.items()) {
+      if (key == "engine") FlattenSettings(value, "", engine);
+      else if (key == "space") settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
+      else FlattenSettings(value, key, settings);
+    }
   }
   if (!settings.empty()) page.KeyValues(settings);
+  // The search ranges, with the default and recommended values beside them.
+  const optim::Candidate* base = r.Find("default");
+  const optim::Candidate* rec = r.Find("recommended");
+  auto value_of = [](const optim::Candidate* c, const std::string& name) {
+    if (c == nullptr) return std::string();
+    const auto it = c->record.params.find(name);
+    return it == c->record.params.end() ? std::string() : FormatParam(it->second);
+  };
   std::vector<std::vector<std::string>> dims;
   for (const auto& d : r.space.dimensions) {
-    dims.push_back({d.name + " (" + ShortParamName(d.name) + ")", FormatParam(d.lower), FormatParam(d.upper),
-                    d.integer ? "int" : "real"});
+    const std::string symbol = ShortParamName(d.name);
+    dims.push_back({symbol == d.name ? d.name : d.name + " (" + symbol + ")", FormatParam(d.lower),
+                    FormatParam(d.upper), d.integer ? "int" : "real", value_of(base, d.name), value_of(rec, d.name)});
   }
-  for (const auto& [name, value] : r.space.fixed) dims.push_back({name, FormatParam(value), FormatParam(value), "fixed"});
-  page.Table({"parameter", "lower", "upper", "type"}, dims);
+  for (const auto& [name, value] : r.space.fixed) {
+    dims.push_back({name, FormatParam(value), FormatParam(value), "fixed", value_of(base, name), value_of(rec, name)});
+  }
+  page.Table({"parameter", "lower", "upper", "type", "default", "recommended"}, dims);
+  if (!engine.empty()) {
+    page.BeginDetails(fmt::format("Engine settings ({} values: base parameters, metric options, log identity)",
+                                  engine.size()));
+    page.KeyValues(engine);
+    page.EndDetails();
+  }
 
   page.Heading(2, "Files");
   page.List(files);

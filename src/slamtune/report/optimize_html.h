@@ -1,8 +1,9 @@
 // report.html of `slamtune optimize`: one self-contained page (html_page.h) an engineer reads
-// after the run: the log and settings, the verdict, the candidates (parameters, objectives,
-// loop closures, errors), the loop-closure scan indices, the maps, the population figures,
-// the objectives against ground-truth error with their rank correlations, and what the
-// objectives can and cannot tell.
+// after the run: the verdict, why this set was recommended (with a warning for a value on a
+// bound of its range) and what to do next, the run, the candidates (parameters, objectives,
+// loop closures, errors), the maps with their loop closures, the population and
+// parameter-space figures, the objectives against ground-truth error with their rank
+// correlations, what the objectives can and cannot tell, and the settings.
 #pragma once
 
 #include <cstdint>
@@ -16,11 +17,31 @@
 
 namespace slamtune::report {
 
+// The recommendation in plain words, for the report's "Why this recommendation" section.
+struct RecommendationReading {
+  std::string why;                    // how many individuals share the set, or the fallback and why
+  std::vector<std::string> warnings;  // each recommended value that sits on a bound of its search range
+  std::vector<std::string> next;      // what to do next
+};
+
+// Reads `r`'s recommendation: its share of the final population (settings "population"), whether
+// it is also the knee, which of its values sit on a bound (an integer on the bound itself, a real
+// within 1 % of the range from it), and the next steps those findings and the verdict call for.
+RecommendationReading ReadRecommendation(const optim::OptimizeResult& r);
+
 // The PNG bytes of the figures (the same bytes as the files beside report.html).
 struct OptimizeFigures {
   std::vector<std::uint8_t> maps;                                       // empty: no candidates
+  struct MapPanel {
+    std::string label;  // "recommended = knee" when they are the same set
+    std::string file;   // the panel's PNG beside report.html
+    std::vector<std::uint8_t> png;
+    std::string caption;
+  };
+  std::vector<MapPanel> map_panels;  // one per distinct candidate parameter set
   std::vector<std::pair<int, std::vector<std::uint8_t>>> populations;  // (generation, png)
   std::vector<std::uint8_t> evolution;                                  // empty: no snapshots
+  std::vector<std::uint8_t> parameter_space;                            // empty: nothing varied or evaluated
   std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
   std::vector<std::uint8_t> front_end;                                  // empty: no base front end
 };

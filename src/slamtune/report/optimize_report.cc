@@ -10,6 +10,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/report/map_panels.h"
+#include "slamtune/report/optimize_figures.h"
 #include "slamtune/report/optimize_html.h"
 #include "slamtune/report/optimize_tables.h"
 #include "slamtune/report/png_encoding.h"
@@ -68,6 +69,21 @@ class FolderWriter {
   std::vector<std::string> files_;
 };
 
+// "recommended = knee: r=3.2 g=12, 5 loop closures; u_h 0.0123, n_c 912, n_e 14."
+std::string MapCaption(const CandidateGroup& group, const optim::OptimizeResult& result) {
+  const optim::Candidate& c = group.shown();
+  std::string text = group.label + ": " + ParamSummary(c.record.params, result.space);
+  if (c.record.status != "ok") return text + ", run failed: " + c.record.reason;
+  text += fmt::format(", {} loop closure{}", c.record.loop_closures, c.record.loop_closures == 1 ? "" : "s");
+  const std::vector<double> values = result.objectives.Values(c.record);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    text += fmt::format("{} {} {}", k == 0 ? "; " : ", ", ObjectiveAt(result, k).short_name, Readable(values[k], 4));
+  }
+  if (c.record.has_gt) text += ", error " + Metres(c.record.trans_mean_m) + " m";
+  if (!HasMap(c.map)) text += " (no map rendered)";
+  return text + ".";
+}
+
 }  // namespace
 
 OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, const std::string& dir,
@@ -95,6 +111,13 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   OptimizeFigures figures;
   if (!result.candidates.empty()) {
     figures.maps = out.Png(MapsSideBySide(result, options), "maps_side_by_side.png");
+    for (const CandidateMapPanel& panel : CandidateMapPanels(result, options)) {
+      std::string labels;
+      for (const auto* c : panel.group.members) labels += (labels.empty() ? "" : "_") + FileSafe(c->label);
+      const std::string file = "map_" + labels + ".png";
+      figures.map_panels.push_back({panel.group.label, file, out.Png(panel.image, file),
+                                    MapCaption(panel.group, result)});
+    }
     for (const auto* c : CandidatesInReportOrder(result)) {
       if (!HasMap(c->map)) continue;
       const std::string stem = "map_" + FileSafe(c->label);
@@ -110,6 +133,9 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   }
   if (!result.snapshots.empty()) {
     figures.evolution = out.Png(PopulationEvolutionFigure(result, options), "population_evolution.png");
+  }
+  if (const cv::Mat space = ParameterSpaceFigure(result, options); !space.empty()) {
+    figures.parameter_space = out.Png(space, "parameter_space.png");
   }
   if (gt) {
     figures.objective_vs_error =

@@ -47,7 +47,8 @@ TEST(WriteOptimizeReport, WritesEveryFileWithGroundTruth) {
         "table8_loop_scans.csv", "table9_10_errors.csv", "evaluations.csv", "maps_side_by_side.png",
         "map_recommended.pgm", "map_recommended.yaml", "map_knee.pgm", "map_knee.yaml", "map_worst.pgm",
         "map_worst.yaml", "population_gen1.png", "population_gen3.png", "population_gen5.png",
-        "population_evolution.png", "objective_vs_error.png", "report.html"}) {
+        "population_evolution.png", "objective_vs_error.png", "map_recommended.png", "map_knee.png",
+        "map_worst.png", "map_default.png", "parameter_space.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
     EXPECT_THAT(summary.files, ::testing::Contains(std::string(name)));
   }
@@ -172,8 +173,8 @@ TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   const std::string html = Slurp(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("The recommendation &lt;r=3, g=12&gt; beats the defaults &amp; closes more loops."));
   EXPECT_THAT(html, Not(HasSubstr("<r=3")));
-  // maps, three generations, evolution, objective vs error.
-  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 6);
+  // four maps, three generations, evolution, parameter space, objective vs error.
+  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 10);
   EXPECT_THAT(html, Not(HasSubstr("<script")));
   EXPECT_THAT(html, Not(HasSubstr("http://")));
   EXPECT_THAT(html, Not(HasSubstr("https://")));
@@ -185,6 +186,49 @@ TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   EXPECT_THAT(html, HasSubstr("5 of 8 individuals"));
 }
 
+TEST(WriteOptimizeReport, HtmlReadsAtAGlance) {
+  const fs::path dir = FreshDir("glance");
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  r.settings["tolerance"] = 0.40000000000000002;
+  r.settings["engine"] = {{"base", {{"resolution", 0.05}, {"scan_buffer_size", 70}}}, {"log", "office"}};
+  r.settings["default"] = {{"loop_search_maximum_distance", 4.0}};
+  WriteOptimizeReport(r, dir.string());
+  const std::string html = Slurp(dir / "report.html");
+  // Settings as key/value rows: nested keys joined, no JSON and no float noise.
+  EXPECT_THAT(html, HasSubstr("<th>tolerance</th><td>0.4</td>"));
+  EXPECT_THAT(html, HasSubstr("<th>default.loop_search_maximum_distance</th><td>4</td>"));
+  EXPECT_THAT(html, HasSubstr("<th>base.scan_buffer_size</th><td>70</td>"));  // engine settings, collapsed
+  EXPECT_THAT(html, HasSubstr("<details><summary>Engine settings"));
+  EXPECT_THAT(html, Not(HasSubstr("0.40000000000000002")));
+  EXPECT_THAT(html, Not(HasSubstr("{&quot;")));
+  // Maps two per row, each linking to its full-size file.
+  EXPECT_THAT(html, HasSubstr("grid-template-columns:repeat(2,minmax(0,1fr))"));
+  EXPECT_THAT(html, HasSubstr("<a href=\"map_recommended.png\"><img"));
+  // The reasons for the choice: 5 of 8 share it (a majority), the knee is another set.
+  EXPECT_THAT(html, HasSubstr("Why this recommendation"));
+  EXPECT_THAT(html, HasSubstr("5 of 8 individuals of the final population hold the recommended set (r=3 g=12)"));
+  EXPECT_THAT(html, HasSubstr("The knee of the final front is another set (r=3.5 g=10)"));
+  EXPECT_THAT(html, Not(HasSubstr("class=\"warning\"")));  // r = 3 and g = 12 sit inside their ranges
+}
+
+TEST(WriteOptimizeReport, MergesTheSameSetAndWarnsOnABound) {
+  const fs::path dir = FreshDir("merged");
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  r.candidates[0].record = testing::FakeRecord(6.0, 12, 0.1, false);  // r on the upper bound of [2, 6]
+  r.candidates[1].record = r.candidates[0].record;                     // the knee is the same set
+  r.recommended_share = 1;
+  const auto summary = WriteOptimizeReport(r, dir.string());
+  EXPECT_THAT(summary.files, ::testing::Contains(std::string("map_recommended_knee.png")));
+  EXPECT_FALSE(fs::exists(dir / "map_knee.png"));
+  const std::string html = Slurp(dir / "report.html");
+  EXPECT_EQ(Count(html, "alt=\"map of "), 3);
+  EXPECT_THAT(html, HasSubstr("alt=\"map of recommended = knee\""));
+  EXPECT_THAT(html, HasSubstr("falls back to the tie-break"));
+  EXPECT_THAT(html, HasSubstr("It is also the knee of the final front"));
+  EXPECT_THAT(html, HasSubstr("<p class=\"warning\">r = 6 sits on the upper bound of its search range [2, 6]"));
+  EXPECT_THAT(html, HasSubstr("Widen the search range"));
+}
+
 TEST(WriteOptimizeReport, IsDeterministic) {
   const fs::path a = FreshDir("det_a"), b = FreshDir("det_b");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), a.string());
@@ -194,7 +238,7 @@ TEST(WriteOptimizeReport, IsDeterministic) {
     EXPECT_EQ(Slurp(entry.path()), Slurp(b / entry.path().filename())) << entry.path().filename();
     ++compared;
   }
-  EXPECT_EQ(compared, 20);
+  EXPECT_EQ(compared, 25);
 }
 
 TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {

@@ -1,6 +1,7 @@
 // Shared names and texts (report_text.h).
 #include "slamtune/report/report_text.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -39,6 +40,32 @@ std::vector<const optim::Candidate*> CandidatesInReportOrder(const optim::Optimi
   return out;
 }
 
+const optim::Candidate& CandidateGroup::shown() const {
+  SLAMTUNE_CHECK(!members.empty());
+  for (const auto* c : members)
+    if (c->map.width > 0 && c->map.height > 0) return *c;
+  return *members.front();
+}
+
+std::vector<CandidateGroup> MergedCandidates(const optim::OptimizeResult& result) {
+  const auto same = [](const optim::EvaluationRecord& a, const optim::EvaluationRecord& b) {
+    return !a.key.empty() && !b.key.empty() ? a.key == b.key : a.params == b.params;
+  };
+  std::vector<CandidateGroup> groups;
+  for (const auto* c : CandidatesInReportOrder(result)) {
+    CandidateGroup* found = nullptr;
+    for (auto& g : groups)
+      if (same(g.members.front()->record, c->record)) found = &g;
+    if (found) {
+      found->members.push_back(c);
+      found->label += " = " + c->label;
+    } else {
+      groups.push_back({c->label, {c}});
+    }
+  }
+  return groups;
+}
+
 std::string ShortParamName(const std::string& ros_name) {
   static const std::map<std::string, std::string> kShort = {
       {"loop_search_maximum_distance", "r"},
@@ -50,11 +77,32 @@ std::string ShortParamName(const std::string& ros_name) {
   return it == kShort.end() ? ros_name : it->second;
 }
 
+std::string Readable(double value, int significant, int max_decimals) {
+  if (!std::isfinite(value)) return FormatNumber(value);
+  significant = std::max(significant, 1);
+  max_decimals = std::max(max_decimals, 0);
+  const double magnitude = std::abs(value);
+  if (magnitude != 0.0 && (magnitude < 1e-4 || magnitude >= 1e9)) {
+    return fmt::format("{:.{}e}", value, significant - 1);
+  }
+  const int exponent = magnitude == 0.0 ? 0 : static_cast<int>(std::floor(std::log10(magnitude)));
+  const int decimals = std::clamp(significant - 1 - exponent, 0, max_decimals);
+  std::string out = fmt::format("{:.{}f}", value, decimals);
+  if (out.find('.') != std::string::npos) {
+    while (out.back() == '0') out.pop_back();
+    if (out.back() == '.') out.pop_back();
+  }
+  if (out == "-0") out = "0";
+  return out;
+}
+
+std::string Metres(double metres) { return Readable(metres, 12, 3); }
+
 std::string FormatParam(double value) {
   if (std::isfinite(value) && value == std::round(value) && std::abs(value) < 1e15) {
     return std::to_string(static_cast<long long>(value));
   }
-  return FormatNumber(value);
+  return Readable(value, 4, 3);
 }
 
 std::string ParamSummary(const std::map<std::string, double>& params, const optim::SearchSpace& space) {

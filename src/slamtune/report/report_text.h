@@ -25,10 +25,33 @@ std::string ObjectiveLegend(const optim::ObjectiveSet& objectives);
 // the result's order. Missing labels are skipped.
 std::vector<const optim::Candidate*> CandidatesInReportOrder(const optim::OptimizeResult& result);
 
+// Candidates that hold the same parameter set, shown once: label "recommended = knee".
+struct CandidateGroup {
+  std::string label;                              // the members' labels joined by " = "
+  std::vector<const optim::Candidate*> members;   // in report order, at least one
+  // The member whose map was rendered (the first one when none was).
+  const optim::Candidate& shown() const;
+};
+
+// CandidatesInReportOrder merged by parameter set (EvaluationRecord::key, or the parameters
+// when a key is empty), in the order of each group's first member.
+std::vector<CandidateGroup> MergedCandidates(const optim::OptimizeResult& result);
+
 // The short symbol of a known loop-closure parameter (the paper's r, g, p, q), else the ROS name.
 std::string ShortParamName(const std::string& ros_name);
 
-// A parameter value: integers without decimals, others with %.10g.
+// A number as a reader wants it: at most `significant` significant digits and at most
+// `max_decimals` decimals, trailing zeros dropped, "-0" printed as "0", scientific notation
+// only below 1e-4 or from 1e9 on; "nan", "inf", "-inf" for the non-finite values. The one
+// rounding rule of the report's pages and figures (the CSV files keep %.10g, tables.h), e.g.
+// Readable(0.40000000000000002) = "0.4", Readable(1234.5678) = "1235",
+// Readable(3.14159, 9, 3) = "3.142" (metres to the millimetre: Metres).
+std::string Readable(double value, int significant = 4, int max_decimals = 6);
+// A distance in metres to the millimetre ("2.5", "3.142").
+std::string Metres(double metres);
+
+// A parameter value for the report: integers without decimals, others Readable (4 significant
+// digits, at most 3 decimals: a distance to the millimetre, a response or variance to 1e-3).
 std::string FormatParam(double value);
 
 // "r=3.2 g=12" over the space's varied dimensions (all params when the space is empty).

@@ -1,0 +1,89 @@
+#include "slamtune/report/optimize_figures.h"
+
+#include <gtest/gtest.h>
+
+#include "slamtune/report/testing/fake_optimize_result.h"
+
+namespace slamtune::report {
+namespace {
+
+// A result whose snapshots hold a tight front and one individual whose map broke, far off.
+optim::OptimizeResult FrontAndOutlier() {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  r.objectives = optim::ObjectiveSet(optim::ObjectiveSetKind::kPaper);
+  r.candidates.clear();
+  optim::GenerationSnapshot s;
+  s.generation = 1;
+  s.objectives = {{0.10, 1000, 12}, {0.11, 900, 14}, {0.12, 950, 10}, {0.115, 1200, 15}, {0.9, 90000, 400}};
+  s.decisions.assign(s.objectives.size(), {3.0, 10.0});
+  r.snapshots = {s};
+  return r;
+}
+
+TEST(ObjectiveLimits, FitTheFrontNotTheFarWorstPoint) {
+  const optim::OptimizeResult r = FrontAndOutlier();
+  const auto limits = ObjectiveLimits(r);
+  ASSERT_EQ(limits.size(), 3u);
+  // The front: the first three (the fourth is dominated by the first, the fifth by all).
+  ASSERT_TRUE(limits[1].has_value());
+  EXPECT_LT(limits[1]->lower, 900);
+  EXPECT_GT(limits[1]->upper, 1000);
+  EXPECT_LT(limits[1]->upper, 1200);  // the dominated 1200 and the broken 90000 lie outside
+  EXPECT_GT(limits[2]->upper, 15);     // the dominated 15 lies within one front range (4) of 14
+  EXPECT_LT(limits[2]->upper, 20);
+  // From the front's best value to one front range beyond its worst, with an 8 % margin.
+  EXPECT_NEAR(limits[1]->lower, 900 - 0.08 * 200, 1e-9);
+  EXPECT_NEAR(limits[1]->upper, 1100 + 0.08 * 200, 1e-9);
+}
+
+TEST(ObjectiveLimits, IncludeTheRecommendedAndKneeSets) {
+  optim::OptimizeResult r = FrontAndOutlier();
+  optim::Candidate rec;
+  rec.label = "recommended";
+  rec.record = testing::FakeRecord(3.0, 10, 0.0, false);
+  optim::Candidate worst;
+  worst.label = "worst";
+  worst.record = testing::FakeRecord(6.0, 6, 1.0, false);
+  worst.record.corner_pixels = 1e6;
+  r.candidates = {rec, worst};
+  const auto limits = ObjectiveLimits(r);
+  const double rec_nc = r.objectives.Values(rec.record)[1];
+  EXPECT_LE(limits[1]->lower, std::min(rec_nc, 900.0));
+  EXPECT_LT(limits[1]->upper, 1e5);  // the worst set stays out
+}
+
+TEST(PopulationFigure, SameAxesForEveryGeneration) {
+  const optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  const cv::Mat a = PopulationFigure(r.snapshots.front(), r, FigureOptions{});
+  const cv::Mat b = PopulationFigure(r.snapshots.back(), r, FigureOptions{});
+  EXPECT_EQ(a.size(), b.size());
+}
+
+TEST(CandidateMapPanels, OnePanelPerParameterSet) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  EXPECT_EQ(CandidateMapPanels(r, FigureOptions{}).size(), 4u);
+  r.candidates[1].record = r.candidates[0].record;  // the knee is the recommended set
+  const auto panels = CandidateMapPanels(r, FigureOptions{});
+  ASSERT_EQ(panels.size(), 3u);
+  EXPECT_EQ(panels[0].group.label, "recommended = knee");
+  EXPECT_FALSE(panels[0].image.empty());
+}
+
+TEST(ParameterSpaceFigure, OnePlotForTwoParametersAPanelEachOtherwise) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  ASSERT_EQ(r.space.dimensions.size(), 2u);
+  const cv::Mat two = ParameterSpaceFigure(r, FigureOptions{});
+  ASSERT_FALSE(two.empty());
+  EXPECT_EQ(two.cols, 2 * FigureOptions{}.panel_width);
+  r.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
+  const cv::Mat three = ParameterSpaceFigure(r, FigureOptions{});
+  EXPECT_GT(three.cols, 3 * FigureOptions{}.panel_width);  // three panels in a row
+  r.space.dimensions.clear();
+  EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+  r = testing::FakeOptimizeResult(false);
+  r.evaluations.clear();
+  EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+}
+
+}  // namespace
+}  // namespace slamtune::report
