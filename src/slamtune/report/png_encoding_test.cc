@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "slamtune/common/error.h"
+#include "slamtune/report/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -38,7 +39,7 @@ TEST(EncodePng, RoundTripsPixelsAndIsDeterministic) {
 }
 
 TEST(WriteBytes, WritesAndNamesUnwritablePaths) {
-  const auto path = (std::filesystem::temp_directory_path() / "slamtune_report_bytes.bin").string();
+  const auto path = (testing::UniqueTempDir("report_bytes") / "bytes.bin").string();
   WriteBytes({1, 2, 3}, path);
   EXPECT_EQ(std::filesystem::file_size(path), 3u);
   try {

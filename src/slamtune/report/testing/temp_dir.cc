@@ -1,0 +1,18 @@
+#include "slamtune/report/testing/temp_dir.h"
+
+#include <stdlib.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace slamtune::report::testing {
+
+std::filesystem::path UniqueTempDir(const std::string& stem) {
+  const std::string pattern = (std::filesystem::temp_directory_path() / ("slamtune_" + stem + "_XXXXXX")).string();
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back('\0');
+  if (::mkdtemp(buffer.data()) == nullptr) throw std::runtime_error("mkdtemp failed for " + pattern);
+  return std::filesystem::path(buffer.data());
+}
+
+}  // namespace slamtune::report::testing
