@@ -214,10 +214,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       if (!resume) RefuseHeldRun(dir, db_path);
     }
     probed = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
-    const optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
+    optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
     args.space_file = choice.space_name();
     if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
-    base_front_end = optim::BaseFrontEnd{choice.evidence, choice.steps, choice.Reason()};
+    base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(),
+                                         std::move(choice.map), std::move(choice.trajectory)};
   }
   if (flag_space) {
     settings.space = *flag_space;

@@ -13,9 +13,12 @@
 #include <vector>
 
 #include "slamtune/io/map_image.h"
+#include "slamtune/io/trajectory.h"
 #include "slamtune/optim/candidate_selection.h"
+#include "slamtune/optim/equivalent_region.h"
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/objective_set.h"
+#include "slamtune/optim/optimization_history.h"
 #include "slamtune/optim/search_space.h"
 #include "slamtune/slam/front_end_evidence.h"
 
@@ -56,6 +59,10 @@ struct BaseFrontEnd {
   slam::FrontEndEvidence evidence;
   std::vector<slam::SequentialMatchStep> steps;
   std::string choice;  // the line that says which space was searched and why
+  // The run's map and its poses (one per log scan), to draw the evidence where it happened;
+  // an empty map when the run failed before a map was built.
+  io::MapImage map;
+  std::vector<io::TimedPose> trajectory;
 };
 
 struct OptimizeResult {
@@ -68,6 +75,9 @@ struct OptimizeResult {
 
   std::vector<Candidate> candidates;  // recommended, knee, worst, default (in that order)
   int recommended_share = 0;          // individuals of the final population with the recommended set
+  // The evaluated sets whose map is equivalent to the recommendation's (equivalent_region.h);
+  // absent when the recommendation's run failed.
+  std::optional<EquivalentRegion> equivalent_region;
   std::string verdict;                // plain words: is the recommendation better than the base?
   VerdictKind verdict_kind = VerdictKind::kFailed;
   std::string base_label;             // the base configuration ("your configuration (FILE)", ...)
@@ -75,11 +85,12 @@ struct OptimizeResult {
   // (empty when the recommendation is not better) and the commands that load the files.
   std::vector<std::string> changes;
   std::vector<std::string> how_to_load;
-  std::string lowest_error_label;
-  std::optional<BaseFrontEnd> base_front_end;  // absent when --space was given or the run resumed     // with relations: the candidate with the lowest translational error
+  std::string lowest_error_label;              // with relations: the candidate with the lowest translational error
+  std::optional<BaseFrontEnd> base_front_end;  // absent when --space was given or the run resumed
 
   std::vector<EvaluationRecord> evaluations;    // every finished evaluation, in order
   std::vector<GenerationSnapshot> snapshots;    // generations 1, G/2 and G (at least)
+  OptimizationHistory history;                  // best objectives and hypervolume of every generation (0..G)
   std::size_t evaluation_count = 0;             // SLAM runs done (this process and earlier, resumed)
   unsigned generations_run = 0;                 // generations evolved (this process and earlier)
   std::string settling;                         // when and why it stopped (settling.h)

@@ -287,6 +287,8 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
        {}},
       {"default", settings.base_label + ": the base configuration's values", defaults, {}},
   };
+  result.equivalent_region =
+      FindEquivalentRegion(result.evaluations, final_records[rec.index], settings.space, settings.objectives);
   VerdictOptions verdict_options;
   verdict_options.base_label = settings.base_label;
   verdict_options.objectives = settings.objectives;
@@ -311,6 +313,14 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
       c.path = std::move(rendered.path);
     }
   }
+  // Every stored generation, the initial population (0) included, for the history figure.
+  std::vector<std::vector<std::vector<double>>> populations;
+  for (unsigned g = 0; g <= done_gens; ++g) {
+    const std::optional<nlohmann::json> saved = store.Generation(static_cast<int>(g));
+    if (!saved) break;
+    populations.push_back(saved->at("f").get<std::vector<std::vector<double>>>());
+  }
+  result.history = SummarizeGenerations(populations, settings.objectives);
   std::sort(result.snapshots.begin(), result.snapshots.end(),
             [](const auto& a, const auto& b) { return a.generation < b.generation; });
   const auto st = evaluator.stats();

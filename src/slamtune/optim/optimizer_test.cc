@@ -94,6 +94,27 @@ TEST(Optimizer, RunsAndPicksTheFourCandidates) {
   EXPECT_FALSE(r.verdict.empty());
   EXPECT_EQ(r.snapshots.size(), 3u);  // generations 1, 3, 6
   EXPECT_EQ(r.snapshots.back().generation, 6);
+  // The history covers the initial population and every generation; the front only improves
+  // on the objectives' common ranges when the survivors are elitist, so check its bounds.
+  ASSERT_EQ(r.history.generations.size(), 7u);
+  EXPECT_EQ(r.history.generations.front().generation, 0);
+  EXPECT_EQ(r.history.generations.back().generation, 6);
+  for (const auto& g : r.history.generations) {
+    EXPECT_GT(g.hypervolume, 0.0);
+    EXPECT_LE(g.hypervolume, 1.1 * 1.1 * 1.1);
+    EXPECT_GE(g.front_size, 1);
+    ASSERT_EQ(g.best.size(), 3u);
+  }
+  EXPECT_GE(r.history.generations.back().hypervolume, r.history.generations.front().hypervolume);
+  // The recommendation is a member of its own equivalent region.
+  ASSERT_TRUE(r.equivalent_region.has_value());
+  EXPECT_GE(r.equivalent_region->members, 1u);
+  EXPECT_EQ(r.equivalent_region->loop_closures, r.candidates[0].record.loop_closures);
+  for (const ParameterRange& range : r.equivalent_region->ranges) {
+    const double v = r.candidates[0].record.params.at(range.name);
+    EXPECT_LE(range.lower, v);
+    EXPECT_GE(range.upper, v);
+  }
   for (const auto& e : r.evaluations) {
     const double g = e.params.at("loop_match_minimum_chain_size");
     EXPECT_EQ(g, std::round(g));
@@ -143,6 +164,10 @@ TEST(Optimizer, ResumeAfterAKillMidGenerationGivesTheUninterruptedResult) {
   EXPECT_EQ(resumed.candidates[0].record.key, reference.candidates[0].record.key);
   EXPECT_EQ(resumed.candidates[1].record.key, reference.candidates[1].record.key);
   EXPECT_EQ(resumed.evaluation_count, reference.evaluation_count);
+  ASSERT_EQ(resumed.history.generations.size(), reference.history.generations.size());
+  for (std::size_t g = 0; g < reference.history.generations.size(); ++g) {
+    EXPECT_EQ(resumed.history.generations[g].hypervolume, reference.history.generations[g].hypervolume) << g;
+  }
   EXPECT_LT(resumed_calls, static_cast<int>(reference.evaluation_count));  // finished work not redone
 }
 

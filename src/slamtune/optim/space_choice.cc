@@ -19,6 +19,8 @@ DefaultSpaceChoice ChooseDefaultSpace(const SlamEvaluationContext& context) {
   DefaultSpaceChoice choice;
   choice.evidence = run.front_end;
   choice.steps = std::move(run.sequential_matches);
+  choice.map = std::move(run.map);
+  choice.trajectory = std::move(run.trajectory);
   if (base.status == "ok" && run.front_end.points_at_front_end()) choice.kind = DefaultSpaceKind::kFrontEnd;
   return choice;
 }

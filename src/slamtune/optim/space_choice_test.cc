@@ -37,6 +37,10 @@ TEST(ChooseDefaultSpace, ABreakInTheSequentialMatchingChoosesTheFrontEndSpace) {
   EXPECT_EQ(choice.evidence.breaks, 1);
   EXPECT_THAT(choice.Reason(), HasSubstr("search space: front-end"));
   EXPECT_THAT(choice.Reason(), HasSubstr("lost its place"));
+  // The run's map and poses come with it, to draw the break where it happened.
+  EXPECT_GT(choice.map.width, 0);
+  EXPECT_EQ(choice.map.pixels.size(), static_cast<std::size_t>(choice.map.width) * choice.map.height);
+  EXPECT_FALSE(choice.trajectory.empty());
 }
 
 // The corridor-long world's bare south corridor: no match is at the window's edge, yet the
