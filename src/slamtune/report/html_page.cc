@@ -33,7 +33,39 @@ summary{cursor:pointer;color:#0072b2}
 figure{margin:1em 0}
 figure img{max-width:100%;height:auto;border:1px solid #ddd}
 figcaption{font-size:.9em;color:#555}
-code,.mono{font-family:ui-monospace,Menlo,Consolas,monospace;font-size:.92em})";
+code,.mono{font-family:ui-monospace,Menlo,Consolas,monospace;font-size:.92em}
+.scroll{max-height:36em;overflow:auto;border:1px solid #ddd}
+.scroll table{margin:0}
+table.sortable{width:100%;font-size:.85em}
+table.sortable th{cursor:pointer;position:sticky;top:0;overflow-wrap:anywhere;padding:.25em .35em}
+table.sortable td{white-space:nowrap;padding:.25em .35em}
+table.sortable td:last-child{white-space:normal;overflow-wrap:anywhere;min-width:6em}
+table.sortable th[aria-sort=ascending]::after{content:" \25B2"}
+table.sortable th[aria-sort=descending]::after{content:" \25BC"})";
+
+// Sorts a table.sortable by the column whose header is clicked (again: the other way). Cells
+// compare as numbers when both are numbers, as text otherwise; empty cells stay last.
+constexpr const char* kSortScript = R"(document.querySelectorAll("table.sortable").forEach(function (table) {
+  var heads = table.tHead.rows[0].cells;
+  Array.prototype.forEach.call(heads, function (th, column) {
+    th.addEventListener("click", function () {
+      var ascending = th.getAttribute("aria-sort") !== "ascending";
+      Array.prototype.forEach.call(heads, function (h) { h.removeAttribute("aria-sort"); });
+      th.setAttribute("aria-sort", ascending ? "ascending" : "descending");
+      var body = table.tBodies[0];
+      var rows = Array.prototype.slice.call(body.rows);
+      var text = function (row) { var c = row.cells[column]; return c ? c.textContent.trim() : ""; };
+      rows.sort(function (a, b) {
+        var x = text(a), y = text(b);
+        if (x === "" || y === "") return (x === "") - (y === "");
+        var nx = Number(x), ny = Number(y);
+        var order = !isNaN(nx) && !isNaN(ny) ? nx - ny : x.localeCompare(y);
+        return ascending ? order : -order;
+      });
+      rows.forEach(function (row) { body.appendChild(row); });
+    });
+  });
+});)";
 
 }  // namespace
 
@@ -88,6 +120,27 @@ void HtmlPage::Table(const std::vector<std::string>& header, const std::vector<s
   body_ += "</table></div>\n";
 }
 
+void HtmlPage::SortableTable(const std::vector<std::string>& header,
+                             const std::vector<std::vector<std::string>>& rows) {
+  body_ += "<div class=\"table scroll\"><table class=\"sortable\">\n<thead><tr>";
+  for (const auto& h : header) {
+    // Long snake_case names wrap after an underscore rather than anywhere.
+    std::string text;
+    for (char c : HtmlEscape(h)) text += c == '_' ? std::string("_<wbr>") : std::string(1, c);
+    body_ += "<th title=\"click to sort\">" + text + "</th>";
+  }
+  body_ += "</tr></thead>\n<tbody>\n";
+  for (const auto& row : rows) {
+    body_ += "<tr>";
+    for (std::size_t i = 0; i < std::max(row.size(), header.size()); ++i) {
+      body_ += "<td>" + (i < row.size() ? HtmlEscape(row[i]) : std::string()) + "</td>";
+    }
+    body_ += "</tr>\n";
+  }
+  body_ += "</tbody></table></div>\n";
+  sortable_ = true;
+}
+
 void HtmlPage::List(const std::vector<std::string>& items) {
   body_ += "<ul>\n";
   for (const auto& item : items) body_ += "<li>" + HtmlEscape(item) + "</li>\n";
@@ -123,8 +176,8 @@ std::string HtmlPage::Finish() const {
   return fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}</title>\n"
-      "<style>\n{}\n</style>\n</head>\n<body>\n{}</body>\n</html>\n",
-      HtmlEscape(title_), kStyle, body_);
+      "<style>\n{}\n</style>\n</head>\n<body>\n{}{}</body>\n</html>\n",
+      HtmlEscape(title_), kStyle, body_, sortable_ ? "<script>\n" + std::string(kSortScript) + "\n</script>\n" : "");
 }
 
 }  // namespace slamtune::report

@@ -1,5 +1,6 @@
 // A self-contained HTML page for the report: inline CSS, images as base64 data URIs (RFC
-// 2397), no scripts, no external resources, so report.html reads the same offline, mailed or
+// 2397), no external resources, and no script but the few inline lines that sort a sortable
+// table when a header is clicked, so report.html reads the same offline, mailed or
 // archived (a figure may also link to its full-size file beside the page). The layout fits a
 // 1400 px window without horizontal scrolling: content is at most 1200 px wide, table cells
 // wrap long values anywhere, and a table still too wide scrolls inside its own box. Every piece of text goes through HtmlEscape: log paths, labels and verdicts come
@@ -30,6 +31,13 @@ class HtmlPage {
   void KeyValues(const std::vector<std::pair<std::string, std::string>>& items);
   // A table with a header row; rows shorter than the header are padded with empty cells.
   void Table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
+  // A table whose rows the reader sorts by clicking a column header (numbers as numbers, text as
+  // text, empty cells last; a second click reverses). It scrolls inside its own box (at most
+  // about 36 lines high, as wide as the page) with the header kept in view. Cells do not wrap,
+  // except those of the last column (for long text, e.g. why a run failed); headers wrap after
+  // an underscore, or anywhere when they must, so many columns of numbers fit the page. The
+  // page then ends with the sorting script.
+  void SortableTable(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
   // A bulleted list.
   void List(const std::vector<std::string>& items);
   // A figure with the PNG embedded as a data URI, its alt text and a caption.
@@ -54,6 +62,7 @@ class HtmlPage {
  private:
   std::string title_;
   std::string body_;
+  bool sortable_ = false;  // a SortableTable was added: Finish appends the sorting script
 };
 
 }  // namespace slamtune::report

@@ -344,11 +344,22 @@ cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOp
     return RenderPlot(series, o).image;
   }
 
+  return ObjectiveAgainstParameters(result, 0, options);
+}
+
+cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::size_t k, const FigureOptions& options) {
+  options.Validate();
+  const auto& dims = result.space.dimensions;
+  if (dims.empty() || result.evaluations.empty() || k >= result.objectives.size()) return {};
+  const optim::Objective objective_id = result.objectives.objectives()[k];
+  const std::string objective = ObjectiveAt(result, k).short_name;
+  std::size_t successful = 0;
+  for (const auto& e : result.evaluations) successful += e.status == "ok" ? 1 : 0;
   const auto limits = ObjectiveLimits(result);
   std::vector<cv::Mat> panels;
   int most_outside = 0;
   for (const auto& d : dims) {
-    Series all = MakeSeries(fmt::format("evaluated sets ({})", values.size()), {}, {});
+    Series all = MakeSeries(fmt::format("evaluated sets ({})", successful), {}, {});
     all.colour = PaletteColour(5);
     all.marker = Marker::kCircle;
     all.marker_size = 6;
@@ -356,22 +367,22 @@ cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOp
     for (const auto& e : result.evaluations) {
       const auto x = ParamOf(e, d.name);
       if (!x || e.status != "ok") continue;
-      const double v = optim::ValueOf(e, first);
+      const double v = optim::ValueOf(e, objective_id);
       all.x.push_back(*x);
       all.y.push_back(v);
-      if (limits[0] && (v < limits[0]->lower || v > limits[0]->upper)) ++outside;
+      if (limits[k] && (v < limits[k]->lower || v > limits[k]->upper)) ++outside;
     }
     std::vector<Series> series = {all};
     AddCandidates(series, result, [&](const optim::Candidate& c) -> std::optional<std::pair<double, double>> {
       const auto x = ParamOf(c.record, d.name);
       if (!x || c.record.status != "ok") return std::nullopt;
-      return std::pair{*x, optim::ValueOf(c.record, first)};
+      return std::pair{*x, optim::ValueOf(c.record, objective_id)};
     });
     PlotOptions o = PanelOptions(options);
     o.x_limits = BoundsOf(d);
-    o.y_limits = limits[0];
+    o.y_limits = limits[k];
     o.x_label = DimensionTitle(d);
-    o.y_label = ObjectiveAt(result, 0).title;
+    o.y_label = ObjectiveAt(result, k).title;
     o.title = ShortParamName(d.name);
     o.legend = panels.empty();
     panels.push_back(RenderPlot(series, o).image);
@@ -380,7 +391,7 @@ cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOp
   GridOptions g;
   g.columns = 3;
   g.title = fmt::format("{} of every evaluated parameter set against each parameter (lower is better){}", objective,
-                        most_outside > 0 ? fmt::format("; {} of {} sets lie outside the axes", most_outside, values.size())
+                        most_outside > 0 ? fmt::format("; {} of {} sets lie outside the axes", most_outside, successful)
                                          : "");
   return ComposeGrid(panels, g);
 }
@@ -420,6 +431,54 @@ cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions
   o.y_limits = AxisLimits{0.0, 1.0};
   o.title = "The base configuration's front end along the log";
   return RenderPlot({all, edge, broke}, o).image;
+}
+
+cv::Mat HistoryFigure(const optim::OptimizeResult& result, const FigureOptions& options) {
+  options.Validate();
+  const optim::OptimizationHistory& h = result.history;
+  if (h.generations.empty()) return {};
+  const double last = h.generations.back().generation;
+  const AxisLimits x_limits{0.0, std::max(1.0, last)};
+  std::vector<cv::Mat> panels;
+  for (std::size_t k = 0; k < result.objectives.size(); ++k) {
+    Series best = MakeSeries("", {}, {}, SeriesStyle::kLineAndMarkers);
+    best.colour = PaletteColour(k);
+    best.marker = Marker::kCircle;
+    best.marker_size = 6;
+    for (const optim::GenerationSummary& g : h.generations) {
+      if (k >= g.best.size()) continue;
+      best.x.push_back(g.generation);
+      best.y.push_back(g.best[k]);  // NaN (no successful run) is skipped
+    }
+    PlotOptions o = PanelOptions(options);
+    o.x_limits = x_limits;
+    o.x_label = "generation";
+    o.y_label = ObjectiveAt(result, k).title;
+    o.title = fmt::format("best {} of each generation (lower is better)", ObjectiveAt(result, k).short_name);
+    o.legend = false;
+    panels.push_back(RenderPlot({best}, o).image);
+  }
+  Series hv = MakeSeries("", {}, {}, SeriesStyle::kLineAndMarkers);
+  hv.colour = PaletteColour(0);
+  hv.marker = Marker::kSquare;
+  hv.marker_size = 6;
+  for (const optim::GenerationSummary& g : h.generations) {
+    hv.x.push_back(g.generation);
+    hv.y.push_back(g.hypervolume);
+  }
+  PlotOptions o = PanelOptions(options);
+  o.x_limits = x_limits;
+  o.y_limits = AxisLimits{0.0, std::pow(optim::kHypervolumeReference, static_cast<double>(result.objectives.size()))};
+  o.x_label = "generation";
+  o.y_label = "hypervolume (normalised objectives)";
+  o.title = "hypervolume of the front (higher is better)";
+  o.legend = false;
+  panels.push_back(RenderPlot({hv}, o).image);
+  GridOptions g;
+  g.columns = 2;
+  g.title = fmt::format("The search generation by generation ({} to {})", h.generations.front().generation,
+                        h.generations.back().generation);
+  return ComposeGrid(panels, g);
 }
 
 cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,

@@ -86,6 +86,18 @@ cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOp
 // (slam/front_end_evidence.h), so a user sees where the map broke.
 cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions& options);
 
+// Slices of the search: objective `k` of every evaluated parameter set against each searched
+// parameter (three panels per row, on the population figures' axes for that objective), with
+// the candidates marked. ParameterSpaceFigure shows it for the first objective when the space is
+// not two-dimensional. Empty when nothing varied, nothing was evaluated or k is out of range.
+cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::size_t k, const FigureOptions& options);
+
+// How the search progressed (result.history): one panel per objective with its best value in each
+// generation (0 = the initial population), and one with the hypervolume of each generation's
+// non-dominated front in objectives normalised over all generations (optim/optimization_history.h),
+// on an axis from 0 to its largest possible value, 1.1^objectives. Empty without a history.
+cv::Mat HistoryFigure(const optim::OptimizeResult& result, const FigureOptions& options);
+
 // The style of a candidate's marker (by label), shared with the sweep figures.
 Series CandidateSeries(const optim::Candidate& candidate, double x, double y);
 

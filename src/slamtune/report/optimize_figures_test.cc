@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "slamtune/report/testing/fake_optimize_result.h"
 
 namespace slamtune::report {
@@ -83,6 +85,39 @@ TEST(ParameterSpaceFigure, OnePlotForTwoParametersAPanelEachOtherwise) {
   r = testing::FakeOptimizeResult(false);
   r.evaluations.clear();
   EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+}
+
+TEST(ObjectiveAgainstParameters, OnePanelPerParameterForEveryObjective) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  const cv::Mat first = ObjectiveAgainstParameters(r, 0, FigureOptions{});
+  const cv::Mat last = ObjectiveAgainstParameters(r, 2, FigureOptions{});
+  ASSERT_FALSE(first.empty());
+  ASSERT_FALSE(last.empty());
+  EXPECT_GT(first.cols, 2 * FigureOptions{}.panel_width);  // two panels in a row
+  EXPECT_LT(first.cols, 3 * FigureOptions{}.panel_width);
+  EXPECT_EQ(first.size(), last.size());
+  EXPECT_GT(cv::norm(first, last, cv::NORM_L1), 0.0);  // other values on the y axes
+  EXPECT_TRUE(ObjectiveAgainstParameters(r, 3, FigureOptions{}).empty());
+  // With more than two parameters, the parameter-space figure is the first objective's slices.
+  r.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
+  EXPECT_EQ(cv::norm(ParameterSpaceFigure(r, FigureOptions{}), ObjectiveAgainstParameters(r, 0, FigureOptions{}),
+                     cv::NORM_INF),
+            0.0);
+}
+
+TEST(HistoryFigure, ObjectivePanelsAndTheHypervolume) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  const cv::Mat figure = HistoryFigure(r, FigureOptions{});
+  ASSERT_FALSE(figure.empty());
+  EXPECT_GT(figure.cols, 2 * FigureOptions{}.panel_width);  // 2 x 2 panels
+  EXPECT_GT(figure.rows, 2 * FigureOptions{}.panel_height);
+  r.history = {};
+  EXPECT_TRUE(HistoryFigure(r, FigureOptions{}).empty());
+  // A generation without any successful run leaves a gap, not an error.
+  r = testing::FakeOptimizeResult(false);
+  r.history.generations[2].best.assign(3, std::nan(""));
+  r.history.generations[2].hypervolume = 0.0;
+  EXPECT_FALSE(HistoryFigure(r, FigureOptions{}).empty());
 }
 
 }  // namespace

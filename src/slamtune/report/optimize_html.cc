@@ -84,6 +84,81 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.KeyValues(items);
 }
 
+// How sure: the evaluated sets that gave the recommendation's map (optim/equivalent_region.h).
+void EquivalentRegionSection(HtmlPage& page, const optim::OptimizeResult& r) {
+  if (!r.equivalent_region) return;
+  const optim::EquivalentRegion& e = *r.equivalent_region;
+  page.Heading(3, "How sure: the parameter sets with an equivalent map", "equivalent");
+  page.Paragraph(e.Describe() + ".");
+  page.Paragraph(fmt::format(
+                     "Equivalent: the run closed as many loops as the recommendation ({}), and each objective "
+                     "differs from the recommendation's by at most {:.0f} % of that objective's range over all "
+                     "successful evaluations. The ranges are the smallest box around those parameter sets; sets "
+                     "inside it that were not evaluated are not known. {}",
+                     e.loop_closures, 100.0 * e.tolerance,
+                     e.members <= 1 ? "Only the recommendation itself qualifies: the result is sensitive to its "
+                                      "exact values, or the search sampled little around it."
+                                    : "A wide range says the value is not critical there; a narrow one says it is."),
+                 "note");
+}
+
+// Every evaluation in a table the reader sorts by clicking a header; collapsed when long.
+void EvaluationsSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) {
+  if (r.evaluations.empty()) return;
+  page.Heading(2, "Every evaluation", "evaluations");
+  std::vector<std::string> header = {"#"};
+  for (const optim::Dimension& d : r.space.dimensions) header.push_back(d.name);
+  for (std::size_t k = 0; k < r.objectives.size(); ++k) header.push_back(ObjectiveAt(r, k).short_name);
+  header.push_back("loop closures");
+  if (gt) header.insert(header.end(), {"trans. error (m)", "rot. error (deg)"});
+  header.push_back("status");
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < r.evaluations.size(); ++i) {
+    const optim::EvaluationRecord& e = r.evaluations[i];
+    std::vector<std::string> row = {std::to_string(i + 1)};
+    for (const optim::Dimension& d : r.space.dimensions) {
+      const auto it = e.params.find(d.name);
+      row.push_back(it == e.params.end() ? "" : FormatParam(it->second));
+    }
+    for (double v : r.objectives.Values(e)) row.push_back(Ok(e) ? Short(v) : "");
+    row.push_back(Ok(e) ? std::to_string(e.loop_closures) : "");
+    if (gt) {
+      row.push_back(e.has_gt ? Metres(e.trans_mean_m) : "");
+      row.push_back(e.has_gt ? Readable(e.rot_mean_deg, 3) : "");
+    }
+    row.push_back(Ok(e) ? "ok" : "failed: " + e.reason);
+    rows.push_back(std::move(row));
+  }
+  const bool long_table = rows.size() > 20;
+  if (long_table) {
+    page.BeginDetails(fmt::format("All {} evaluations, in the order they ran (click to open; click a column header "
+                                  "to sort)",
+                                  rows.size()));
+  } else {
+    page.Paragraph("In the order they ran; click a column header to sort by it (again: the other way).", "note");
+  }
+  page.SortableTable(header, rows);
+  if (long_table) page.EndDetails();
+  page.Paragraph("The same rows, with every map figure, are in evaluations.csv. " + ObjectiveLegend(r.objectives) +
+                     " (all minimised).",
+                 "note");
+}
+
+// How the search progressed, generation by generation (optim/optimization_history.h).
+void HistorySection(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeFigures& f) {
+  if (f.history.empty()) return;
+  page.Heading(2, "How the search progressed", "history");
+  page.Image(f.history, "best objectives and hypervolume per generation",
+             fmt::format("The best value of each objective in every generation (0 is the initial random population), "
+                         "and the hypervolume of each generation's non-dominated front: the objectives normalised "
+                         "to [0, 1] by their ranges over all generations, the volume they dominate up to {} in "
+                         "each (largest possible value {}). Failed runs are left out. A curve that has flattened "
+                         "says more generations would change little (history.png; the values are in results.json, "
+                         "\"history\").",
+                         Readable(optim::kHypervolumeReference),
+                         Readable(std::pow(optim::kHypervolumeReference, static_cast<double>(r.objectives.size())))));
+}
+
 // The verdict, why this set was recommended (with any warning), then what to do and how.
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
@@ -94,6 +169,7 @@ void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
     page.Heading(3, "Why this recommendation");
     page.Paragraph(reading.why);
     for (const std::string& w : reading.warnings) page.Paragraph(w, "warning");
+    EquivalentRegionSection(page, r);
   }
   if (!r.lowest_error_label.empty()) {
     page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
@@ -115,8 +191,17 @@ void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
 void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeFigures& f) {
   if (!r.base_front_end) return;
   const optim::BaseFrontEnd& fe = *r.base_front_end;
-  page.Heading(2, "Front end of the base configuration");
+  page.Heading(2, "Front end of the base configuration", "front-end");
   page.Paragraph(fe.choice);
+  if (!f.front_end_map.empty()) {
+    page.FigureGrid({{f.front_end_map, "where the base configuration's front end failed, on its map",
+                      "Where it happened, on the base configuration's own map (front_end_map.png; click for the "
+                      "full-size image): the robot's path in blue, stretches where the scans saw structure in one "
+                      "direction only in orange, suspect stretches in magenta, and each break as a red ring "
+                      "labelled with its log scan index.",
+                      "front_end_map.png"}},
+                    1);
+  }
   if (!f.front_end.empty()) {
     page.Image(f.front_end, "sequential match responses along the log",
                "Each sequential match of the base configuration's run: its response, those that ended at the edge "
@@ -315,6 +400,25 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   }
   if (f.populations.empty()) page.Paragraph("No population snapshot was recorded.");
 
+  HistorySection(page, r, f);
+
+  if (!f.slices.empty()) {
+    page.Heading(2, "Each objective against each parameter", "slices");
+    page.Paragraph("Slices through the search: every successful evaluation, one panel per searched parameter, with "
+                   "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
+                   "that objective; a flat cloud says the objective does not depend on it within its range.",
+                   "note");
+    page.BeginDetails(fmt::format("{} figure{}, one per objective (click to open)", f.slices.size(),
+                                  f.slices.size() == 1 ? "" : "s"));
+    std::vector<HtmlPage::Figure> figures;
+    for (const auto& s : f.slices) {
+      figures.push_back({s.png, s.label + " against each parameter",
+                         s.label + " against each parameter (" + s.file + ").", s.file});
+    }
+    page.FigureGrid(figures, 1);
+    page.EndDetails();
+  }
+
   if (!f.parameter_space.empty()) {
     page.Heading(2, "Parameter space", "parameters");
     page.Image(f.parameter_space, "evaluated parameter sets in the search space",
@@ -322,6 +426,8 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
                "range of each parameter (parameter_space.png). A recommendation at the edge of a range may lie "
                "beyond it.");
   }
+
+  EvaluationsSection(page, r, correlation.has_value());
 
   if (correlation) CorrelationSection(page, f, *correlation);
 

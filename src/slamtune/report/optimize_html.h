@@ -2,8 +2,10 @@
 // after the run: the verdict, why this set was recommended (with a warning for a value on a
 // bound of its range) and what to do next, the run, the candidates (parameters, objectives,
 // loop closures, errors), the maps with their loop closures, the population and
-// parameter-space figures, the objectives against ground-truth error with their rank
-// correlations, what the objectives can and cannot tell, and the settings.
+// parameter-space figures, how the search progressed generation by generation, every
+// evaluation in a sortable table, the objectives against ground-truth error with their rank
+// correlations, what the objectives can and cannot tell, and the settings. Under the
+// recommendation: the parameter ranges that gave an equivalent map (how sure it is).
 #pragma once
 
 #include <cstdint>
@@ -44,6 +46,9 @@ struct OptimizeFigures {
   std::vector<std::uint8_t> parameter_space;                            // empty: nothing varied or evaluated
   std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
   std::vector<std::uint8_t> front_end;                                  // empty: no base front end
+  std::vector<MapPanel> slices;  // per objective (label = its symbol): it against each parameter; empty: none
+  std::vector<std::uint8_t> history;  // best objectives and hypervolume per generation; empty: no history
+  std::vector<std::uint8_t> front_end_map;  // the evidence on the base run's map; empty: no base front end or no map
 };
 
 // What the objectives can tell, measured with a reference Karto on real logs; shown in every

@@ -9,6 +9,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/map_image.h"
+#include "slamtune/report/front_end_map.h"
 #include "slamtune/report/map_panels.h"
 #include "slamtune/report/optimize_figures.h"
 #include "slamtune/report/optimize_html.h"
@@ -134,6 +135,15 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   if (!result.snapshots.empty()) {
     figures.evolution = out.Png(PopulationEvolutionFigure(result, options), "population_evolution.png");
   }
+  for (std::size_t k = 0; k < result.objectives.size(); ++k) {
+    const cv::Mat slices = ObjectiveAgainstParameters(result, k, options);
+    if (slices.empty()) continue;
+    const std::string name = std::string("slices_") + optim::InfoOf(result.objectives.objectives()[k]).key + ".png";
+    figures.slices.push_back({ObjectiveAt(result, k).short_name, name, out.Png(slices, name), ""});
+  }
+  if (const cv::Mat history = HistoryFigure(result, options); !history.empty()) {
+    figures.history = out.Png(history, "history.png");
+  }
   if (const cv::Mat space = ParameterSpaceFigure(result, options); !space.empty()) {
     figures.parameter_space = out.Png(space, "parameter_space.png");
   }
@@ -143,7 +153,12 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   }
 
   if (result.base_front_end) {
-    figures.front_end = out.Png(FrontEndFigure(*result.base_front_end, options), "front_end.png");
+    const optim::BaseFrontEnd& fe = *result.base_front_end;
+    figures.front_end = out.Png(FrontEndFigure(fe, options), "front_end.png");
+    if (HasMap(fe.map)) {
+      figures.front_end_map =
+          out.Png(RenderFrontEndMap(fe.map, fe.trajectory, fe.steps, fe.evidence), "front_end_map.png");
+    }
   }
 
   std::vector<std::string> listed = out.files();

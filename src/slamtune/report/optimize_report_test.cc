@@ -11,7 +11,9 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/map_image.h"
+#include "slamtune/report/front_end_map.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
+#include "slamtune/report/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -27,11 +29,8 @@ std::string Slurp(const fs::path& path) {
   return s.str();
 }
 
-fs::path FreshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("slamtune_report_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
+// A new, empty folder of its own for each call: concurrent test runs never share one.
+fs::path FreshDir(const std::string& name) { return testing::UniqueTempDir("report_" + name); }
 
 int Count(const std::string& text, const std::string& what) {
   int n = 0;
@@ -48,7 +47,8 @@ TEST(WriteOptimizeReport, WritesEveryFileWithGroundTruth) {
         "map_recommended.pgm", "map_recommended.yaml", "map_knee.pgm", "map_knee.yaml", "map_worst.pgm",
         "map_worst.yaml", "population_gen1.png", "population_gen3.png", "population_gen5.png",
         "population_evolution.png", "objective_vs_error.png", "map_recommended.png", "map_knee.png",
-        "map_worst.png", "map_default.png", "parameter_space.png", "report.html"}) {
+        "map_worst.png", "map_default.png", "parameter_space.png", "history.png", "slices_occupied_ratio.png", "slices_corner_pixels.png",
+        "slices_enclosed_areas.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
     EXPECT_THAT(summary.files, ::testing::Contains(std::string(name)));
   }
@@ -114,13 +114,25 @@ TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
   fe.evidence = slam::AssessFrontEnd(fe.steps);
   ASSERT_TRUE(fe.evidence.points_at_front_end());
   fe.choice = "search space: front-end (...)";
+  // The base run's map and a pose per log scan (a straight line across the room).
+  fe.map = testing::FakeMap(60, 40);
+  for (int i = 0; i < 180; ++i) fe.trajectory.push_back({0.1 * i, {-0.8 + 0.01 * i, -1.0, 0.0}});
   result.base_front_end = fe;
   const fs::path dir = FreshDir("fe");
   const auto summary = WriteOptimizeReport(result, dir.string());
   EXPECT_THAT(summary.files, ::testing::Contains(std::string("front_end.png")));
   EXPECT_FALSE(cv::imread((dir / "front_end.png").string()).empty());
+  // Where it broke, on the map: the same image RenderFrontEndMap draws for `slamtune run`.
+  EXPECT_THAT(summary.files, ::testing::Contains(std::string("front_end_map.png")));
+  const cv::Mat where = cv::imread((dir / "front_end_map.png").string());
+  ASSERT_FALSE(where.empty());
+  const cv::Mat expected = RenderFrontEndMap(fe.map, fe.trajectory, fe.steps, fe.evidence);
+  ASSERT_EQ(where.size(), expected.size());
+  EXPECT_EQ(cv::norm(where, expected, cv::NORM_INF), 0.0);
   const std::string html = Slurp(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("Front end of the base configuration"));
+  EXPECT_THAT(html, HasSubstr("front_end_map.png"));
+  EXPECT_LT(html.find("Front end of the base configuration"), html.find("front_end_map.png"));
   EXPECT_THAT(html, HasSubstr("60-60"));  // the break's log scans
   const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
   EXPECT_EQ(j["base_front_end"]["breaks"].get<int>(), 1);
@@ -129,7 +141,78 @@ TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
   const fs::path plain = FreshDir("fe_plain");
   WriteOptimizeReport(testing::FakeOptimizeResult(false), plain.string());
   EXPECT_FALSE(fs::exists(plain / "front_end.png"));
+  EXPECT_FALSE(fs::exists(plain / "front_end_map.png"));
   EXPECT_THAT(Slurp(plain / "report.html"), Not(HasSubstr("Front end of the base configuration")));
+  // A base run that failed before it built a map: the plot, no map.
+  fe.map = io::MapImage{};
+  result.base_front_end = fe;
+  const fs::path no_map = FreshDir("fe_no_map");
+  WriteOptimizeReport(result, no_map.string());
+  EXPECT_TRUE(fs::exists(no_map / "front_end.png"));
+  EXPECT_FALSE(fs::exists(no_map / "front_end_map.png"));
+}
+
+TEST(WriteOptimizeReport, HistoryEquivalentRegionAndEveryEvaluation) {
+  const fs::path dir = FreshDir("history");
+  const optim::OptimizeResult result = testing::FakeOptimizeResult(true);
+  WriteOptimizeReport(result, dir.string());
+  // results.json: one history entry per generation, 0..5, and the equivalent region.
+  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  ASSERT_EQ(j["history"]["generations"].size(), 6u);
+  EXPECT_DOUBLE_EQ(j["history"]["reference"].get<double>(), 1.1);
+  const auto& g0 = j["history"]["generations"][0];
+  EXPECT_EQ(g0["generation"].get<int>(), 0);
+  EXPECT_EQ(g0["failed"].get<int>(), 1);
+  EXPECT_DOUBLE_EQ(g0["hypervolume"].get<double>(), result.history.generations[0].hypervolume);
+  EXPECT_DOUBLE_EQ(g0["best"]["corner_pixels"].get<double>(), result.history.generations[0].best[1]);
+  EXPECT_EQ(j["history"]["normalised_by"]["corner_pixels"].size(), 2u);
+  const auto& region = j["equivalent_region"];
+  EXPECT_EQ(region["members"].get<int>(), 4);
+  EXPECT_EQ(region["evaluated"].get<int>(), 12);
+  EXPECT_DOUBLE_EQ(region["tolerance"].get<double>(), 0.02);
+  EXPECT_EQ(region["ranges"]["loop_match_minimum_chain_size"], nlohmann::json({10, 14}));
+  EXPECT_EQ(region["statement"].get<std::string>(), result.equivalent_region->Describe());
+  // The history figure decodes: two panels per row, objectives then hypervolume.
+  const cv::Mat history = cv::imread((dir / "history.png").string());
+  ASSERT_FALSE(history.empty());
+  EXPECT_GT(history.cols, 2 * 520);
+  EXPECT_GT(history.rows, 2 * 420);
+
+  const std::string html = Slurp(dir / "report.html");
+  EXPECT_THAT(html, HasSubstr("How the search progressed"));
+  EXPECT_THAT(html, HasSubstr("<a href=\"slices_corner_pixels.png\"><img"));
+  EXPECT_THAT(html, HasSubstr("How sure: the parameter sets with an equivalent map"));
+  EXPECT_THAT(html, HasSubstr("loop_search_maximum_distance in [2.6, 3.5], loop_match_minimum_chain_size in "
+                              "[10, 14] give an equivalent map (4 of 12 evaluated parameter sets)."));
+  // Under the recommendation, before the maps.
+  EXPECT_LT(html.find("Why this recommendation"), html.find("How sure"));
+  EXPECT_LT(html.find("How sure"), html.find("id=\"maps\""));
+  // Every evaluation, in a sortable table collapsed in <details> (14 rows), failed runs named.
+  EXPECT_THAT(html, HasSubstr("Every evaluation"));
+  EXPECT_THAT(html, Not(HasSubstr("<details><summary>All 14 evaluations")));
+  const std::size_t table = html.find("<table class=\"sortable\">");
+  ASSERT_NE(table, std::string::npos);
+  const std::string rows = html.substr(table, html.find("</table>", table) - table);
+  EXPECT_EQ(Count(rows, "<tr>"), 1 + 14);
+  EXPECT_THAT(rows, HasSubstr("<th title=\"click to sort\">loop_<wbr>search_<wbr>maximum_<wbr>distance</th>"));
+  EXPECT_THAT(rows, HasSubstr("failed: scan matcher threw: bad, &quot;quoted&quot; reason"));
+  // A long list is collapsed.
+  optim::OptimizeResult many = result;
+  for (int i = 0; i < 10; ++i) many.evaluations.push_back(result.evaluations[i]);
+  const fs::path long_dir = FreshDir("history_long");
+  WriteOptimizeReport(many, long_dir.string());
+  EXPECT_THAT(Slurp(long_dir / "report.html"), HasSubstr("<details><summary>All 24 evaluations"));
+  // Without generations or a region, neither section.
+  optim::OptimizeResult bare = result;
+  bare.history = {};
+  bare.equivalent_region.reset();
+  const fs::path bare_dir = FreshDir("history_bare");
+  const auto summary = WriteOptimizeReport(bare, bare_dir.string());
+  EXPECT_THAT(summary.files, Not(::testing::Contains(std::string("history.png"))));
+  const std::string bare_html = Slurp(bare_dir / "report.html");
+  EXPECT_THAT(bare_html, Not(HasSubstr("How the search progressed")));
+  EXPECT_THAT(bare_html, Not(HasSubstr("How sure")));
+  EXPECT_TRUE(nlohmann::json::parse(Slurp(bare_dir / "results.json"))["equivalent_region"].is_null());
 }
 
 TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
@@ -173,9 +256,11 @@ TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   const std::string html = Slurp(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("The recommendation &lt;r=3, g=12&gt; beats the defaults &amp; closes more loops."));
   EXPECT_THAT(html, Not(HasSubstr("<r=3")));
-  // four maps, three generations, evolution, parameter space, objective vs error.
-  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 10);
-  EXPECT_THAT(html, Not(HasSubstr("<script")));
+  // four maps, three generations, evolution, history, parameter space, three slices, objective vs error.
+  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 14);
+  // One inline script: the one that sorts the table of evaluations; nothing loaded from elsewhere.
+  EXPECT_EQ(Count(html, "<script"), 1);
+  EXPECT_THAT(html, Not(HasSubstr("<script src")));
   EXPECT_THAT(html, Not(HasSubstr("http://")));
   EXPECT_THAT(html, Not(HasSubstr("https://")));
   EXPECT_THAT(html, HasSubstr("intel.clf.gz"));
@@ -238,7 +323,7 @@ TEST(WriteOptimizeReport, IsDeterministic) {
     EXPECT_EQ(Slurp(entry.path()), Slurp(b / entry.path().filename())) << entry.path().filename();
     ++compared;
   }
-  EXPECT_EQ(compared, 25);
+  EXPECT_EQ(compared, 29);
 }
 
 TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {
@@ -261,7 +346,7 @@ TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {
 }
 
 TEST(WriteOptimizeReport, UnwritableFolderIsAnInputError) {
-  const fs::path file = FreshDir("file_in_the_way");
+  const fs::path file = FreshDir("file_in_the_way") / "a_file";
   std::ofstream(file.string()) << "x";
   try {
     WriteOptimizeReport(testing::FakeOptimizeResult(false), file.string());

@@ -25,6 +25,36 @@ nlohmann::json SearchSpaceJson(const optim::SearchSpace& space) {
   return {{"dimensions", dims}, {"fixed", space.fixed}};
 }
 
+namespace {
+
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// Per generation: the best value of each objective and the normalised front's hypervolume,
+// with the ranges it was normalised by.
+nlohmann::json HistoryJson(const optim::OptimizeResult& result) {
+  const auto& objectives = result.objectives.objectives();
+  const optim::OptimizationHistory& h = result.history;
+  nlohmann::json ranges = nlohmann::json::object();
+  for (std::size_t k = 0; k < objectives.size() && k < h.lower.size(); ++k) {
+    ranges[optim::InfoOf(objectives[k]).key] = {Number(h.lower[k]), Number(h.upper[k])};
+  }
+  nlohmann::json generations = nlohmann::json::array();
+  for (const optim::GenerationSummary& g : h.generations) {
+    nlohmann::json best = nlohmann::json::object();
+    for (std::size_t k = 0; k < objectives.size() && k < g.best.size(); ++k) {
+      best[optim::InfoOf(objectives[k]).key] = Number(g.best[k]);
+    }
+    generations.push_back({{"generation", g.generation},
+                           {"best", best},
+                           {"hypervolume", g.hypervolume},
+                           {"front_size", g.front_size},
+                           {"failed", g.failed}});
+  }
+  return {{"reference", optim::kHypervolumeReference}, {"normalised_by", ranges}, {"generations", generations}};
+}
+
+}  // namespace
+
 nlohmann::json ResultsJson(const optim::OptimizeResult& result,
                            const std::optional<ErrorCorrelationSummary>& correlation) {
   nlohmann::json j;
@@ -56,6 +86,17 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
     nlohmann::json front_end = FrontEndEvidenceJson(result.base_front_end->evidence);
     front_end["choice"] = result.base_front_end->choice;
     j["base_front_end"] = front_end;
+  }
+  j["history"] = HistoryJson(result);
+  if (result.equivalent_region) {
+    const optim::EquivalentRegion& e = *result.equivalent_region;
+    nlohmann::json ranges = nlohmann::json::object();
+    for (const optim::ParameterRange& r : e.ranges) ranges[r.name] = {r.lower, r.upper};
+    j["equivalent_region"] = {{"tolerance", e.tolerance},   {"loop_closures", e.loop_closures},
+                              {"members", e.members},       {"evaluated", e.evaluated},
+                              {"ranges", ranges},           {"statement", e.Describe()}};
+  } else {
+    j["equivalent_region"] = nullptr;
   }
   if (correlation) {
     nlohmann::json c = {{"parameter_sets", correlation->parameter_sets}};

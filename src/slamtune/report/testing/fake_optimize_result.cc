@@ -1,5 +1,7 @@
 #include "slamtune/report/testing/fake_optimize_result.h"
 
+#include <algorithm>
+
 namespace slamtune::report::testing {
 
 io::MapImage FakeMap(int width, int height) {
@@ -96,6 +98,26 @@ optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
     }
     res.snapshots.push_back(s);
   }
+  // The history of generations 0..5: the population improves as in the snapshots.
+  std::vector<std::vector<std::vector<double>>> populations;
+  for (int gen = 0; gen <= 5; ++gen) {
+    std::vector<std::vector<double>> f;
+    for (int i = 0; i < 8; ++i) {
+      const double q = std::min(1.0, (i + 1) / (2.0 * std::max(gen, 1)));
+      f.push_back(res.objectives.Score(FakeRecord(2.0 + 0.5 * i, 6 + i, q, false)));
+    }
+    if (gen == 0) f.push_back({1.0, 1e9, 1e9});  // a failed individual
+    populations.push_back(std::move(f));
+  }
+  res.history = optim::SummarizeGenerations(populations, res.objectives);
+  // Sets around the recommendation that gave the same map.
+  optim::EquivalentRegion region;
+  region.loop_closures = res.candidates[0].record.loop_closures;
+  region.members = 4;
+  region.evaluated = 12;
+  region.ranges = {{"loop_search_maximum_distance", 2.6, 3.5, false},
+                   {"loop_match_minimum_chain_size", 10, 14, true}};
+  res.equivalent_region = region;
   res.evaluation_count = 13;
   res.cache_hits = 27;
   res.wall_s = 321.5;
