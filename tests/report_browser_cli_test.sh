@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # report.html of `slamtune optimize` in a real browser: headless Chromium at a 1400 px wide
 # window. Fails when the page scrolls sideways or any element reaches past the window, when an
-# image does not decode, or when the browser logs a console message. Saves screenshots (the top
-# of the page and the maps) to $SLAMTUNE_SCREENSHOTS (default ${TMPDIR:-/tmp}/slamtune_report_screenshots).
+# image does not decode, or when the browser logs a console message, also with every collapsed
+# section open. Saves screenshots (the top of the page, the maps, the population, the front end,
+# the history and the table of evaluations) to $SLAMTUNE_SCREENSHOTS (default ${TMPDIR:-/tmp}/slamtune_report_screenshots).
 #
 # The product is not touched: a checker page beside report.html loads it in a 1400 px iframe and
 # writes what it measured into its own DOM, which --dump-dom prints. A deliberately broken copy
@@ -109,16 +110,31 @@ grep -q '^FAIL width' <<<"$bad" || fail "the checker missed a 3000 px wide eleme
 grep -q '^FAIL broken image alt="missing"' <<<"$bad" || fail "the checker missed a broken image: $bad"
 grep -q '^FAIL console: "planted error"' <<<"$bad" || fail "the console error was not seen: $bad"
 
-# 3. Screenshots: the top of the page and the maps.
+# 3. With every collapsed section open (the table of evaluations, the slices, the engine
+#    settings) the page still fits the window.
+sed 's/<details>/<details open>/g' "$run/report.html" > "$run/open.html"
+opened=$(check open.html open)
+echo "$opened"
+grep -q '^OK width' <<<"$opened" || fail "no width measurement with the details open"
+if grep -q '^FAIL' <<<"$opened"; then fail "report.html with its details open: $(grep '^FAIL' <<<"$opened" | head -5)"; fi
+
+# 4. Screenshots: the top of the page, the maps, the population, and (details open) the front
+#    end with its map, the search's history and the table of evaluations.
 for shot in top maps population; do
   browse "$work/shot_$shot.txt" "$work/shot_$shot.err" "file://$run/check.html?shot=$shot" --virtual-time-budget=15000 \
     --run-all-compositor-stages-before-draw --screenshot="$shots/report_$shot.png"
 done
-for f in report_top.png report_maps.png report_population.png; do
+for shot in front-end history evaluations; do
+  browse "$work/shot_$shot.txt" "$work/shot_$shot.err" "file://$run/check.html?page=open.html&shot=$shot" \
+    --virtual-time-budget=15000 --run-all-compositor-stages-before-draw --screenshot="$shots/report_$shot.png"
+done
+for f in report_top.png report_maps.png report_population.png report_front-end.png report_history.png \
+  report_evaluations.png; do
   [[ -s "$shots/$f" ]] && [[ "$(head -c 8 "$shots/$f" | od -An -tx1 | tr -d ' \n')" == "89504e470d0a1a0a" ]] ||
     fail "screenshot $f was not written"
 done
-echo "screenshots: $shots/report_top.png $shots/report_maps.png $shots/report_population.png"
+echo "screenshots: $shots/report_top.png $shots/report_maps.png $shots/report_population.png" \
+  "$shots/report_front-end.png $shots/report_history.png $shots/report_evaluations.png"
 
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)" >&2; exit 1; fi
 echo "PASS"
