@@ -1,4 +1,4 @@
-// Speed of the correlative scan matcher and the occupancy grid (karto-algorithm.md §4, §8).
+// Speed of the correlative scan matcher and the occupancy grid (docs/engine.md §4, §8).
 //
 //   bench_matcher [--benchmark_filter=...]
 //

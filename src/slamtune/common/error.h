@@ -1,4 +1,4 @@
-// Two tiers of errors (DEVELOPERS.md, style.md habit 8).
+// Two tiers of errors (CONTRIBUTING.md, "Errors").
 //
 // * InputError: bad user input (a malformed log line, an out-of-range parameter, an
 //   unreadable path). Carries where (file and line when known) and what; the CLI prints

@@ -1,4 +1,4 @@
-// Numeric conventions of Karto that change decisions (spec karto-algorithm.md §1.1–1.3).
+// Numeric conventions of Karto that change decisions (docs/engine.md §1.1–1.3).
 //
 // Karto rounds half away from zero, compares with a 1e-6 tolerance and maps angles into
 // [-pi, pi] by whole turns. Using std::round or fmod variants instead changes which cell

@@ -1,7 +1,7 @@
-// 2D rigid pose (x, y, theta) with Karto's composition rules (spec §1.4).
+// 2D rigid pose (x, y, theta) with Karto's composition rules (docs/engine.md §1.4).
 //
 // A Pose2 is a plain value. Compose(A, B) is A (+) B; Between(A, B) is B seen from A,
-// i.e. A (-) B in the spec's notation. Angles are kept in [-pi, pi] by NormalizeAngle.
+// i.e. A (-) B in the notation of docs/engine.md §1.4. Angles are kept in [-pi, pi] by NormalizeAngle.
 #pragma once
 
 #include <cmath>

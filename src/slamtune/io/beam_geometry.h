@@ -1,6 +1,6 @@
 // One beam geometry for a whole log.
 //
-// Karto describes a laser once (karto-algorithm.md §2.1): every scan must have the first
+// Karto describes a laser once (docs/engine.md §2.1): every scan must have the first
 // scan's reading count, or Process rejects it, and scans of the same count are read with the
 // first scan's angles whatever their own. Real recordings break that: a CARMEN log whose scans
 // alternate between 180 and 181 readings with four start angles, cheap lidars whose count

@@ -4,7 +4,7 @@
 //
 // Topics with the same name, type and serialization are one RecordedTopic, whichever file,
 // MCAP channel or ROS 1 connection they come from (several publishers on /tf are one topic).
-// With message-level compression (rosbag2 compression_mode "message", ros-recordings.md §1.1)
+// With message-level compression (rosbag2 compression_mode "message", docs/recordings.md §1.1)
 // each payload is a zstd frame, decompressed here before the callback sees it.
 #pragma once
 

@@ -1,6 +1,6 @@
 // In-memory model of a 2D laser log: what the CARMEN reader produces, what the simulator
 // writes, and what the SLAM engine consumes. Readings are kept exactly as recorded; how the
-// engine treats no-returns follows the Karto spec (karto-algorithm.md §2, §10 item 1).
+// engine treats no-returns follows Karto (docs/engine.md §2, §10 item 1).
 #pragma once
 
 #include <cstddef>

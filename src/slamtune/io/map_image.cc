@@ -1,4 +1,4 @@
-// Map images in and out (map_image.h; karto-algorithm.md §8.3 for the format).
+// Map images in and out (map_image.h; docs/engine.md §8.3 for the format).
 #include "slamtune/io/map_image.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-// Occupancy maps as images, in the ROS map_server form (karto-algorithm.md §8.3):
+// Occupancy maps as images, in the ROS map_server form (docs/engine.md §8.3):
 // 8-bit grey, occupied 0, free 254, unknown 205, image row 0 = the map's top row (largest y),
 // with a YAML (image, resolution, origin, negate, occupied_thresh, free_thresh).
 //

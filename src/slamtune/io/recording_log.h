@@ -1,5 +1,5 @@
 // A ROS recording turned into the laser log the engine consumes, as slam_toolbox and slam_karto
-// feed Karto (ros-recordings.md §1.5):
+// feed Karto (docs/recordings.md §1.5):
 //
 //   * scans: the sensor_msgs/LaserScan topic (--scan-topic, or the only one; several without a
 //     choice is an error listing them), in message order, each at its header stamp (not the
@@ -22,7 +22,7 @@
 //     and its beams described exactly: first beam at -angle_max.
 //   * each scan keeps its robot pose and the offset, and laser pose = robot pose (+) offset, the
 //     sensor pose Karto computes from the odometric pose and the range finder's offset pose
-//     (karto-algorithm.md §1.4); the engine is given the robot poses and the offset
+//     (docs/engine.md §1.4); the engine is given the robot poses and the offset
 //     (slam/log_runner.h OdometryFrameOf).
 //
 // Every choice is recorded in LaserLog::recording with the rule that made it.

@@ -17,7 +17,7 @@ namespace {
 using ::testing::HasSubstr;
 
 // Payload bytes written by hand, in the order given: no alignment is added, so each test spells
-// out the padding it expects (ros-recordings.md 1.4 for CDR, 1.6 for ROS 1).
+// out the padding it expects (docs/recordings.md §1.4 for CDR, 1.6 for ROS 1).
 class Bytes {
  public:
   explicit Bytes(bool big_endian = false) : big_endian_(big_endian) {}

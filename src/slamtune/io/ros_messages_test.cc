@@ -243,7 +243,7 @@ TEST(RosMessagesGoldenTest, OdometryWithSeveralFrameIdLengths) {
 }
 
 TEST(RosMessagesGoldenTest, OdometryWorkedExamplePutsPositionXAtByte40AfterTheHeader) {
-  // ros-recordings.md 1.4: "odom\0" at d12-d16, child length at d20, "base_link\0" at d24-d33,
+  // docs/recordings.md §1.4: "odom\0" at d12-d16, child length at d20, "base_link\0" at d24-d33,
   // padding to d40 (8-aligned relative to the end of the header), position.x there.
   const Payload p = Golden("odom_0_cdr.bin");
   ASSERT_EQ(p.size(), 4u + 40 + 7 * 8 + 36 * 8 + 6 * 8 + 36 * 8);

@@ -1,7 +1,7 @@
 // What kind of recording a path holds, judged by content (DetectRecordingKind,
 // recording_container.h), and the reading of one recording file of any kind: MCAP, rosbag2
 // SQLite3 or ROS 1 bag, or such a file compressed whole with zstd (rosbag2 compression_mode
-// "file", ros-recordings.md §1.1: `*.mcap.zstd`, `*.db3.zstd`), decompressed into memory and
+// "file", docs/recordings.md §1.1: `*.mcap.zstd`, `*.db3.zstd`), decompressed into memory and
 // then judged by its own magic. ReadRosRecording (recording_container.h) dispatches on the
 // kind; a rosbag2 bag folder is read by rosbag2_folder.h.
 #pragma once

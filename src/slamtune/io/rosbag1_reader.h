@@ -1,4 +1,4 @@
-// ROS 1 bag format 2.0 (wiki.ros.org/Bags/Format/2.0; ros-recordings.md §1.6), read linearly:
+// ROS 1 bag format 2.0 (wiki.ros.org/Bags/Format/2.0; docs/recordings.md §1.6), read linearly:
 // the line "#ROSBAG V2.0\n", then records, each header_len:u32, header (fields field_len:u32 +
 // "name=value", the value binary), data_len:u32, data. Every header has `op`:
 //   0x03 bag header (index_pos, conn_count, chunk_count; must come first; index_pos 0 = the bag

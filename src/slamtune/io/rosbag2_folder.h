@@ -1,4 +1,4 @@
-// A rosbag2 bag folder (ros-recordings.md §1.1): metadata.yaml, whose
+// A rosbag2 bag folder (docs/recordings.md §1.1): metadata.yaml, whose
 // rosbag2_bagfile_information lists the split files (relative_file_paths, in recording order),
 // their storage (storage_identifier: sqlite3 or mcap) and compression (compression_mode
 // file / message, compression_format zstd), and the split files themselves.

@@ -2,7 +2,7 @@
 // of QoS profiles of the topic's publishers, found in a db3 `topics` column, an MCAP Channel's
 // metadata and metadata.yaml (there as a YAML string holding the list, so parsed twice).
 // Durability is written as an rmw enum integer by Humble (1 = transient_local) and as a name by
-// Jazzy and later ("transient_local") (ros-recordings.md §1.7).
+// Jazzy and later ("transient_local") (docs/recordings.md §1.7).
 #pragma once
 
 #include <string_view>

@@ -1,4 +1,4 @@
-// rosbag2 SQLite3 storage (`.db3`; ros2/rosbag2 rosbag2_storage_sqlite3; ros-recordings.md §1.3),
+// rosbag2 SQLite3 storage (`.db3`; ros2/rosbag2 rosbag2_storage_sqlite3; docs/recordings.md §1.3),
 // every schema variant from Eloquent to Jazzy: only the columns all of them have are read,
 //   topics(id, name, type, serialization_format [, offered_qos_profiles]) and
 //   messages(id, topic_id, timestamp, data),

@@ -79,7 +79,7 @@ Dimension Around(const char* name, double base, double low, double high, double 
 }  // namespace
 
 SearchSpace SearchSpace::FrontEnd(const slam::MapperParams& base) {
-  // The sequential search window must be an even number of cells (karto-algorithm.md §4.1):
+  // The sequential search window must be an even number of cells (docs/engine.md §4.1):
   // its lattice is 2 x resolution through the base's (valid) window. 1.6 m at 1 cm is 161^2
   // cells per angle, ~28x the work of slam_karto's 0.3 m (31^2); docs/search-spaces.md.
   const double resolution = base.correlation_search_space_resolution;

@@ -5,7 +5,7 @@
 // (180 deg, 181 beams) give beams at -90, -89, ..., +90 deg, 1 deg apart. Each reading is the
 // exact distance to the nearest wall plus Gaussian noise, quantised to the range resolution.
 // A beam that hits nothing within max range, or whose noisy reading reaches it, reads exactly
-// max_range: the "no return" convention of CARMEN logs (karto-algorithm.md §2.2, §10 item 1).
+// max_range: the "no return" convention of CARMEN logs (docs/engine.md §2.2, §10 item 1).
 #pragma once
 
 #include <cstddef>

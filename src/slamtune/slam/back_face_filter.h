@@ -1,4 +1,4 @@
-// Karto's back-face filter (karto-algorithm.md §4.3, "valid points"): before a base scan is
+// Karto's back-face filter (docs/engine.md §4.3, "valid points"): before a base scan is
 // drawn into the correlation grid, drop the stretches of its outline that the scan being
 // matched would see from behind. What remains is what a sensor standing at the viewpoint
 // could plausibly observe, so surfaces seen only from their back side cannot attract the
@@ -8,7 +8,7 @@
 // (the last point at least 10 cm from the previous anchor) and a pending-start index t:
 // when a point C lies more than 10 cm from F, the sign of the cross product
 // (F - V) x (C - V) decides whether the stretch t .. C-1 is kept (>= 0) or dropped (< 0).
-// NaN and +-inf readings propagate through the exact arithmetic of the spec, so a NaN
+// NaN and +-inf readings propagate through Karto's exact arithmetic (docs/engine.md §4.3), so a NaN
 // distance never opens a new stretch and a NaN side test counts as "keep"; the points after
 // the last anchor are never output. Non-finite points may reach the output; the grid
 // insertion drops them (§4.3, last item).
@@ -47,7 +47,7 @@ void ForEachValidPoint(std::span<const Eigen::Vector2d> points, const Eigen::Vec
     const double dx = fx - cx, dy = fy - cy;
     // A NaN squared distance compares false: the point neither opens nor closes a stretch.
     if (!(dx * dx + dy * dy > min_squared_distance)) continue;
-    // s = z component of (F - V) x (C - V), in the spec's exact expression so that NaN and inf
+    // s = z component of (F - V) x (C - V), in Karto's exact expression so that NaN and inf
     // propagate identically (§4.3).
     const double a = vy - fy;
     const double b = fx - vx;

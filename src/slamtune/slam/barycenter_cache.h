@@ -1,4 +1,4 @@
-// A cache of scan barycentres (karto-algorithm.md §2.2) shared by many SLAM runs of one log.
+// A cache of scan barycentres (docs/engine.md §2.2) shared by many SLAM runs of one log.
 // The mapper reads a scan's reference pose, its barycentre, right after the sequential match
 // (§3.2 step 8) and again after AddEdges moves it (§5.3 step 4). A run whose matches and solves
 // come from the MatchCache and SolveCache still computes a point readout (one sin/cos per beam)

@@ -1,4 +1,4 @@
-// slam_toolbox's default back-end (solver_plugins::CeresSolver, karto-algorithm.md §7.4):
+// slam_toolbox's default back-end (solver_plugins::CeresSolver, docs/engine.md §7.4):
 // Ceres 2.1 on the SPA residual whitened by the upper Cholesky factor of the information
 // (r = U e, Lambda = U^T U); x, y and theta of each node are separate 1-D parameter blocks, theta
 // with a wrap-around manifold; trust-region Levenberg-Marquardt with SPARSE_NORMAL_CHOLESKY and

@@ -1,4 +1,4 @@
-// The correlation grid of Karto's scan matcher (karto-algorithm.md §4.1, §4.3): a byte grid
+// The correlation grid of Karto's scan matcher (docs/engine.md §4.1, §4.3): a byte grid
 // at the matcher's resolution rho, holding 100 at cells hit by a base-scan point and a
 // Gaussian "smear" around them, against which candidate poses of the scan are scored (§4.5).
 //

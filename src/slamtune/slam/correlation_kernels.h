@@ -1,4 +1,4 @@
-// Inner kernels of the correlative search (karto-algorithm.md §4.5), shared by the
+// Inner kernels of the correlative search (docs/engine.md §4.5), shared by the
 // exhaustive search (correlation_search.cc) and the branch and bound (pruned_search.cc).
 // Internal to the slam folder.
 //

@@ -1,4 +1,4 @@
-// The exhaustive correlation of §4.5 (karto-algorithm.md), reduced to integers: for every
+// The exhaustive correlation of §4.5 (docs/engine.md), reduced to integers: for every
 // candidate cell and heading, the sum of the grid bytes under the scan's end points. The
 // matcher turns sums into responses (sum / (100 * all beams)), applies penalties and picks
 // the best; keeping this inner loop on integers makes it exact in any evaluation order, so

@@ -1,7 +1,7 @@
-// The small rules of Karto's front end (karto-algorithm.md §3.2, §3.3, §5.3 step 4): the initial
+// The small rules of Karto's front end (docs/engine.md §3.2, §3.3, §5.3 step 4): the initial
 // guess from the odometry increment, the acceptance test HasMovedEnough, the running-buffer
 // trim and the weighted mean of several matches. Free functions on values so that each rule
-// has its own unit test; Mapper::Process strings them together in the spec's order.
+// has its own unit test; Mapper::Process strings them together in Karto's order (docs/engine.md §3.2).
 #pragma once
 
 #include <Eigen/Core>

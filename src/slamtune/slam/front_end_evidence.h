@@ -1,5 +1,5 @@
 // Where does a map break before any loop closes? — read from the run itself, without ground
-// truth. Karto's front end places each new node by one sequential match (karto-algorithm.md
+// truth. Karto's front end places each new node by one sequential match (docs/engine.md
 // §3.2 steps 6-7): a search over a square window of side correlation_search_space_dimension
 // around the odometry's guess and over +-coarse_search_angle_offset of heading. When the
 // odometry is off by more than the window (a wheel slip, a bump, a spin), the true pose lies

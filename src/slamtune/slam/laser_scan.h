@@ -1,4 +1,4 @@
-// A laser scan as the Karto engine sees it (karto-algorithm.md §2): fixed beam geometry,
+// A laser scan as the Karto engine sees it (docs/engine.md §2): fixed beam geometry,
 // recorded readings, an odometric and a corrected robot pose, and the point readout of that
 // pose (unfiltered points, filtered points, barycentre, bounding box).
 //

@@ -1,5 +1,5 @@
 // Runs a recorded laser log (io::LaserLog) through the Karto mapper the way a slam_karto user
-// replaying it would (karto-algorithm.md §2.3, §1.4 [DECIDE]): every scan in file order, the
+// replaying it would (docs/engine.md §2.3, §1.4 [DECIDE]): every scan in file order, the
 // odometric poses and mounting offset of OdometryFrameOf (for CARMEN FLASER logs: the laser pose
 // with a zero offset), readings unchanged,
 // maxRange = min(laser_max_range_cap, the scan's no-return value), rangeThreshold by the rule
@@ -56,7 +56,7 @@ struct RunSummary {
   int total_edges() const;
 };
 
-// How a log's scans are given to the mapper (karto-algorithm.md §1.4). When every scan has the
+// How a log's scans are given to the mapper (docs/engine.md §1.4). When every scan has the
 // same laser mounting offset (within kSameOffsetTolerance), as a robot's recording does, the
 // mapper gets the robot's odometric poses and the offset as the laser's offset pose, as a ROS
 // node gives Karto the base's odometry and the range finder's offset; sensor poses are then

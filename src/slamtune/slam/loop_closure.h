@@ -1,4 +1,4 @@
-// Loop-closure candidate search (karto-algorithm.md §6.2): FindPossibleLoopClosure walks the
+// Loop-closure candidate search (docs/engine.md §6.2): FindPossibleLoopClosure walks the
 // processed scans in state-id order from a persistent cursor and returns the next run of
 // consecutive scans that lie inside r of the current scan, are not graph-linked to it within
 // r, are at least g long and are followed by a scan outside r.

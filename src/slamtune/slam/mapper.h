@@ -1,5 +1,5 @@
-// The Karto mapper (karto-algorithm.md §3, §5, §6, §7): Process() takes one scan through the
-// front end in the spec's exact order (initial guess, HasMovedEnough, sequential match,
+// The Karto mapper (docs/engine.md §3, §5, §6, §7): Process() takes one scan through the
+// front end in Karto's exact order (initial guess, HasMovedEnough, sequential match,
 // vertex, AddEdges, running buffer, TryCloseLoop), links near chains, closes loops and runs
 // one full back-end solve per accepted loop.
 //

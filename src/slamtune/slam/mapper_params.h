@@ -1,4 +1,4 @@
-// Every parameter of the Karto mapper under its ROS name, in ROS units (karto-algorithm.md §9).
+// Every parameter of the Karto mapper under its ROS name, in ROS units (docs/engine.md §9).
 //
 // MapperParams is what a slam_karto / slam_toolbox user writes in a YAML file: the values keep
 // ROS units, so the three squared parameters (loop_match_maximum_variance_coarse,

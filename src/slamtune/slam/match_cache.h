@@ -1,4 +1,4 @@
-// A cache of scan-match results shared by many SLAM runs of one log (karto-algorithm.md §4.2,
+// A cache of scan-match results shared by many SLAM runs of one log (docs/engine.md §4.2,
 // §5.3, §6.1): runs that differ only in loop-closure parameters (r, g, p, q) build identical
 // state until their decisions differ, so they repeat the same MatchScan calls verbatim. The
 // first run to make a call computes it; the others reuse the result.
@@ -49,7 +49,7 @@
 
 namespace slamtune::slam {
 
-// Which of the mapper's matchers made the call (§3.2 step 6, §5.3 step 3, §6.1).
+// Which of the mapper's matchers made the call (§3.2 step 7, §5.3 step 3, §6.1).
 // kNearChain: a sequential-matcher call whose result the mapper keeps only above a response
 // threshold (MatchAbove); its entries may hold "proven below" instead of a match.
 enum class MatchRole : std::uint8_t { kSequential = 0, kLoop = 1, kNearChain = 2 };

@@ -1,4 +1,4 @@
-// Covariances of a correlative match (karto-algorithm.md §4.6) and the search-space
+// Covariances of a correlative match (docs/engine.md §4.6) and the search-space
 // probability grid they read (§4.1, §4.5).
 //
 // Positional covariance (coarse pass): the response-weighted spread, around the best mean,

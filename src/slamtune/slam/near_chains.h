@@ -1,4 +1,4 @@
-// Chains of scans near a scan (karto-algorithm.md §5.2, §5.4): the closest member of a chain,
+// Chains of scans near a scan (docs/engine.md §5.2, §5.4): the closest member of a chain,
 // and FindNearChains, the older passes through the neighbourhood of a new scan that the
 // mapper matches against to add near-chain edges (§5.3 step 3).
 //

@@ -1,4 +1,4 @@
-// Karto's occupancy grid (karto-algorithm.md §8.1-§8.3): the map a slam_karto / slam_toolbox
+// Karto's occupancy grid (docs/engine.md §8.1-§8.3): the map a slam_karto / slam_toolbox
 // user would save, computed once from the final scan poses. Every beam is traced from the
 // sensor cell to its end cell with Karto's integer line variant, counting passes; end points
 // closer than the range threshold also count a hit (a hit cell gets pass +2, hit +1). A cell

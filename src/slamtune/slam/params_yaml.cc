@@ -47,7 +47,7 @@ ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_t
   const ParamsSection section = FindParamsSection(root, source);
   const YAML::Node& map = section.map;
   // In a ROS 2 (slam_toolbox) file minimum_time_interval is the node's scan filter; its Karto
-  // keeps 3600 (karto-algorithm.md §3.4).
+  // keeps 3600 (docs/engine.md §3.4).
   const bool ros2 = section.ros2;
 
   MapperParams copy = params;

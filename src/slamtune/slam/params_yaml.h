@@ -1,4 +1,4 @@
-// Mapper parameters from ROS YAML files (karto-algorithm.md §9); the files slamtune writes for
+// Mapper parameters from ROS YAML files (docs/engine.md §9); the files slamtune writes for
 // the nodes are slam/ros_node_files.h's.
 //
 // Reads slam_toolbox's ROS 2 files (its section found as slam/ros_params_section.h says: node

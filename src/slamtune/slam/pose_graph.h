@@ -1,4 +1,4 @@
-// Karto's pose graph (karto-algorithm.md §5.1, §5.2, §7.1): one vertex per processed scan
+// Karto's pose graph (docs/engine.md §5.1, §5.2, §7.1): one vertex per processed scan
 // (vertex id = state id), directed edges old -> new with a constraint label, traversed as
 // undirected, and the back-end's node values.
 //

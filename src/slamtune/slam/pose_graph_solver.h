@@ -1,4 +1,4 @@
-// Back-end interface (karto-algorithm.md §7): optimise the node values of a PoseGraph with the
+// Back-end interface (docs/engine.md §7): optimise the node values of a PoseGraph with the
 // first node fixed, minimising sum over edges of e^T Lambda e with the SPA residual of §7.2.
 //
 // Two implementations reproduce the two ROS packages: SpaSolver (slam_karto's

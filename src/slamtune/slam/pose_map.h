@@ -1,6 +1,6 @@
 // Occupancy map of a log drawn from given poses rather than from a SLAM run: the true
 // trajectory of a simulated world, raw odometry, or another system's trajectory. Uses the
-// engine's own laser geometry (log_runner.h) and occupancy grid (occupancy_grid.h, spec §8),
+// engine's own laser geometry (log_runner.h) and occupancy grid (occupancy_grid.h, docs/engine.md §8),
 // so maps from poses and maps from SLAM runs are directly comparable under the metrics.
 #pragma once
 

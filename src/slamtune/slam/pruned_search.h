@@ -1,5 +1,5 @@
 // Branch and bound over the coarse lattice of an unpenalised correlative search
-// (karto-algorithm.md §4.5, §4.6), giving exactly the numbers of the exhaustive search.
+// (docs/engine.md §4.5, §4.6), giving exactly the numbers of the exhaustive search.
 //
 // Why it is exact: without penalties a candidate's response is an increasing function of its
 // integer byte sum. Karto uses a candidate's response only (a) for the best response, (b) for

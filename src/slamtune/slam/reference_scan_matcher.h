@@ -1,4 +1,4 @@
-// A plain transcription of Karto's MatchScan / CorrelateScan (karto-algorithm.md §4.2-§4.6):
+// A plain transcription of Karto's MatchScan / CorrelateScan (docs/engine.md §4.2-§4.6):
 // responses accumulated per pose in double, every lookup entry bounds-checked, one pose at a
 // time in the loop order y, x, heading, the whole grid cleared on every call, no threads.
 //
@@ -6,7 +6,7 @@
 // means, covariances and responses, and bench/bench_matcher.cc reports the speed-up over it.
 // It shares the grid construction (CorrelationGrid), the lookup-table arithmetic
 // (ScanLookupTable::Compute) and the covariance formulas (match_covariance.h) with the fast
-// matcher; those have their own tests against the spec.
+// matcher; those have their own tests against docs/engine.md.
 #pragma once
 
 #include <span>

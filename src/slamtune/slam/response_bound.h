@@ -1,5 +1,5 @@
 // A cheap, exact proof that a scan match cannot reach a response threshold, so that the
-// mapper can skip near-chain matches whose result it would discard (karto-algorithm.md §5.3
+// mapper can skip near-chain matches whose result it would discard (docs/engine.md §5.3
 // step 3: a near-chain match only adds an edge when its response exceeds
 // link_match_minimum_response_fine - 1e-6; otherwise nothing of it is kept).
 //

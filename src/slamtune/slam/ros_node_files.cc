@@ -68,7 +68,7 @@ const std::vector<NodeParam>& ToolboxParams() {
 
 const std::vector<NodeParam>& KartoParams() {
   // slam_karto.cpp's SlamKarto::SlamKarto reads these from its private namespace; with scan
-  // times never set, minimum_time_interval only matters when ≤ 0 (karto-algorithm.md §3.4).
+  // times never set, minimum_time_interval only matters when ≤ 0 (docs/engine.md §3.4).
   static const std::vector<NodeParam> params = {
       {"odom_frame", kString, ""}, {"map_frame", kString, ""}, {"base_frame", kString, ""},
       {"throttle_scans", kInt, "throttle_scans"}, {"map_update_interval", kDouble, ""},

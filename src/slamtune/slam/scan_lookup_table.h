@@ -1,4 +1,4 @@
-// Per-angle lookup tables of the scan matcher (karto-algorithm.md §4.4): for each candidate
+// Per-angle lookup tables of the scan matcher (docs/engine.md §4.4): for each candidate
 // heading, the linear grid offset (dx + dy*stride) of every beam's end point relative to the
 // candidate cell, so that scoring a candidate is a sum of byte reads (§4.5).
 //

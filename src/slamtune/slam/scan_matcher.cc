@@ -1,4 +1,4 @@
-// Karto's correlative scan matcher, karto-algorithm.md §4.2-§4.6. The exhaustive search is
+// Karto's correlative scan matcher, docs/engine.md §4.2-§4.6. The exhaustive search is
 // done on integer byte sums (correlation_search.h) and turned into Karto's responses with
 // the same division, penalties and reductions, so results are bit-identical to the
 // straightforward double loop (see scan_matcher_test.cc, "MatchesReferenceLoop").

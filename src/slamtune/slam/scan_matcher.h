@@ -1,4 +1,4 @@
-// Karto's correlative scan matcher (karto-algorithm.md §4): a byte correlation grid with
+// Karto's correlative scan matcher (docs/engine.md §4): a byte correlation grid with
 // Gaussian smearing built from base scans seen from the scan's position (back-face filter),
 // an exhaustive coarse search over (y, x, theta), an optional fine pass, and the response and
 // covariance rules that gate loop closure.

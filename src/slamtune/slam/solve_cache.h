@@ -1,4 +1,4 @@
-// A cache of back-end solves shared by many SLAM runs of one log (karto-algorithm.md §7.1):
+// A cache of back-end solves shared by many SLAM runs of one log (docs/engine.md §7.1):
 // runs that differ only in loop-closure parameters and made the same decisions so far hold the
 // same pose graph, so when one of them closes a loop its CorrectPoses solve repeats another
 // run's verbatim. The first run computes it; the others copy its optimised node values. On a

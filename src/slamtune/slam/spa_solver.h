@@ -1,6 +1,6 @@
 // slam_karto's back-end: sparse Levenberg-Marquardt of Konolige et al. 2010 ("Efficient sparse
 // pose adjustment for 2D mapping", IROS), with the schedule of SysSPA2d::doSPA(40)
-// (karto-algorithm.md §7.3): lambda = 1e-4 and an increase factor of 2 at every call; H = sum
+// (docs/engine.md §7.3): lambda = 1e-4 and an increase factor of 2 at every call; H = sum
 // J^T Lambda J over free nodes with its diagonal scaled by (1 + lambda); solve by CSparse's
 // sparse Cholesky; stop when |delta|^2 < (1e-8)^2 (delta not applied); on a cost decrease
 // accept and halve lambda, else restore, multiply lambda by the factor and double the factor;

@@ -1,4 +1,4 @@
-// The arithmetic of slam_karto's back-end, sba's SysSPA2d (karto-algorithm.md §7.2, §7.3):
+// The arithmetic of slam_karto's back-end, sba's SysSPA2d (docs/engine.md §7.2, §7.3):
 // residuals, Jacobians and the normal equations of one Levenberg-Marquardt iteration, in the
 // order of floating-point operations sba uses, so that a solve gives the same bits.
 //

@@ -1,4 +1,4 @@
-// Sparse Cholesky solve of slam_karto's back-end (karto-algorithm.md §7.3 step 3): CSparse's
+// Sparse Cholesky solve of slam_karto's back-end (docs/engine.md §7.3 step 3): CSparse's
 // cs_cholsol, as sba calls it: the upper triangle in compressed columns, natural ordering for
 // systems of at most 100 rows and AMD ordering above, and on failure (not positive definite)
 // the right-hand side left as it was.

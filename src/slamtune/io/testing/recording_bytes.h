@@ -1,6 +1,6 @@
 // Test helpers: ROS recordings built byte by byte, so that the container readers are tested on
 // exactly the layouts the specifications describe (MCAP: mcap.dev/spec; ROS 1:
-// wiki.ros.org/Bags/Format/2.0; rosbag2 SQLite3: ros-recordings.md §1.3), compressed with the
+// wiki.ros.org/Bags/Format/2.0; rosbag2 SQLite3: docs/recordings.md §1.3), compressed with the
 // libraries' own compressors, plus small file and database utilities.
 #pragma once
 

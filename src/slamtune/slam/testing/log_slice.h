@@ -1,6 +1,6 @@
 // Test helper: the first scans of a CARMEN log (e.g. /work/shared/datasets/intel.clf.gz) as
 // engine LaserScans at their odometric laser poses, with slam_karto's range threshold
-// clip(12, min_range, max_range) and a zero laser offset (karto-algorithm.md §1.4, §2.3).
+// clip(12, min_range, max_range) and a zero laser offset (docs/engine.md §1.4, §2.3).
 #pragma once
 
 #include <string>
