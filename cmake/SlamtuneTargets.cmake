@@ -41,12 +41,17 @@ function(slamtune_folder name)
   set(SLAMTUNE_DEPS_${name} ${F_DEPENDS} PARENT_SCOPE)
 endfunction()
 
-# <folder>_tests: every *_test.cc of the folder, plus testing/ helpers, linked against the
+# <folder>_tests: every *_test.cc of the folder, plus its and common's testing/ helpers, linked against the
 # folder and the folders below it. Each test is registered with CTest.
 function(slamtune_folder_tests name)
   set(dir ${CMAKE_SOURCE_DIR}/src/slamtune/${name})
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${dir}/*_test.cc)
   file(GLOB_RECURSE helpers CONFIGURE_DEPENDS ${dir}/testing/*.cc)
+  # common's helpers (temporary folders, ...) serve every folder's tests.
+  if(NOT name STREQUAL "common")
+    file(GLOB_RECURSE common_helpers CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/slamtune/common/testing/*.cc)
+    list(APPEND helpers ${common_helpers})
+  endif()
   list(FILTER helpers EXCLUDE REGEX "_test\\.cc$")
   if(NOT tests)
     return()

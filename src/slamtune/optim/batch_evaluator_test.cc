@@ -1,5 +1,6 @@
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/objective_set.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -51,8 +52,7 @@ TEST(BatchEvaluator, FailuresAreRecordedAndScoredWorst) {
 }
 
 TEST(BatchEvaluator, DatabaseServesEarlierResultsAcrossProcesses) {
-  const auto path = (std::filesystem::temp_directory_path() / "slamtune_batch_eval.sqlite").string();
-  std::filesystem::remove(path);
+  const auto path = (slamtune::testing::UniqueTempDir("batch_eval") / "run.sqlite").string();
   {
     EvaluationStore store(path);
     BatchEvaluator eval(Fake, &store, 2);

@@ -8,16 +8,13 @@
 #include <thread>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::optim {
 namespace {
 
 std::string FreshPath(const std::string& name) {
-  const auto path = std::filesystem::temp_directory_path() / ("slamtune_store_" + name + ".sqlite");
-  std::filesystem::remove(path);
-  std::filesystem::remove(path.string() + "-wal");
-  std::filesystem::remove(path.string() + "-shm");
-  return path.string();
+  return (slamtune::testing::UniqueTempDir("store_" + name) / "run.sqlite").string();
 }
 
 EvaluationRecord Sample(int i) {

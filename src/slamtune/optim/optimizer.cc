@@ -160,21 +160,25 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   result.settings = settings_json;
 
   const unsigned total_gens = settings.generations;
-  const std::size_t total_requests = settings.population * (total_gens + 1);
   std::vector<unsigned> snapshot_gens{1, std::max(1u, total_gens / 2), total_gens};
   snapshot_gens.erase(std::unique(snapshot_gens.begin(), snapshot_gens.end()), snapshot_gens.end());
 
   unsigned done_gens = 0;
   std::vector<std::vector<double>> current_f;  // objectives of the latest population
+  // Progress counts what the summary counts: SLAM runs stored (earlier sessions' included) and
+  // requests served without a run. The time left extrapolates this process's finished generations.
+  const std::size_t runs_before = store.Count();
+  unsigned first_gen_here = 0;  // the generation this process started from (0 unless resumed)
   auto report = [&](unsigned gen, bool force) {
     if (!hooks.progress) return;
     const auto st = evaluator.stats();
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     const double rate = elapsed > 0 ? st.evaluated / elapsed * 60.0 : 0.0;
-    const std::size_t done = std::min(total_requests, st.requested);
-    const double left = done > 0 ? elapsed / static_cast<double>(done) * (total_requests - done) : -1;
-    hooks.progress(fmt::format("gen {}/{} | evaluations {}/{} | cache hits {} | {:.1f} runs/min | {} | left {}", gen,
-                               total_gens, done, total_requests, st.cache_hits, rate,
+    // A fresh run also spent its time on generation 0.
+    const unsigned gens_here = done_gens - first_gen_here + (first_gen_here == 0 ? 1 : 0);
+    const double left = gens_here > 0 ? elapsed / gens_here * (total_gens - done_gens) : -1;
+    hooks.progress(fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}", gen,
+                               total_gens, runs_before + st.evaluated, st.cache_hits, rate,
                                BestObjectives(settings.objectives, current_f), FormatDuration(left)),
                    force);
   };
@@ -190,6 +194,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     for (std::size_t i = 0; i < xs.size(); ++i) pop.push_back(xs[i], fs[i]);
     rng_state = saved.at("rng").get<std::string>();
     done_gens = static_cast<unsigned>(last_saved);
+    first_gen_here = done_gens;
     if (hooks.progress) hooks.progress(fmt::format("resuming after generation {}/{}", done_gens, total_gens), true);
   } else {
     if (hooks.progress) hooks.progress(fmt::format("generation 0: {} random parameter sets", settings.population), true);
@@ -278,14 +283,20 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
        fmt::format("the parameter set shared by most individuals of the final population ({} of {})", rec.share,
                    final_records.size()),
        final_records[rec.index],
+       {},
+       {},
        {}},
       {"knee", "the final front's member closest to the ideal point (objectives normalised by the front's range)",
        final_records[knee],
+       {},
+       {},
        {}},
       {"worst", "the evaluated set with the largest sum of normalised objectives (for contrast)",
        result.evaluations[worst],
+       {},
+       {},
        {}},
-      {"default", settings.base_label + ": the base configuration's values", defaults, {}},
+      {"default", settings.base_label + ": the base configuration's values", defaults, {}, {}, {}},
   };
   result.equivalent_region =
       FindEquivalentRegion(result.evaluations, final_records[rec.index], settings.space, settings.objectives);

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::optim {
 namespace {
@@ -29,10 +30,7 @@ EvaluationRecord FakeSlam(const Assignment& a) {
 }
 
 std::string FreshStore(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("slamtune_opt_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return (dir / "run.sqlite").string();
+  return (slamtune::testing::UniqueTempDir("opt_" + name) / "run.sqlite").string();
 }
 
 OptimizeSettings SmallSettings() {

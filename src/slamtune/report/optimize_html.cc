@@ -328,10 +328,10 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
     const std::string symbol = ShortParamName(d.name);
     out.warnings.push_back(fmt::format(
         "{} = {} sits on the {} bound of its search range [{}, {}]{}: the best value may lie beyond it. Widen the "
-        "range on that side (--space FILE, whose vary: gives each searched parameter its min and max) and run again "
+        "range on that side (--vary {}=MIN:MAX, or the min and max under vary: in a --space file) and run again "
         "before trusting this value.",
         symbol, FormatParam(v), low ? "lower" : "upper", FormatParam(d.lower), FormatParam(d.upper),
-        symbol == d.name ? "" : " (" + d.name + ")"));
+        symbol == d.name ? "" : " (" + d.name + ")", d.name));
   }
 
   if (r.verdict_kind == optim::VerdictKind::kBetter) {
@@ -348,8 +348,9 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
     out.next.push_back("Run again with more generations (--generations) or a larger population (--population) so "
                        "the population converges on one set.");
   }
-  out.next.push_back("Check the maps: each vermillion line is a loop closure and must join two places that are the "
-                     "same in the world; a line across a wall or between different corridors is a false loop closure.");
+  out.next.push_back("Check the maps: each vermillion line is a loop closure between two scan poses, and the scans at "
+                     "its two ends must see the same walls; a closure between places that only look alike (a twin "
+                     "corridor, the far side of a wall) is a false loop closure.");
   if (!HasGroundTruth(r)) {
     out.next.push_back("With ground truth for this log (--relations FILE), the report also ranks the candidates by "
                        "their true trajectory error.");

@@ -13,7 +13,7 @@
 #include "slamtune/io/map_image.h"
 #include "slamtune/report/front_end_map.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
-#include "slamtune/report/testing/temp_dir.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -30,7 +30,7 @@ std::string Slurp(const fs::path& path) {
 }
 
 // A new, empty folder of its own for each call: concurrent test runs never share one.
-fs::path FreshDir(const std::string& name) { return testing::UniqueTempDir("report_" + name); }
+fs::path FreshDir(const std::string& name) { return slamtune::testing::UniqueTempDir("report_" + name); }
 
 int Count(const std::string& text, const std::string& what) {
   int n = 0;

@@ -6,7 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "slamtune/common/error.h"
-#include "slamtune/report/testing/temp_dir.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -39,7 +39,7 @@ TEST(EncodePng, RoundTripsPixelsAndIsDeterministic) {
 }
 
 TEST(WriteBytes, WritesAndNamesUnwritablePaths) {
-  const auto path = (testing::UniqueTempDir("report_bytes") / "bytes.bin").string();
+  const auto path = (slamtune::testing::UniqueTempDir("report_bytes") / "bytes.bin").string();
   WriteBytes({1, 2, 3}, path);
   EXPECT_EQ(std::filesystem::file_size(path), 3u);
   try {

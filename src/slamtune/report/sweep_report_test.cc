@@ -11,7 +11,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
-#include "slamtune/report/testing/temp_dir.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -36,7 +36,7 @@ std::vector<SweepPoint> Points(bool gt) {
 }
 
 TEST(WriteSweepReport, WritesCsvFigureAndPage) {
-  const fs::path dir = testing::UniqueTempDir("sweep_gt");
+  const fs::path dir = slamtune::testing::UniqueTempDir("sweep_gt");
   SweepReportOptions o;
   o.log_path = "intel.clf.gz";
   const auto summary = WriteSweepReport("loop_match_minimum_chain_size", Points(true), dir.string(), o);
@@ -67,7 +67,7 @@ TEST(WriteSweepReport, WritesCsvFigureAndPage) {
 }
 
 TEST(WriteSweepReport, WithoutGroundTruthHasNoErrorColumns) {
-  const fs::path dir = testing::UniqueTempDir("sweep_nogt");
+  const fs::path dir = slamtune::testing::UniqueTempDir("sweep_nogt");
   const auto summary = WriteSweepReport("loop_match_minimum_chain_size", Points(false), dir.string());
   EXPECT_FALSE(summary.with_ground_truth);
   EXPECT_THAT(Slurp(dir / "sweep.csv"), ::testing::Not(HasSubstr("trans_mean_m")));
@@ -76,7 +76,7 @@ TEST(WriteSweepReport, WithoutGroundTruthHasNoErrorColumns) {
 }
 
 TEST(WriteSweepReport, SinglePointAndBadInput) {
-  const fs::path dir = testing::UniqueTempDir("sweep_one");
+  const fs::path dir = slamtune::testing::UniqueTempDir("sweep_one");
   EXPECT_NO_THROW(WriteSweepReport("r", {{2.0, testing::FakeRecord(2.0, 10, 0.5, false)}}, dir.string()));
   EXPECT_THROW(WriteSweepReport("", Points(false), dir.string()), InputError);
   EXPECT_THROW(WriteSweepReport("g", {}, dir.string()), InputError);

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "slamtune/common/error.h"
-#include "slamtune/report/testing/temp_dir.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -38,7 +38,7 @@ TEST(CsvTable, WritesHeaderAndRows) {
   t.AddRow({"knee", FormatNumber(0.25)});
   t.AddRow({"a, b", "x\"y"});
   EXPECT_EQ(t.ToString(), "label,value\nknee,0.25\n\"a, b\",\"x\"\"y\"\n");
-  const auto path = (testing::UniqueTempDir("report_table") / "table.csv").string();
+  const auto path = (slamtune::testing::UniqueTempDir("report_table") / "table.csv").string();
   WriteCsv(t, path);
   std::ifstream in(path);
   std::stringstream text;

@@ -1,11 +1,11 @@
-#include "slamtune/report/testing/temp_dir.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 #include <stdlib.h>
 
 #include <stdexcept>
 #include <vector>
 
-namespace slamtune::report::testing {
+namespace slamtune::testing {
 
 std::filesystem::path UniqueTempDir(const std::string& stem) {
   const std::string pattern = (std::filesystem::temp_directory_path() / ("slamtune_" + stem + "_XXXXXX")).string();
@@ -15,4 +15,4 @@ std::filesystem::path UniqueTempDir(const std::string& stem) {
   return std::filesystem::path(buffer.data());
 }
 
-}  // namespace slamtune::report::testing
+}  // namespace slamtune::testing

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-namespace slamtune::report::testing {
+namespace slamtune::testing {
 
 // Creates and returns "<tmp>/slamtune_<stem>_XXXXXX"; throws std::runtime_error when it cannot.
 std::filesystem::path UniqueTempDir(const std::string& stem);
 
-}  // namespace slamtune::report::testing
+}  // namespace slamtune::testing
