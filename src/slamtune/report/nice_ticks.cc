@@ -61,6 +61,23 @@ AxisTicks MakeNiceTicks(double lo, double hi, int target_count) {
   return ticks;
 }
 
+AxisTicks MakeTicksWithin(double lo, double hi, int target_count) {
+  AxisTicks ticks = MakeNiceTicks(lo, hi, target_count);
+  ticks.lower = lo;
+  ticks.upper = hi;
+  std::vector<double> values;
+  std::vector<std::string> labels;
+  const double tolerance = 1e-9 * ticks.step;
+  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
+    if (ticks.values[i] < lo - tolerance || ticks.values[i] > hi + tolerance) continue;
+    values.push_back(ticks.values[i]);
+    labels.push_back(ticks.labels[i]);
+  }
+  ticks.values = std::move(values);
+  ticks.labels = std::move(labels);
+  return ticks;
+}
+
 std::string FormatTick(double value, double step) {
   if (std::abs(value) < 1e-9 * std::abs(step)) value = 0.0;  // "-0" and rounding residue
   const double magnitude = std::max(std::abs(value), std::abs(step));

@@ -28,6 +28,10 @@ double NiceNumber(double x, bool round);
 // lo == hi is widened around the value; non-finite ends give the axis [0, 1].
 AxisTicks MakeNiceTicks(double lo, double hi, int target_count);
 
+// Ticks for an axis that spans exactly [lo, hi] (lo < hi, both finite): MakeNiceTicks's ticks
+// that fall inside it, with lower = lo and upper = hi (the axis may end between ticks).
+AxisTicks MakeTicksWithin(double lo, double hi, int target_count);
+
 // Text of a tick value for a given step: enough decimals to tell neighbours apart, no
 // trailing noise ("0.30000000000000004" -> "0.3"), "-0" printed as "0", and scientific
 // notation for very large or very small magnitudes.

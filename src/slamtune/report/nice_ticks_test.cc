@@ -52,6 +52,19 @@ TEST(MakeNiceTicks, DegenerateRangesStillGiveTwoTicks) {
   }
 }
 
+TEST(MakeTicksWithin, SpansExactlyTheLimitsWithTicksInside) {
+  const AxisTicks t = MakeTicksWithin(0.05, 0.6, 5);
+  EXPECT_DOUBLE_EQ(t.lower, 0.05);
+  EXPECT_DOUBLE_EQ(t.upper, 0.6);
+  ASSERT_GE(t.values.size(), 2u);
+  EXPECT_EQ(t.values.size(), t.labels.size());
+  for (double v : t.values) {
+    EXPECT_GE(v, 0.05);
+    EXPECT_LE(v, 0.6 + 1e-12);
+  }
+  EXPECT_EQ(t.labels.back(), "0.6");  // an end on a tick keeps it
+}
+
 TEST(FormatTick, CleanLabels) {
   EXPECT_EQ(FormatTick(0.1 + 0.2, 0.1), "0.3");
   EXPECT_EQ(FormatTick(-1e-17, 0.1), "0.0");

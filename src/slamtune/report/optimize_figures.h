@@ -5,7 +5,15 @@
 //   paper's Figure 13 shows the population moving towards the front over generations);
 // * all snapshots overlaid, on the same axes;
 // * each objective against the translational error, one panel per objective, with Spearman's
-//   rho in the panel title (error_correlation.h).
+//   rho in the panel title (error_correlation.h);
+// * where the search went in parameter space (parameter_space.png). Two searched parameters: a
+//   grid of scatter panels of the pair, the same sets coloured once by each objective, once by
+//   their loop closures and, with ground truth, once by their true error, so a user sees which
+//   region is good by every measure at once. More parameters: parallel coordinates
+//   (parallel_coordinates.h), one axis per parameter and one for the first objective, which
+//   shows the values the best sets share. One parameter: the first objective against it. The
+//   candidates are marked in every view, the default even when it lies outside the search range;
+//   failed runs are grey crosses in the scatter panels and counted in the titles elsewhere.
 // The population figures share axis limits across generations so they can be compared side by
 // side. Failure-scored individuals (ObjectiveSet::IsFailureScore) are left out and counted in
 // the figure title.
@@ -20,6 +28,7 @@
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/report/error_correlation.h"
 #include "slamtune/report/map_panels.h"
+#include "slamtune/report/parallel_coordinates.h"
 #include "slamtune/report/plot.h"
 #include "slamtune/report/report_text.h"
 
@@ -73,12 +82,62 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
                                const ErrorCorrelationSummary& correlation, const optim::OptimizeResult& result,
                                const FigureOptions& options);
 
+// What parameter_space.png shows, by the number of searched parameters.
+enum class ParameterSpaceView {
+  kNone,                 // nothing searched, nothing evaluated or no objective
+  kSlices,               // one parameter: the first objective against it (ObjectiveAgainstParameters)
+  kScatterGrid,          // two: scatter panels of the pair, one per colouring (ParameterSpacePanels)
+  kParallelCoordinates,  // three or more: an axis per parameter and one for the first objective
+};
+ParameterSpaceView ParameterSpaceViewOf(const optim::OptimizeResult& result);
+
+// What colours the evaluated sets of one scatter panel of the two-parameter grid.
+enum class SpaceColouring {
+  kObjective,           // the quarter of objective `SpacePanel::objective` among the successful sets
+  kLoopClosures,        // the number of loop closures (LoopClosureClasses)
+  kTranslationalError,  // the quarter of the mean true translational error among the sets with one
+};
+struct SpacePanel {
+  SpaceColouring colouring = SpaceColouring::kObjective;
+  std::size_t objective = 0;  // kObjective: index into the result's objectives
+};
+// The panels of the grid, in order: one per objective, the loop closures, and the true
+// translational error when any successful evaluation has ground truth (has_gt).
+std::vector<SpacePanel> ParameterSpacePanels(const optim::OptimizeResult& result);
+
+// A closed range of loop-closure counts shown in one colour.
+struct CountClass {
+  int lower = 0;
+  int upper = 0;
+};
+// The classes of the loop-closure panel, from the fewest to the most: one per distinct count
+// when there are at most `max_classes` (>= 1) of them, else contiguous ranges holding about
+// equally many of `counts` each. Empty counts: no classes.
+std::vector<CountClass> LoopClosureClasses(std::vector<int> counts, std::size_t max_classes);
+
+// The limits of a parameter's axis in the scatter grid: its search range with a 4 % margin,
+// widened to hold the candidates' values `marked` as long as the search range still fills at
+// least half of the axis. A value farther out is drawn clamped at the border (PlaceOnAxis) over
+// a grey triangle, and the legend says so: a default far outside a narrow range would otherwise
+// squeeze the whole search into a corner.
+AxisLimits ParameterAxisLimits(const optim::Dimension& dimension, const std::vector<double>& marked);
+
+// The candidates' markers of the scatter grid (two searched parameters, else none), in report
+// order (CandidateSeries styles): each at its values of the pair, or, when outside the axes
+// (ParameterAxisLimits), just inside the border (PlaceOnAxis) over a large grey triangle (first
+// in the list, named once), its legend entry giving the values that lie outside
+// ("default (r=30: outside)"). Evaluated sets outside the axes are drawn at the border too.
+std::vector<Series> ScatterGridCandidates(const optim::OptimizeResult& result);
+
 // Where the search went: every evaluated parameter set in the search space, with the
-// candidates marked. Two varied parameters: one scatter of the two, each set coloured by the
-// quarter of the first objective it falls in (best quarter green ... worst quarter purple,
-// failed runs grey). Otherwise one panel per varied parameter (three per row): the first
-// objective against the parameter's value, on the population figures' objective axes (the
-// figure's title counts the sets outside). Empty when nothing varied or nothing was evaluated.
+// candidates marked (ParameterSpaceView). The scatter grid has one panel per
+// ParameterSpacePanels entry (quarters of the objective or error, best quarter green ... worst
+// purple; loop-closure counts on a dark-to-light ramp; failed runs grey crosses), three per
+// row, and a last panel holding the legend of what every panel shares (candidates, failed
+// runs, the search range's outline). Parallel coordinates draw one line per successful set,
+// coloured by the quarter of the first objective with the best quarter on top, the recommended
+// and default sets thick; each parameter's axis spans its search range and a candidate's value
+// beyond it is drawn at the axis's end with a triangle and the value. Empty for kNone.
 cv::Mat ParameterSpaceFigure(const optim::OptimizeResult& result, const FigureOptions& options);
 
 // The base configuration's sequential matches along the log (response against seconds into the
@@ -88,8 +147,8 @@ cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions
 
 // Slices of the search: objective `k` of every evaluated parameter set against each searched
 // parameter (three panels per row, on the population figures' axes for that objective), with
-// the candidates marked. ParameterSpaceFigure shows it for the first objective when the space is
-// not two-dimensional. Empty when nothing varied, nothing was evaluated or k is out of range.
+// the candidates marked. ParameterSpaceFigure shows it for the first objective when one parameter
+// is searched. Empty when nothing varied, nothing was evaluated or k is out of range.
 cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::size_t k, const FigureOptions& options);
 
 // How the search progressed (result.history): one panel per objective with its best value in each

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <opencv2/core.hpp>
 
 #include "slamtune/report/testing/fake_optimize_result.h"
 
@@ -71,20 +72,155 @@ TEST(CandidateMapPanels, OnePanelPerParameterSet) {
   EXPECT_FALSE(panels[0].image.empty());
 }
 
-TEST(ParameterSpaceFigure, OnePlotForTwoParametersAPanelEachOtherwise) {
+optim::OptimizeResult WithThreeParameters() {
   optim::OptimizeResult r = testing::FakeOptimizeResult(false);
-  ASSERT_EQ(r.space.dimensions.size(), 2u);
-  const cv::Mat two = ParameterSpaceFigure(r, FigureOptions{});
-  ASSERT_FALSE(two.empty());
-  EXPECT_EQ(two.cols, 2 * FigureOptions{}.panel_width);
   r.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
-  const cv::Mat three = ParameterSpaceFigure(r, FigureOptions{});
-  EXPECT_GT(three.cols, 3 * FigureOptions{}.panel_width);  // three panels in a row
+  return r;
+}
+
+TEST(ParameterSpaceViewOf, ByTheNumberOfSearchedParameters) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  EXPECT_EQ(ParameterSpaceViewOf(r), ParameterSpaceView::kScatterGrid);
+  EXPECT_EQ(ParameterSpaceViewOf(WithThreeParameters()), ParameterSpaceView::kParallelCoordinates);
+  r.space.dimensions.pop_back();
+  EXPECT_EQ(ParameterSpaceViewOf(r), ParameterSpaceView::kSlices);
   r.space.dimensions.clear();
-  EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+  EXPECT_EQ(ParameterSpaceViewOf(r), ParameterSpaceView::kNone);
   r = testing::FakeOptimizeResult(false);
   r.evaluations.clear();
-  EXPECT_TRUE(ParameterSpaceFigure(r, FigureOptions{}).empty());
+  EXPECT_EQ(ParameterSpaceViewOf(r), ParameterSpaceView::kNone);
+}
+
+TEST(ParameterSpacePanels, OnePerObjectiveThenLoopsThenTheTrueErrorWithGroundTruth) {
+  const auto without = ParameterSpacePanels(testing::FakeOptimizeResult(false));
+  ASSERT_EQ(without.size(), 4u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(without[k].colouring, SpaceColouring::kObjective);
+    EXPECT_EQ(without[k].objective, k);
+  }
+  EXPECT_EQ(without[3].colouring, SpaceColouring::kLoopClosures);
+  const auto with = ParameterSpacePanels(testing::FakeOptimizeResult(true));
+  ASSERT_EQ(with.size(), 5u);
+  EXPECT_EQ(with[4].colouring, SpaceColouring::kTranslationalError);
+}
+
+TEST(LoopClosureClasses, EachCountWhenFewRangesOtherwise) {
+  EXPECT_TRUE(LoopClosureClasses({}, 6).empty());
+  const auto few = LoopClosureClasses({3, 0, 3, 5}, 6);
+  ASSERT_EQ(few.size(), 3u);
+  EXPECT_EQ(few[0].lower, 0);
+  EXPECT_EQ(few[0].upper, 0);
+  EXPECT_EQ(few[2].lower, 5);
+  std::vector<int> many;
+  for (int i = 0; i < 40; ++i) many.push_back(i % 20);
+  const auto ranges = LoopClosureClasses(many, 4);
+  ASSERT_EQ(ranges.size(), 4u);
+  EXPECT_EQ(ranges.front().lower, 0);
+  EXPECT_EQ(ranges.back().upper, 19);
+  for (std::size_t i = 1; i < ranges.size(); ++i) EXPECT_EQ(ranges[i].lower, ranges[i - 1].upper + 1);  // contiguous
+  // One count dominating: never an empty or reversed class.
+  const auto skewed = LoopClosureClasses({0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 3, 4, 5, 6, 7}, 3);
+  ASSERT_FALSE(skewed.empty());
+  for (const auto& c : skewed) EXPECT_LE(c.lower, c.upper);
+  EXPECT_EQ(skewed.back().upper, 7);
+}
+
+TEST(ParameterAxisLimits, WidenedForANearbyDefaultClampedForAFarOne) {
+  const optim::Dimension r{"loop_search_maximum_distance", 2.0, 6.0, false};
+  const AxisLimits plain = ParameterAxisLimits(r, {3.0, 5.0});
+  EXPECT_LT(plain.lower, 2.0);
+  EXPECT_GT(plain.upper, 6.0);
+  EXPECT_LT(plain.upper, 6.5);                                 // a 4 % margin
+  const AxisLimits near = ParameterAxisLimits(r, {3.0, 7.0});  // the default 1 m beyond the range
+  EXPECT_GT(near.upper, 7.0);
+  EXPECT_FALSE(PlaceOnAxis(7.0, near).clamped);
+  const AxisLimits far = ParameterAxisLimits(r, {3.0, 30.0});  // would squeeze the search range
+  EXPECT_EQ(far.upper, plain.upper);
+  EXPECT_TRUE(PlaceOnAxis(30.0, far).clamped);
+  const AxisLimits below = ParameterAxisLimits(r, {1.0});
+  EXPECT_LT(below.lower, 1.0);
+}
+
+TEST(ScatterGridCandidates, EveryCandidateMarkedAndADefaultOutsideDrawnAtTheBorder) {
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  const auto inside = ScatterGridCandidates(r);
+  ASSERT_EQ(inside.size(), 4u);
+  EXPECT_EQ(inside[0].name, "recommended");
+  EXPECT_EQ(inside[2].name, "default");
+  EXPECT_EQ(inside[2].x, std::vector<double>{4.0});
+  EXPECT_EQ(inside[2].marker, Marker::kSquare);
+  // The default far beyond r's range: drawn just inside the axes with a grey triangle behind it,
+  // its legend entry saying which value lies outside.
+  for (auto& c : r.candidates)
+    if (c.label == "default") c.record.params["loop_search_maximum_distance"] = 30.0;
+  const auto outside = ScatterGridCandidates(r);
+  ASSERT_EQ(outside.size(), 5u);
+  const Series& triangle = outside[0];
+  EXPECT_EQ(triangle.marker, Marker::kTriangle);
+  EXPECT_EQ(triangle.name, "outside the axes: at the border");
+  const Series& d = outside[3];
+  EXPECT_EQ(d.name, "default (r=30: outside)");
+  EXPECT_EQ(d.marker, Marker::kSquare);
+  ASSERT_EQ(d.x.size(), 1u);
+  EXPECT_LT(d.x[0], 6.0 + 0.04 * 4.0);  // inside the axes (the search range plus its margin)
+  EXPECT_GT(d.x[0], 5.5);
+  EXPECT_EQ(d.y, std::vector<double>{10.0});
+  EXPECT_EQ(triangle.x, d.x);
+  EXPECT_EQ(triangle.y, d.y);
+  EXPECT_EQ(outside[1].name, "recommended");  // the others stay as they were
+  EXPECT_EQ(outside[1].marker, Marker::kStar);
+  EXPECT_TRUE(ScatterGridCandidates(WithThreeParameters()).empty());
+}
+
+// Pixels of exactly `colour` in a rectangle of `image`.
+int CountColour(const cv::Mat& image, const cv::Rect& area, const cv::Scalar& colour) {
+  cv::Mat mask;
+  cv::inRange(image(area), colour, colour, mask);
+  return cv::countNonZero(mask);
+}
+
+TEST(ParameterSpaceFigure, TwoParametersAPanelPerColouringWithTheCandidatesInEach) {
+  const FigureOptions f;
+  const int pad = GridOptions{}.padding;
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  const cv::Mat grid = ParameterSpaceFigure(r, f);
+  ASSERT_FALSE(grid.empty());
+  // Three objectives, loop closures and the shared legend: 3 + 2 cells.
+  EXPECT_EQ(grid.cols, 3 * f.panel_width + 4 * pad);
+  const int title_h = grid.rows - 2 * f.panel_height - 3 * pad;
+  EXPECT_GT(title_h, 0);
+  EXPECT_LT(title_h, 60);
+  auto cell = [&](int i, int width) {
+    return cv::Rect(pad + (i % 3) * (f.panel_width + pad), title_h + pad + (i / 3) * (f.panel_height + pad), width,
+                    f.panel_height);
+  };
+  // The recommended star (vermillion) in the data area (left half) of every scatter panel.
+  for (int i = 0; i < 4; ++i) EXPECT_GT(CountColour(grid, cell(i, f.panel_width / 2), PaletteColour(1)), 10) << i;
+  EXPECT_GT(CountColour(grid, cell(4, f.panel_width), PaletteColour(1)), 0);  // and in the legend
+  r.candidates.clear();
+  const cv::Mat bare = ParameterSpaceFigure(r, f);
+  EXPECT_EQ(CountColour(bare, cell(0, f.panel_width / 2), PaletteColour(1)), 0);
+  // With ground truth, a fifth scatter panel fills the grid.
+  const cv::Mat gt = ParameterSpaceFigure(testing::FakeOptimizeResult(true), f);
+  EXPECT_EQ(gt.size(), grid.size());
+  EXPECT_GT(CountColour(gt, cell(4, f.panel_width / 2), PaletteColour(1)), 10);
+}
+
+TEST(ParameterSpaceFigure, ParallelCoordinatesForThreeParametersWithTheRecommendationDrawnThick) {
+  const FigureOptions f;
+  optim::OptimizeResult r = WithThreeParameters();
+  const cv::Mat figure = ParameterSpaceFigure(r, f);
+  ASSERT_FALSE(figure.empty());
+  EXPECT_EQ(figure.cols, 3 * f.panel_width + 4 * GridOptions{}.padding);
+  EXPECT_EQ(figure.rows, f.panel_height + f.panel_height / 2);
+  const cv::Rect all(0, 0, figure.cols, figure.rows);
+  const int with = CountColour(figure, all, PaletteColour(1));
+  EXPECT_GT(with, 1000);  // a 4 px line across the figure
+  r.candidates.clear();
+  EXPECT_LT(CountColour(ParameterSpaceFigure(r, f), all, PaletteColour(1)), with / 4);
+  // Not the slices of the first objective any more.
+  const cv::Mat slices = ObjectiveAgainstParameters(WithThreeParameters(), 0, f);
+  EXPECT_NE(figure.size(), slices.size());
 }
 
 TEST(ObjectiveAgainstParameters, OnePanelPerParameterForEveryObjective) {
@@ -98,8 +234,8 @@ TEST(ObjectiveAgainstParameters, OnePanelPerParameterForEveryObjective) {
   EXPECT_EQ(first.size(), last.size());
   EXPECT_GT(cv::norm(first, last, cv::NORM_L1), 0.0);  // other values on the y axes
   EXPECT_TRUE(ObjectiveAgainstParameters(r, 3, FigureOptions{}).empty());
-  // With more than two parameters, the parameter-space figure is the first objective's slices.
-  r.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
+  // With one searched parameter, the parameter-space figure is the first objective's slice.
+  r.space.dimensions.pop_back();
   EXPECT_EQ(cv::norm(ParameterSpaceFigure(r, FigureOptions{}), ObjectiveAgainstParameters(r, 0, FigureOptions{}),
                      cv::NORM_INF),
             0.0);

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "slamtune/report/html_page.h"
+#include "slamtune/report/optimize_figures.h"
 #include "slamtune/report/optimize_tables.h"
 #include "slamtune/report/report_text.h"
 #include "slamtune/report/tables.h"
@@ -258,6 +259,42 @@ void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) 
   page.Table({"label", "loop closures", "scan indices"}, scans);
 }
 
+// What parameter_space.png shows and how to read it, by its view (optimize_figures.h).
+std::string ParameterSpaceCaption(const optim::OptimizeResult& r) {
+  const std::string objective = r.objectives.size() > 0 ? ObjectiveAt(r, 0).short_name : "the first objective";
+  switch (ParameterSpaceViewOf(r)) {
+    case ParameterSpaceView::kScatterGrid: {
+      const bool gt = ParameterSpacePanels(r).back().colouring == SpaceColouring::kTranslationalError;
+      return fmt::format(
+          "Where the search went: every evaluated parameter set in the plane of the two searched parameters, drawn "
+          "once per panel and coloured by the quarter of each objective it falls in (green the best quarter, purple "
+          "the worst), by its number of loop closures (dark few, light many){}; failed runs are grey crosses. The "
+          "candidates are marked in every panel. A region that is green in every objective's panel is a safe "
+          "choice; where the panels disagree, the objectives trade off against each other. A candidate outside "
+          "the search range widens the axes (the range is then outlined in grey) or, when far off, is drawn at "
+          "the border as a triangle with its values in the legend (parameter_space.png).",
+          gt ? " and by the quarter of its true translational error" : "");
+    }
+    case ParameterSpaceView::kParallelCoordinates:
+      return fmt::format(
+          "Where the search went, in parallel coordinates: one vertical axis per searched parameter, spanning its "
+          "search range (symbols and full names in the Settings table below), and a last axis for {0}. Each "
+          "successful parameter set is a line joining its values, coloured by the quarter of {0} it falls in "
+          "(green the best quarter, drawn on top; purple the worst). The recommended set is the thick vermillion "
+          "line, the default the thick black one; a value beyond an axis's range is drawn at its end with a "
+          "triangle and the value. Where the green lines gather on part of an axis, that parameter matters for "
+          "{0}; where they spread over the whole axis, it does not within its range (parameter_space.png).",
+          objective);
+    case ParameterSpaceView::kSlices:
+      return fmt::format(
+          "Where the search went: {} of every evaluated parameter set against the searched parameter, "
+          "with the candidates marked (parameter_space.png).",
+          objective);
+    case ParameterSpaceView::kNone: break;
+  }
+  return "";
+}
+
 void CorrelationSection(HtmlPage& page, const OptimizeFigures& f, const ErrorCorrelationSummary& c) {
   page.Heading(2, "Do the objectives track the true error on this log?");
   if (!f.objective_vs_error.empty()) {
@@ -423,9 +460,7 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   if (!f.parameter_space.empty()) {
     page.Heading(2, "Parameter space", "parameters");
     page.Image(f.parameter_space, "evaluated parameter sets in the search space",
-               "Where the search went: every evaluated parameter set, with the candidates marked, inside the search "
-               "range of each parameter (parameter_space.png). A recommendation at the edge of a range may lie "
-               "beyond it.");
+               ParameterSpaceCaption(r) + " A recommendation at the edge of a range may lie beyond it.");
   }
 
   EvaluationsSection(page, r, correlation.has_value());

@@ -114,7 +114,10 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
     figures.maps = out.Png(MapsSideBySide(result, options), "maps_side_by_side.png");
     for (const CandidateMapPanel& panel : CandidateMapPanels(result, options)) {
       std::string labels;
-      for (const auto* c : panel.group.members) labels += (labels.empty() ? "" : "_") + FileSafe(c->label);
+      for (const auto* c : panel.group.members) {
+        if (!labels.empty()) labels += '_';
+        labels += FileSafe(c->label);
+      }
       const std::string file = "map_" + labels + ".png";
       figures.map_panels.push_back({panel.group.label, file, out.Png(panel.image, file),
                                     MapCaption(panel.group, result)});

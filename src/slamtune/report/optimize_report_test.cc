@@ -228,6 +228,26 @@ TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
   EXPECT_THAT(Slurp(dir / "report.html"), Not(HasSubstr("Spearman")));
 }
 
+TEST(WriteOptimizeReport, ParameterSpaceCaptionSaysHowToReadItsView) {
+  const fs::path two = FreshDir("space_two");
+  WriteOptimizeReport(testing::FakeOptimizeResult(true), two.string());
+  const std::string grid = Slurp(two / "report.html");
+  EXPECT_THAT(grid, HasSubstr("drawn once per panel"));
+  EXPECT_THAT(grid, HasSubstr("by the quarter of its true translational error"));
+  EXPECT_THAT(grid, Not(HasSubstr("parallel coordinates")));
+  optim::OptimizeResult three = testing::FakeOptimizeResult(false);
+  three.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
+  const fs::path dir = FreshDir("space_three");
+  WriteOptimizeReport(three, dir.string());
+  const std::string parallel = Slurp(dir / "report.html");
+  EXPECT_THAT(parallel, HasSubstr("in parallel coordinates"));
+  EXPECT_THAT(parallel, HasSubstr("a last axis for eta"));
+  EXPECT_THAT(parallel, Not(HasSubstr("drawn once per panel")));
+  const cv::Mat figure = cv::imread((dir / "parameter_space.png").string());
+  ASSERT_FALSE(figure.empty());
+  EXPECT_GT(figure.cols, 3 * 520);
+}
+
 TEST(WriteOptimizeReport, TablesMirrorThePapers) {
   const fs::path dir = FreshDir("tables");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());

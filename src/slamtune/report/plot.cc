@@ -46,23 +46,8 @@ std::pair<double, double> DataRange(const std::vector<Series>& series, bool alon
 
 AxisTicks AxisFor(const std::vector<Series>& series, bool along_x, const std::optional<AxisLimits>& fixed,
                   int target) {
-  if (fixed) {
-    // Fixed limits: nice ticks inside them, but the axis spans exactly the limits.
-    AxisTicks ticks = MakeNiceTicks(fixed->lower, fixed->upper, target);
-    ticks.lower = fixed->lower;
-    ticks.upper = fixed->upper;
-    std::vector<double> values;
-    std::vector<std::string> labels;
-    const double tolerance = 1e-9 * ticks.step;
-    for (std::size_t i = 0; i < ticks.values.size(); ++i) {
-      if (ticks.values[i] < fixed->lower - tolerance || ticks.values[i] > fixed->upper + tolerance) continue;
-      values.push_back(ticks.values[i]);
-      labels.push_back(ticks.labels[i]);
-    }
-    ticks.values = values;
-    ticks.labels = labels;
-    return ticks;
-  }
+  // Fixed limits: nice ticks inside them, but the axis spans exactly the limits.
+  if (fixed) return MakeTicksWithin(fixed->lower, fixed->upper, target);
   const auto [lo, hi] = DataRange(series, along_x);
   AxisTicks ticks = MakeNiceTicks(lo, hi, target);
   // A 3 % margin keeps extreme points off the frame; the axis may then end between ticks.
@@ -121,6 +106,39 @@ struct LegendEntry {
   SeriesStyle style;
   int marker_size;
 };
+
+// The resolved style of series `index`: its own, else the defaults for its place.
+LegendEntry StyleOf(const Series& s, std::size_t index, const PlotOptions& options) {
+  return {s.name, s.colour.value_or(PaletteColour(index)), s.marker.value_or(MarkerFor(index)), s.style,
+          s.marker_size.value_or(options.marker_size)};
+}
+
+// The named series' resolved styles, in order.
+std::vector<LegendEntry> LegendEntries(const std::vector<Series>& series, const PlotOptions& options) {
+  std::vector<LegendEntry> out;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    if (!series[i].name.empty()) out.push_back(StyleOf(series[i], i, options));
+  }
+  return out;
+}
+
+// One entry per line from `top_left` down, stopping before `bottom`.
+void DrawLegend(cv::Mat& image, const std::vector<LegendEntry>& legend, cv::Point top_left, int bottom,
+                const PlotOptions& options) {
+  const int line_h = TextSize("Ag", options.font_scale).height;
+  const int sample_w = std::max(options.marker_size, 18);
+  int y = top_left.y;
+  const int x = top_left.x;
+  for (const LegendEntry& e : legend) {
+    const int mid = y + line_h / 2;
+    if (HasLine(e.style)) cv::line(image, {x, mid}, {x + sample_w, mid}, e.colour, options.line_thickness, cv::LINE_AA);
+    if (HasMarkers(e.style))
+      DrawMarker(image, {x + sample_w / 2, mid}, e.marker, e.colour, std::min(e.marker_size, line_h + 4));
+    DrawText(image, e.name, {x + sample_w + kGap, y}, options.font_scale, kBlack);
+    y += line_h + kGap;
+    if (y > bottom) break;
+  }
+}
 
 }  // namespace
 
@@ -206,16 +224,10 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
   out.x_axis = AxisFor(series, true, options.x_limits, options.target_ticks);
   out.y_axis = AxisFor(series, false, options.y_limits, options.target_ticks);
 
-  // Legend entries (named series) with resolved styles.
-  std::vector<LegendEntry> legend;
+  // Resolved styles of every series, and the legend's entries (the named series).
   std::vector<LegendEntry> styles;
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    const Series& s = series[i];
-    LegendEntry e{s.name, s.colour.value_or(PaletteColour(i)), s.marker.value_or(MarkerFor(i)), s.style,
-                  s.marker_size.value_or(options.marker_size)};
-    styles.push_back(e);
-    if (!s.name.empty()) legend.push_back(e);
-  }
+  for (std::size_t i = 0; i < series.size(); ++i) styles.push_back(StyleOf(series[i], i, options));
+  const std::vector<LegendEntry> legend = LegendEntries(series, options);
 
   // Layout, from the outside in.
   const double scale = options.font_scale;
@@ -309,19 +321,19 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
   }
 
   // Legend, right of the axes.
-  if (legend_w > 0) {
-    int y = area.y;
-    const int x = area.br().x + kGap + kMargin / 2;
-    for (const LegendEntry& e : legend) {
-      const int mid = y + line_h / 2;
-      if (HasLine(e.style)) cv::line(image, {x, mid}, {x + sample_w, mid}, e.colour, options.line_thickness, cv::LINE_AA);
-      if (HasMarkers(e.style)) DrawMarker(image, {x + sample_w / 2, mid}, e.marker, e.colour, std::min(e.marker_size, line_h + 4));
-      DrawText(image, e.name, {x + sample_w + kGap, y}, scale, kBlack);
-      y += line_h + kGap;
-      if (y > area.br().y) break;
-    }
-  }
+  if (legend_w > 0) DrawLegend(image, legend, {area.br().x + kGap + kMargin / 2, area.y}, area.br().y, options);
   return out;
+}
+
+cv::Mat RenderLegend(const std::vector<Series>& series, const PlotOptions& options) {
+  options.Validate();
+  cv::Mat image(options.height, options.width, CV_8UC3, kWhite);
+  int top = kMargin;
+  if (!options.title.empty()) {
+    top += DrawText(image, options.title, {kMargin, top}, options.font_scale * 1.25, kBlack, 2).height + kGap;
+  }
+  DrawLegend(image, LegendEntries(series, options), {kMargin, top}, options.height - kMargin, options);
+  return image;
 }
 
 cv::Mat ComposeGrid(const std::vector<cv::Mat>& panels, const GridOptions& options) {

@@ -84,6 +84,12 @@ struct RenderedPlot {
 // must have x.size() == y.size() (a broken invariant otherwise).
 RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& options);
 
+// A legend on its own, for a grid of panels that share it: the named series of `series`
+// listed as RenderPlot lists them, from the top-left of an options.width x options.height
+// white image, under options.title as a heading (when not empty). Uses the options' sizes,
+// font and line thickness; the axes' fields are ignored. Entries that do not fit are left out.
+cv::Mat RenderLegend(const std::vector<Series>& series, const PlotOptions& options);
+
 struct GridOptions {
   int columns = 3;            // panels per row, >= 1
   int padding = 8;            // px between and around panels, in [0, 200]

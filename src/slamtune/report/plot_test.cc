@@ -125,6 +125,26 @@ TEST(RenderPlot, LegendIsDrawnRightOfTheAxes) {
   EXPECT_GT(NonWhiteInside(with.image, legend), 0);
 }
 
+TEST(RenderLegend, ListsTheNamedSeriesOnly) {
+  Series a = MakeSeries("recommended", {1.0}, {1.0});
+  a.colour = cv::Scalar(0, 94, 213);
+  Series hidden = MakeSeries("", {2.0}, {2.0});
+  hidden.colour = cv::Scalar(0, 255, 0);
+  PlotOptions o;
+  o.width = 300;
+  o.height = 200;
+  o.title = "In every panel";
+  const cv::Mat legend = RenderLegend({a, hidden}, o);
+  ASSERT_EQ(legend.size(), cv::Size(300, 200));
+  cv::Mat vermillion, green;
+  cv::inRange(legend, a.colour.value(), a.colour.value(), vermillion);
+  cv::inRange(legend, hidden.colour.value(), hidden.colour.value(), green);
+  EXPECT_GT(cv::countNonZero(vermillion), 0);
+  EXPECT_EQ(cv::countNonZero(green), 0);
+  EXPECT_LT(NonWhiteInside(legend, cv::Rect(0, 0, 300, 200)), 300 * 200 / 4);
+  EXPECT_EQ(NonWhiteInside(RenderLegend({hidden}, PlotOptions{}), cv::Rect(0, 0, 640, 480)), 0);
+}
+
 TEST(PlotOptions, ValidateNamesTheField) {
   PlotOptions o;
   o.width = 10;

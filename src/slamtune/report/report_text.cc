@@ -8,6 +8,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/report/tables.h"
+#include "slamtune/slam/mapper_params.h"
 
 namespace slamtune::report {
 
@@ -75,6 +76,17 @@ std::string ShortParamName(const std::string& ros_name) {
   };
   const auto it = kShort.find(ros_name);
   return it == kShort.end() ? ros_name : it->second;
+}
+
+std::string ParamUnit(const std::string& ros_name) {
+  const slam::ParamInfo* info = slam::FindParam(ros_name);
+  if (info == nullptr) return "";
+  // The meaning starts with "UNIT; " when the parameter has one.
+  const std::string meaning = info->meaning;
+  const std::size_t semicolon = meaning.find(';');
+  if (semicolon == std::string::npos || semicolon == 0 || semicolon > 4) return "";
+  const std::string unit = meaning.substr(0, semicolon);
+  return unit.find(' ') == std::string::npos ? unit : "";
 }
 
 std::string Readable(double value, int significant, int max_decimals) {

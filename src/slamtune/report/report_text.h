@@ -40,6 +40,10 @@ std::vector<CandidateGroup> MergedCandidates(const optim::OptimizeResult& result
 // The short symbol of a known loop-closure parameter (the paper's r, g, p, q), else the ROS name.
 std::string ShortParamName(const std::string& ros_name);
 
+// The unit of a mapper parameter as its table gives it (slam/mapper_params.h: "m", "rad"), for
+// axis labels; empty for unitless or unknown parameters.
+std::string ParamUnit(const std::string& ros_name);
+
 // A number as a reader wants it: at most `significant` significant digits and at most
 // `max_decimals` decimals, trailing zeros dropped, "-0" printed as "0", scientific notation
 // only below 1e-4 or from 1e9 on; "nan", "inf", "-inf" for the non-finite values. The one

@@ -34,6 +34,14 @@ TEST(Readable, DistancesToTheMillimetre) {
   EXPECT_EQ(Metres(0.0204), "0.02");
 }
 
+TEST(ParamUnit, FromTheParameterTable) {
+  EXPECT_EQ(ParamUnit("loop_search_maximum_distance"), "m");
+  EXPECT_EQ(ParamUnit("coarse_search_angle_offset"), "rad");
+  EXPECT_EQ(ParamUnit("loop_match_minimum_chain_size"), "");       // a count
+  EXPECT_EQ(ParamUnit("loop_match_minimum_response_coarse"), "");  // a response
+  EXPECT_EQ(ParamUnit("no_such_parameter"), "");
+}
+
 TEST(FormatParam, IntegersPlainOthersRounded) {
   EXPECT_EQ(FormatParam(12.0), "12");
   EXPECT_EQ(FormatParam(0.40000000000000002), "0.4");
