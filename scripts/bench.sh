@@ -36,7 +36,7 @@ else
   for world in office office-jump office-slip corridor-long; do
     run objectives_$world ./build/bench/bench_objectives --world $world --space front-end --runs 40
   done
-  for log in aces mit-csail; do
+  for log in aces mit-csail intel mit-killian; do
     for space in front-end loop; do
       [[ -f $data/$log.clf.gz ]] && run objectives_${log}_$space ./build/bench/bench_objectives "$data/$log.clf.gz" \
         --relations "$data/$log.relations" --space $space --runs 40
