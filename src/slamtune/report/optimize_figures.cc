@@ -847,6 +847,7 @@ cv::Mat HistoryFigure(const optim::OptimizeResult& result, const FigureOptions& 
     PlotOptions o = PanelOptions(options);
     o.x_limits = x_limits;
     o.x_label = "generation";
+    o.x_whole_numbers = true;
     o.y_label = ObjectiveAt(result, k).title;
     o.title = fmt::format("best {} of each generation (lower is better)", ObjectiveAt(result, k).short_name);
     o.legend = false;
@@ -864,6 +865,7 @@ cv::Mat HistoryFigure(const optim::OptimizeResult& result, const FigureOptions& 
   o.x_limits = x_limits;
   o.y_limits = AxisLimits{0.0, std::pow(optim::kHypervolumeReference, static_cast<double>(result.objectives.size()))};
   o.x_label = "generation";
+  o.x_whole_numbers = true;
   o.y_label = "hypervolume (normalised objectives)";
   o.title = "hypervolume of the front (higher is better)";
   o.legend = false;

@@ -57,6 +57,20 @@ AxisTicks AxisFor(const std::vector<Series>& series, bool along_x, const std::op
   return ticks;
 }
 
+// The ticks at whole numbers, labelled without decimals (a generation 0.5 does not exist).
+AxisTicks KeepWholeNumbers(AxisTicks ticks) {
+  std::vector<double> values;
+  std::vector<std::string> labels;
+  for (double v : ticks.values) {
+    if (std::abs(v - std::round(v)) > 1e-9 * std::max(1.0, std::abs(v))) continue;
+    values.push_back(std::round(v));
+    labels.push_back(FormatTick(std::round(v), 1.0));
+  }
+  ticks.values = std::move(values);
+  ticks.labels = std::move(labels);
+  return ticks;
+}
+
 void DrawMarker(cv::Mat& image, cv::Point centre, Marker marker, const cv::Scalar& colour, int size) {
   const int thickness = size >= 7 ? 2 : 1;
   switch (marker) {
@@ -222,6 +236,7 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
   }
   RenderedPlot out;
   out.x_axis = AxisFor(series, true, options.x_limits, options.target_ticks);
+  if (options.x_whole_numbers) out.x_axis = KeepWholeNumbers(std::move(out.x_axis));
   out.y_axis = AxisFor(series, false, options.y_limits, options.target_ticks);
 
   // Resolved styles of every series, and the legend's entries (the named series).

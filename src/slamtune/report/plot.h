@@ -58,6 +58,7 @@ struct PlotOptions {
   int marker_size = 9;         // px, marker width, in [1, 100]
   int line_thickness = 2;      // px, in [1, 20]
   bool grid = true;            // light grid lines at the ticks
+  bool x_whole_numbers = false;  // x ticks only at whole numbers (generations, counts)
   bool legend = true;          // legend right of the plot when any series is named
   std::optional<AxisLimits> x_limits;  // fixed x range (e.g. shared by several panels)
   std::optional<AxisLimits> y_limits;  // fixed y range

@@ -109,6 +109,18 @@ TEST(RenderPlot, FixedLimitsClipOutsidePoints) {
   EXPECT_DOUBLE_EQ(r.x_axis.upper, 1.0);
 }
 
+TEST(RenderPlot, WholeNumberTicksLeaveOutFractions) {
+  PlotOptions o;
+  o.x_limits = AxisLimits{0.0, 2.0};  // three generations: nice ticks would be 0, 0.5, ..., 2
+  const std::vector<Series> s = {MakeSeries("", {0, 1, 2}, {3, 1, 2})};
+  ASSERT_GT(RenderPlot(s, o).x_axis.values.size(), 3u);
+  o.x_whole_numbers = true;
+  const RenderedPlot r = RenderPlot(s, o);
+  EXPECT_EQ(r.x_axis.values, (std::vector<double>{0, 1, 2}));
+  EXPECT_EQ(r.x_axis.labels, (std::vector<std::string>{"0", "1", "2"}));
+  EXPECT_DOUBLE_EQ(r.x_axis.upper, 2.0);
+}
+
 TEST(RenderPlot, IsDeterministic) {
   const std::vector<Series> s = {MakeSeries("a", {1, 2, 3}, {3, 1, 2})};
   PlotOptions o;
