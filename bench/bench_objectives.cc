@@ -193,7 +193,7 @@ int Run(int argc, char** argv) {
 
   std::printf("\n| objectives | front size | broken in front | front error min..max m | knee error m | knee broken |\n"
               "|---|---|---|---|---|---|\n");
-  for (ObjectiveSetKind kind : {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kPaper}) {
+  for (ObjectiveSetKind kind : {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kOccupied, ObjectiveSetKind::kPaper}) {
     const ObjectiveSet set(kind);
     const auto front = slamtune::optim::NonDominated(ok, set);
     double lo = 1e300, hi = 0;

@@ -366,8 +366,9 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--fix", args->fix, "hold a parameter at a value while --vary searches others, NAME=VALUE (repeatable)");
       app.add_option("--objectives", args->objectives,
                      "what the map is judged by: 'consistency' (default: unbacked hits u_h, corner pixels n_c, "
-                     "enclosed areas n_e; does not reward a map for breaking apart) or 'paper' (the seed paper's "
-                     "eta, n_c, n_e)")
+                     "enclosed areas n_e; does not reward a map for breaking apart), 'occupied' (u_h, n_c and the "
+                     "count of occupied cells n_o, which also sees a corridor mapped twice side by side; for "
+                     "loop-closure spaces, where the node spacing is fixed) or 'paper' (the seed paper's eta, n_c, n_e)")
           ->capture_default_str();
       app.add_flag("--no-early-stop", [args](std::int64_t) { args->settling.enabled = false; },
                    "run every generation of the budget instead of stopping once the answer has settled");

@@ -10,15 +10,17 @@
 namespace slamtune::optim {
 namespace {
 
-constexpr std::array<ObjectiveInfo, 4> kInfos = {{
+constexpr std::array<ObjectiveInfo, 5> kInfos = {{
     {Objective::kOccupiedRatio, "occupied_ratio", "eta", "occupied ratio (eta)", 1.0},
     {Objective::kCornerPixels, "corner_pixels", "n_c", "corner pixels (n_c)", 1e9},
     {Objective::kEnclosedAreas, "enclosed_areas", "n_e", "enclosed areas (n_e)", 1e9},
     // A share lies in [0, 1]; 2 is worse than any map.
     {Objective::kUnbackedHits, "unbacked_hits", "u_h", "unbacked hits (u_h)", 2.0},
+    {Objective::kOccupiedCells, "occupied_cells", "n_o", "occupied cells (n_o)", 1e12},
 }};
 
-constexpr std::array<ObjectiveSetKind, 2> kKinds = {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kPaper};
+constexpr std::array<ObjectiveSetKind, 3> kKinds = {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kOccupied,
+                                                    ObjectiveSetKind::kPaper};
 
 }  // namespace
 
@@ -47,6 +49,7 @@ double ValueOf(const EvaluationRecord& record, Objective objective) {
       // No end point on the map at all: nothing backs it.
       if (!(record.hits > 0.0)) return 1.0;
       return (record.hits_in_free_cells + record.hits_in_unknown_cells) / record.hits;
+    case Objective::kOccupiedCells: return record.occupied_cells;
   }
   SLAMTUNE_CHECK(false);
   return 0.0;
@@ -56,6 +59,9 @@ ObjectiveSet::ObjectiveSet(ObjectiveSetKind kind) : kind_(kind) {
   switch (kind) {
     case ObjectiveSetKind::kConsistency:
       objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kEnclosedAreas};
+      break;
+    case ObjectiveSetKind::kOccupied:
+      objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kOccupiedCells};
       break;
     case ObjectiveSetKind::kPaper:
       objectives_ = {Objective::kOccupiedRatio, Objective::kCornerPixels, Objective::kEnclosedAreas};
@@ -67,6 +73,7 @@ ObjectiveSet::ObjectiveSet(ObjectiveSetKind kind) : kind_(kind) {
 const char* ObjectiveSet::NameOf(ObjectiveSetKind kind) {
   switch (kind) {
     case ObjectiveSetKind::kConsistency: return "consistency";
+    case ObjectiveSetKind::kOccupied: return "occupied";
     case ObjectiveSetKind::kPaper: return "paper";
   }
   return "consistency";

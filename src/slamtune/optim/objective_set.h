@@ -2,6 +2,7 @@
 // user chooses from (`slamtune optimize --objectives NAME`).
 //
 //   consistency (default)  unbacked hits, n_c, n_e
+//   occupied               unbacked hits, n_c, occupied cells
 //   paper                  eta, n_c, n_e (Han et al., Sensors 2020, §3)
 //
 // Why the default replaces the paper's eta: eta = occupied cells / all cells of the image, so a
@@ -11,6 +12,12 @@
 // cells the final map calls free or unknown (slam/occupancy_grid.h). Where one pass draws a
 // wall into space another pass saw as free, those end points are overruled; in a consistent
 // map almost every end point lands on a wall. docs/metrics.md gives the measurements.
+//
+// Why `occupied` exists: a loop that fails to close can leave a corridor as two parallel,
+// disjoint copies, each clean — no end point is overruled, so u_h cannot see it, but the map
+// holds more wall than the building has. The count of occupied cells sees that (mit-killian);
+// it also falls when sparser nodes draw fewer walls, so it is biased wherever the search varies
+// the node spacing (docs/metrics.md, "Where the default objectives fail").
 #pragma once
 
 #include <string>
@@ -20,7 +27,7 @@
 
 namespace slamtune::optim {
 
-enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedHits };
+enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedHits, kOccupiedCells };
 
 struct ObjectiveInfo {
   Objective id;
@@ -37,18 +44,18 @@ const std::vector<Objective>& AllObjectives();
 // The objective's value for an ok record (no failure scoring).
 double ValueOf(const EvaluationRecord& record, Objective objective);
 
-enum class ObjectiveSetKind { kConsistency, kPaper };
+enum class ObjectiveSetKind { kConsistency, kOccupied, kPaper };
 
 class ObjectiveSet {
  public:
   ObjectiveSet() : ObjectiveSet(ObjectiveSetKind::kConsistency) {}
   explicit ObjectiveSet(ObjectiveSetKind kind);
 
-  // The set called `name` ("consistency" or "paper"); InputError naming the known sets.
+  // The set called `name` ("consistency", "occupied" or "paper"); InputError naming the known sets.
   static ObjectiveSet Parse(const std::string& name);
-  // "consistency", "paper".
+  // "consistency", "occupied", "paper".
   static const char* NameOf(ObjectiveSetKind kind);
-  // The names a user may give, for help texts: "consistency, paper".
+  // The names a user may give, for help texts: "consistency, occupied, paper".
   static std::string KnownNames();
 
   ObjectiveSetKind kind() const { return kind_; }

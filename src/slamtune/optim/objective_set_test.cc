@@ -18,6 +18,7 @@ EvaluationRecord Record(double hits, double in_free, double in_unknown) {
   r.hits = hits;
   r.hits_in_free_cells = in_free;
   r.hits_in_unknown_cells = in_unknown;
+  r.occupied_cells = 21000;
   return r;
 }
 
@@ -27,6 +28,19 @@ TEST(ObjectiveSet, TheDefaultIsConsistencyAndThePaperKeepsEta) {
             (std::vector<Objective>{Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kEnclosedAreas}));
   EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kPaper).objectives(),
             (std::vector<Objective>{Objective::kOccupiedRatio, Objective::kCornerPixels, Objective::kEnclosedAreas}));
+  EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kOccupied).objectives(),
+            (std::vector<Objective>{Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kOccupiedCells}));
+}
+
+TEST(ObjectiveSet, TheOccupiedSetCountsWallCellsSoATwiceMappedCorridorScoresWorse) {
+  EvaluationRecord once = Record(1000, 30, 20);
+  EvaluationRecord twice = once;  // the same end points, a second copy of the corridor's walls
+  twice.occupied_cells = 2 * once.occupied_cells;
+  const ObjectiveSet occupied(ObjectiveSetKind::kOccupied);
+  EXPECT_EQ(occupied.Score(once), (std::vector<double>{0.05, 1200, 21000}));
+  EXPECT_LT(occupied.Score(once)[2], occupied.Score(twice)[2]);
+  // The default set cannot tell the two apart.
+  EXPECT_EQ(ObjectiveSet().Score(once), ObjectiveSet().Score(twice));
 }
 
 TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
@@ -40,7 +54,8 @@ TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
 
 TEST(ObjectiveSet, FailedRunsScoreWorseThanAnyMapAndAreRecognised) {
   const auto failed = EvaluationRecord::Failed("k", {}, "solver diverged");
-  for (const ObjectiveSet& set : {ObjectiveSet(ObjectiveSetKind::kConsistency), ObjectiveSet(ObjectiveSetKind::kPaper)}) {
+  for (const ObjectiveSet& set : {ObjectiveSet(ObjectiveSetKind::kConsistency), ObjectiveSet(ObjectiveSetKind::kOccupied),
+                                  ObjectiveSet(ObjectiveSetKind::kPaper)}) {
     SCOPED_TRACE(set.name());
     const auto score = set.Score(failed);
     EXPECT_TRUE(set.IsFailureScore(score));
@@ -55,18 +70,21 @@ TEST(ObjectiveSet, FailedRunsScoreWorseThanAnyMapAndAreRecognised) {
 TEST(ObjectiveSet, ParsesNamesAndRefusesUnknownOnes) {
   EXPECT_EQ(ObjectiveSet::Parse("paper").kind(), ObjectiveSetKind::kPaper);
   EXPECT_EQ(ObjectiveSet::Parse("consistency").kind(), ObjectiveSetKind::kConsistency);
+  EXPECT_EQ(ObjectiveSet::Parse("occupied").kind(), ObjectiveSetKind::kOccupied);
   try {
     ObjectiveSet::Parse("eta");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown objective set 'eta' (known: consistency, paper)"));
+    EXPECT_THAT(e.what(), HasSubstr("unknown objective set 'eta' (known: consistency, occupied, paper)"));
   }
 }
 
 TEST(ObjectiveSet, DescribesItselfInWords) {
   EXPECT_EQ(ObjectiveSet().Describe(), "unbacked hits (u_h), corner pixels (n_c) and enclosed areas (n_e)");
   EXPECT_STREQ(InfoOf(Objective::kOccupiedRatio).key, "occupied_ratio");
-  EXPECT_EQ(AllObjectives().size(), 4u);
+  EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kOccupied).Describe(),
+            "unbacked hits (u_h), corner pixels (n_c) and occupied cells (n_o)");
+  EXPECT_EQ(AllObjectives().size(), 5u);
 }
 
 }  // namespace
