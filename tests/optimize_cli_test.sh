@@ -28,6 +28,9 @@ r2=$(grep -E '^ +loop_search_maximum_distance:' "$work/whole/best.yaml" | awk '{
 r1=$(grep -E '^loop_search_maximum_distance:' "$work/whole/best_slam_karto.yaml" | awk '{print $2}')
 [[ -n "$r1" && "$r1" == "$r2" ]] || fail "best_slam_karto.yaml r '$r1' is not best.yaml's '$r2'"
 if grep -q "ros__parameters" "$work/whole/best_slam_karto.yaml"; then fail "best_slam_karto.yaml is nested"; fi
+# No --objectives and a loop-closure search (the node spacing is fixed): maps are judged by
+# u_h, n_c and the count of occupied cells; --objectives names another set.
+grep -Eq '"set": *"occupied"' "$work/whole/results.json" || fail "results.json: the automatic set is not 'occupied'"
 
 # With --verbose, progress lines (plain, not a terminal) say how much scan matching the runs
 # shared and the end lists the caches; without it, or with --no-share, nothing of it.
@@ -39,6 +42,11 @@ grep -q '^match cache: ' "$work/tiny.txt" || fail "--verbose did not list the ca
 grep -q '^generation 0: [0-9]* SLAM runs in .* to come take up to' "$work/tiny.txt" || fail "no budget estimate after generation 0"
 "$bin" optimize --out "$work/tiny_plain" "${tiny[@]}" > "$work/tiny_plain.txt" 2>&1 || fail "optimize (plain) failed"
 if grep -Eq 'matches:|^match cache' "$work/tiny_plain.txt"; then fail "cache statistics without --verbose"; fi
+grep -q 'maps judged by unbacked hits (u_h), corner pixels (n_c) and occupied cells (n_o);' "$work/tiny_plain.txt" ||
+  fail "the first line does not say what maps are judged by: $(grep '^optimising' "$work/tiny_plain.txt")"
+"$bin" optimize --out "$work/tiny_consistency" "${tiny[@]}" --objectives consistency --quiet > /dev/null 2>&1 ||
+  fail "optimize --objectives consistency failed"
+grep -Eq '"set": *"consistency"' "$work/tiny_consistency/results.json" || fail "--objectives consistency was not used"
 "$bin" optimize --out "$work/tiny_noshare" "${tiny[@]}" --no-share --verbose > "$work/tiny_noshare.txt" 2>&1 ||
   fail "optimize --no-share failed: $(tail -3 "$work/tiny_noshare.txt")"
 grep -q '^gen 1/1 ' "$work/tiny_noshare.txt" || fail "--no-share run printed no progress line"

@@ -30,6 +30,9 @@
 namespace slamtune::cli {
 namespace {
 
+// --objectives auto: the set is chosen from the search space (optim::DefaultObjectiveSetKind).
+constexpr const char* kAutomaticObjectives = "auto";
+
 struct OptimizeArgs {
   TuningInputOptions inputs;
   std::string out;
@@ -41,7 +44,7 @@ struct OptimizeArgs {
   // Resuming a folder written before named spaces (no space, no --vary): r and g around the
   // base without steps (SearchSpace::AroundBase), not the default-space probe.
   bool around_base_without_steps = false;
-  std::string objectives = optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kConsistency);
+  std::string objectives = kAutomaticObjectives;
   optim::SettlingOptions settling;  // --no-early-stop, --stop-tolerance, --stop-window
   std::size_t population = 66;
   unsigned generations = 60;
@@ -186,7 +189,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   // Preamble: every input is loaded and validated before any work starts.
   optim::OptimizeSettings settings;
   TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
-  settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
+  // A named set is checked before any work; the automatic choice waits for the search space.
+  if (args.objectives != kAutomaticObjectives) settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
   settings.settling = args.settling;
   settings.population = args.population;
   settings.generations = args.generations;
@@ -234,6 +238,10 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   } else {
     settings.space = optim::SearchSpace::FromYaml(args.space_file);
   }
+  if (args.objectives == kAutomaticObjectives) {
+    args.objectives = optim::ObjectiveSet::NameOf(optim::DefaultObjectiveSetKind(settings.space.VariesMapSampling()));
+    settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
+  }
   settings.Validate();
   const bool named_space = args.space_file == "loop" || args.space_file == "paper" || args.space_file == "front-end";
   optim::CheckSpaceAgainst(settings.space, inputs.base,
@@ -271,9 +279,10 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
       workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
               : fmt::format("{} job{}", args.jobs, args.jobs == 1 ? "" : "s");
   progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
-                              "seed {}; results in {}",
+                              "seed {}; maps judged by {}; results in {}",
                               settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label,
-                              settings.population, settings.generations, total, parallelism, settings.seed, dir),
+                              settings.population, settings.generations, total, parallelism, settings.seed,
+                              settings.objectives.Describe(), dir),
                   true);
   progress.Finish();
 
@@ -365,10 +374,11 @@ const SubcommandRegistrar kRegistrar{{
                      "integer parameter is searched by whole numbers): the search space without a YAML file");
       app.add_option("--fix", args->fix, "hold a parameter at a value while --vary searches others, NAME=VALUE (repeatable)");
       app.add_option("--objectives", args->objectives,
-                     "what the map is judged by: 'consistency' (default: unbacked hits u_h, corner pixels n_c, "
-                     "enclosed areas n_e; does not reward a map for breaking apart), 'occupied' (u_h, n_c and the "
-                     "count of occupied cells n_o, which also sees a corridor mapped twice side by side; for "
-                     "loop-closure spaces, where the node spacing is fixed) or 'paper' (the seed paper's eta, n_c, n_e)")
+                     "what the map is judged by: 'occupied' (unbacked hits u_h, corner pixels n_c and occupied "
+                     "cells n_o, which also sees a corridor mapped twice side by side), 'consistency' (u_h, n_c, "
+                     "enclosed areas n_e) or 'paper' (the seed paper's eta, n_c, n_e, which rewards a map for "
+                     "breaking apart); 'auto': 'occupied' unless the search varies the node spacing, the laser "
+                     "range or the resolution (which change the count of wall cells), then 'consistency'")
           ->capture_default_str();
       app.add_flag("--no-early-stop", [args](std::int64_t) { args->settling.enabled = false; },
                    "run every generation of the budget instead of stopping once the answer has settled");

@@ -24,6 +24,10 @@ constexpr std::array<ObjectiveSetKind, 3> kKinds = {ObjectiveSetKind::kConsisten
 
 }  // namespace
 
+ObjectiveSetKind DefaultObjectiveSetKind(bool search_varies_map_sampling) {
+  return search_varies_map_sampling ? ObjectiveSetKind::kConsistency : ObjectiveSetKind::kOccupied;
+}
+
 const ObjectiveInfo& InfoOf(Objective objective) {
   for (const auto& info : kInfos)
     if (info.id == objective) return info;

@@ -46,6 +46,12 @@ double ValueOf(const EvaluationRecord& record, Objective objective);
 
 enum class ObjectiveSetKind { kConsistency, kOccupied, kPaper };
 
+// The set `optimize` uses when the user names none: 'occupied' when every run draws its map
+// from the same scans at the same cell size (SearchSpace::VariesMapSampling() false: the count
+// of occupied cells then compares maps), else 'consistency' (fewer nodes draw fewer wall cells,
+// so the count would reward sparse, worse maps). Measured in docs/metrics.md.
+ObjectiveSetKind DefaultObjectiveSetKind(bool search_varies_map_sampling);
+
 class ObjectiveSet {
  public:
   ObjectiveSet() : ObjectiveSet(ObjectiveSetKind::kConsistency) {}

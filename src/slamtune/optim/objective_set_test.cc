@@ -43,6 +43,11 @@ TEST(ObjectiveSet, TheOccupiedSetCountsWallCellsSoATwiceMappedCorridorScoresWors
   EXPECT_EQ(ObjectiveSet().Score(once), ObjectiveSet().Score(twice));
 }
 
+TEST(ObjectiveSet, TheAutomaticChoiceCountsCellsOnlyWhenEveryRunDrawsTheSameScans) {
+  EXPECT_EQ(DefaultObjectiveSetKind(false), ObjectiveSetKind::kOccupied);
+  EXPECT_EQ(DefaultObjectiveSetKind(true), ObjectiveSetKind::kConsistency);
+}
+
 TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
   EXPECT_DOUBLE_EQ(ValueOf(Record(1000, 30, 20), Objective::kUnbackedHits), 0.05);
   EXPECT_DOUBLE_EQ(ValueOf(Record(1000, 0, 0), Objective::kUnbackedHits), 0.0);

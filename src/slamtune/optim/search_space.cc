@@ -313,6 +313,14 @@ std::size_t SearchSpace::integer_count() const {
       std::count_if(dimensions.begin(), dimensions.end(), [](const Dimension& d) { return d.integer; }));
 }
 
+bool SearchSpace::VariesMapSampling() const {
+  static const std::set<std::string> kSampling = {"minimum_travel_distance", "minimum_travel_heading",
+                                                  "minimum_time_interval",   "max_laser_range",
+                                                  "min_laser_range",         "resolution"};
+  return std::any_of(dimensions.begin(), dimensions.end(),
+                     [](const Dimension& d) { return kSampling.count(d.name) > 0; });
+}
+
 std::map<std::string, double> SearchSpace::Assign(const std::vector<double>& decision) const {
   SLAMTUNE_CHECK(decision.size() == dimensions.size());
   std::map<std::string, double> out = fixed;

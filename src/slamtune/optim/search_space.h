@@ -82,6 +82,11 @@ struct SearchSpace {
   std::size_t size() const { return dimensions.size(); }
   std::size_t LineOf(const std::string& name) const;
   std::size_t integer_count() const;
+  // Whether the search varies what a map is drawn from or at — which scans become nodes
+  // (minimum_travel_distance, minimum_travel_heading, minimum_time_interval), which beams are
+  // drawn (max_laser_range, min_laser_range) or the cell size (resolution) — so that counts of
+  // map cells differ between runs for reasons other than the map's consistency.
+  bool VariesMapSampling() const;
   // The fixed values plus the decision vector's values, by name. Integer genes are
   // rounded (they already are, after NSGA-III's repair).
   std::map<std::string, double> Assign(const std::vector<double>& decision) const;

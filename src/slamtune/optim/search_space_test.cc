@@ -283,6 +283,20 @@ TEST(SearchSpaceFromFlags, RefusesMalformedEntriesNamingTheFlag) {
   }
 }
 
+TEST(SearchSpace, VariesMapSamplingWhenNodeSpacingRangeOrResolutionAreSearched) {
+  const slam::MapperParams base;
+  EXPECT_FALSE(SearchSpace::Loop(base).VariesMapSampling());
+  EXPECT_FALSE(SearchSpace::PaperDefault().VariesMapSampling());
+  EXPECT_TRUE(SearchSpace::FrontEnd(base).VariesMapSampling());
+  for (const char* name : {"minimum_travel_distance", "minimum_travel_heading", "minimum_time_interval",
+                           "max_laser_range", "min_laser_range", "resolution"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(SearchSpace::FromFlags({std::string(name) + "=0.1:0.5"}, {}).VariesMapSampling());
+  }
+  // Fixing one does not vary it.
+  EXPECT_FALSE(SearchSpace::FromFlags({"r=2:6"}, {"minimum_travel_distance=0.5"}).VariesMapSampling());
+}
+
 TEST(FullParamName, ExpandsTheSeedPapersShortNamesOnly) {
   EXPECT_EQ(FullParamName("r"), "loop_search_maximum_distance");
   EXPECT_EQ(FullParamName("q"), "loop_match_maximum_variance_coarse");
