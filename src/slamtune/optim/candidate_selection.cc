@@ -41,25 +41,43 @@ std::vector<std::size_t> OkIndices(const std::vector<EvaluationRecord>& records)
 
 }  // namespace
 
-Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population, const ObjectiveSet& objectives) {
-  SLAMTUNE_CHECK(!population.empty());
+std::size_t MajorityIndex(const std::vector<std::string>& keys, const std::vector<std::vector<double>>& scores,
+                          const std::vector<bool>& ok) {
+  SLAMTUNE_CHECK(!keys.empty() && keys.size() == scores.size() && keys.size() == ok.size());
   std::map<std::string, int> count;
-  for (const auto& r : population) ++count[r.key];
-  std::vector<std::size_t> all(population.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  const auto sums = NormalisedSums(population, all, objectives);
-  Recommendation best;
-  best.share = -1;
-  for (std::size_t i = 0; i < population.size(); ++i) {
-    const int c = count[population[i].key];
-    const bool ok = population[i].status == "ok";
-    const bool best_ok = best.share >= 0 && population[best.index].status == "ok";
-    if (best.share < 0 || (ok && !best_ok) ||
-        (ok == best_ok && (c > best.share || (c == best.share && sums[i] < sums[best.index])))) {
-      best = {i, c};
+  for (const auto& key : keys) ++count[key];
+  const std::size_t m = scores.front().size();
+  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
+  for (const auto& f : scores) {
+    SLAMTUNE_CHECK(f.size() == m);
+    for (std::size_t k = 0; k < m; ++k) {
+      lo[k] = std::min(lo[k], f[k]);
+      hi[k] = std::max(hi[k], f[k]);
     }
   }
+  std::vector<double> sums(scores.size(), 0.0);
+  for (std::size_t i = 0; i < scores.size(); ++i)
+    for (std::size_t k = 0; k < m; ++k) sums[i] += hi[k] > lo[k] ? (scores[i][k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    const int c = count[keys[i]], best_c = count[keys[best]];
+    if ((ok[i] && !ok[best]) || (ok[i] == ok[best] && (c > best_c || (c == best_c && sums[i] < sums[best])))) best = i;
+  }
   return best;
+}
+
+Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& population, const ObjectiveSet& objectives) {
+  SLAMTUNE_CHECK(!population.empty());
+  std::vector<std::string> keys;
+  std::vector<std::vector<double>> scores;
+  std::vector<bool> ok;
+  for (const auto& r : population) {
+    keys.push_back(r.key);
+    scores.push_back(objectives.Score(r));
+    ok.push_back(r.status == "ok");
+  }
+  const std::size_t index = MajorityIndex(keys, scores, ok);
+  return {index, static_cast<int>(std::count(keys.begin(), keys.end(), keys[index]))};
 }
 
 bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {

@@ -25,6 +25,14 @@ struct Recommendation {
   int share = 0;          // individuals with the same parameter set
 };
 
+// The recommendation on objective vectors, shared with the settling rule: index of the individual
+// whose parameter set (`keys[i]`) most individuals share, preferring runs that did not fail
+// (`ok[i]`); ties go to the lowest sum of objectives normalised over all individuals (min-max per
+// objective, zero ranges count 0), then to the earliest. All three vectors have one entry per
+// individual and must not be empty.
+std::size_t MajorityIndex(const std::vector<std::string>& keys, const std::vector<std::vector<double>>& scores,
+                          const std::vector<bool>& ok);
+
 // Pareto helpers on objective vectors (all minimised), shared with the settling rule.
 bool Dominates(const std::vector<double>& a, const std::vector<double>& b);
 // Indices of the non-dominated vectors of `f`, in input order.

@@ -13,25 +13,16 @@
 namespace slamtune::optim {
 namespace {
 
-// The key of the parameter set most individuals share; ties to the first.
-std::string MajorityKey(const SearchSpace& space, const std::vector<std::vector<double>>& x) {
-  std::map<std::string, int> count;
-  std::string best;
-  int best_count = 0;
-  for (const auto& xi : x) {
-    const std::string key = SearchSpace::Key(space.Assign(xi));
-    const int c = ++count[key];
-    if (c > best_count) {
-      best_count = c;
-      best = key;
-    }
-  }
-  return best;
-}
-
-std::string KneeKey(const SearchSpace& space, const std::vector<std::vector<double>>& x,
-                    const std::vector<std::vector<double>>& f) {
-  return SearchSpace::Key(space.Assign(x[KneeIndex(f)]));
+// The objective vector of the recommendation — chosen as the final candidate selection chooses
+// it (MajorityIndex; failed runs are not told apart here, their scores are worse than any map's)
+// — and of the knee. Compared as vectors: sets that give the very same map are one answer, and
+// a population spread along a front with no set shared would otherwise "change" its answer every
+// generation among equals.
+std::vector<double> RecommendedScores(const SearchSpace& space, const std::vector<std::vector<double>>& x,
+                                      const std::vector<std::vector<double>>& f) {
+  std::vector<std::string> keys;
+  for (const auto& xi : x) keys.push_back(SearchSpace::Key(space.Assign(xi)));
+  return f[MajorityIndex(keys, f, std::vector<bool>(f.size(), true))];
 }
 
 }  // namespace
@@ -88,11 +79,13 @@ bool SettlingRule::Update(unsigned generation, const std::vector<std::vector<dou
   last_generation_ = generation;
   if (settled()) return true;
   const auto front = NonDominatedVectors(f);
-  const std::string recommended = MajorityKey(space_, x);
-  const std::string knee = KneeKey(space_, x, f);
+  const std::vector<double> recommended = RecommendedScores(space_, x, f);
+  const std::vector<double> knee = f[KneeIndex(f)];
+  const bool had_previous = !previous_front_.empty();
   last_movement_ = FrontMovement(previous_front_, front);
-  const bool calm = !previous_front_.empty() && last_movement_ < options_.tolerance &&
-                    recommended == previous_recommended_ && knee == previous_knee_;
+  const bool same_answer = recommended == previous_recommended_ && knee == previous_knee_;
+  const bool calm = had_previous && last_movement_ < options_.tolerance && same_answer;
+  last_answer_changed_ = had_previous && !same_answer;
   calm_generations_ = calm ? calm_generations_ + 1 : 0;
   previous_front_ = front;
   previous_recommended_ = recommended;
@@ -104,9 +97,19 @@ bool SettlingRule::Update(unsigned generation, const std::vector<std::vector<dou
 std::string SettlingRule::Describe(unsigned generations_budget) const {
   if (!options_.enabled) return fmt::format("ran the fixed budget of {} generations", generations_budget);
   if (!settled()) {
-    return fmt::format("ran all {} generations: the answer was still changing (front movement {:.4f}, tolerance "
-                       "{:.4f})",
-                       generations_budget, last_movement_, options_.tolerance);
+    if (last_movement_ >= options_.tolerance) {
+      return fmt::format("ran all {} generations: the answer was still changing (the front still moved {:.4f}, "
+                         "tolerance {:.4f})",
+                         generations_budget, last_movement_, options_.tolerance);
+    }
+    if (last_answer_changed_) {
+      return fmt::format("ran all {} generations: the answer was still changing (the front moved {:.4f}, below the "
+                         "tolerance {:.4f}, but the recommended or the knee map changed in the last generation)",
+                         generations_budget, last_movement_, options_.tolerance);
+    }
+    return fmt::format("ran all {} generations: the answer was still changing (calm for {} of the {} generations "
+                       "in a row the rule needs)",
+                       generations_budget, calm_generations_, options_.window);
   }
   return fmt::format("stopped after generation {} of {}: for {} generations the non-dominated front moved less than "
                      "{:.4f} (normalised) and the recommendation and the knee did not change",

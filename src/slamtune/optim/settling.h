@@ -6,10 +6,12 @@
 //   * the front's movement: the mean distance from each point of this generation's
 //     non-dominated front to the nearest point of the previous generation's, with every
 //     objective normalised by the current front's range (an IGD between successive fronts);
-//   * the answer: the parameter set the final population would recommend (the one most
-//     individuals share) and the knee of the front.
+//   * the answer: the map the final population would recommend (the set most individuals share,
+//     ties to the lowest normalised sum of objectives, as candidate_selection.h chooses) and the
+//     knee of the front, each compared by its objective vector — sets that give the same map are
+//     one answer.
 // The optimisation has settled when, for `window` consecutive generations, the front moved less
-// than `tolerance` and the recommendation and the knee stayed the same parameter sets. The rule
+// than `tolerance` and the recommendation's and the knee's objective vectors stayed the same. The rule
 // reads only what every saved generation holds (decision and objective vectors), so a resumed
 // run replays the saved generations through it and stops at the same generation.
 #pragma once
@@ -49,7 +51,8 @@ class SettlingRule {
   SettlingOptions options_;
   SearchSpace space_;
   std::vector<std::vector<double>> previous_front_;
-  std::string previous_recommended_, previous_knee_;
+  std::vector<double> previous_recommended_, previous_knee_;  // objective vectors
+  bool last_answer_changed_ = false;
   int calm_generations_ = 0;
   unsigned last_generation_ = 0;
   unsigned settled_at_ = 0;

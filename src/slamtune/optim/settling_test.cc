@@ -55,13 +55,40 @@ TEST(SettlingRule, AMovingFrontOrAChangingAnswerKeepsItGoing) {
     const double shift = 0.5 / g;  // still moving by more than the tolerance
     EXPECT_FALSE(moving.Update(g, {{3.0}, {4.0}}, {{1.0 + shift, 2.0}, {2.0, 1.0 - shift}})) << g;
   }
-  EXPECT_THAT(moving.Describe(10), HasSubstr("ran all 10 generations: the answer was still changing"));
-  // The same front, but the parameter set most individuals share alternates.
+  EXPECT_THAT(moving.Describe(10), HasSubstr("ran all 10 generations: the answer was still changing (the front still moved"));
+  // The same front, but the map most individuals share alternates between its two ends.
   SettlingRule flipping({true, 0.0025, 2}, OneDimension());
   for (unsigned g = 1; g <= 10; ++g) {
-    const double r = g % 2 ? 3.0 : 5.0;
-    EXPECT_FALSE(flipping.Update(g, {{r}, {r}, {4.0}}, {{1.0, 2.0}, {1.0, 2.0}, {2.0, 1.0}})) << g;
+    if (g % 2) {
+      EXPECT_FALSE(flipping.Update(g, {{3.0}, {3.0}, {4.0}}, {{1.0, 2.0}, {1.0, 2.0}, {2.0, 1.0}})) << g;
+    } else {
+      EXPECT_FALSE(flipping.Update(g, {{3.0}, {4.0}, {4.0}}, {{1.0, 2.0}, {2.0, 1.0}, {2.0, 1.0}})) << g;
+    }
   }
+  EXPECT_THAT(flipping.Describe(10), HasSubstr("below the tolerance 0.0025, but the recommended or the knee map changed"));
+}
+
+TEST(SettlingRule, SetsThatGiveTheSameMapAreOneAnswer) {
+  // The majority alternates between r 3 and r 5, which give the same map: settled.
+  SettlingRule same_map({true, 0.0025, 2}, OneDimension());
+  bool settled = false;
+  for (unsigned g = 1; g <= 4 && !settled; ++g) {
+    const double r = g % 2 ? 3.0 : 5.0;
+    settled = same_map.Update(g, {{r}, {r}, {4.0}}, {{1.0, 2.0}, {1.0, 2.0}, {2.0, 1.0}});
+  }
+  EXPECT_TRUE(settled);
+  EXPECT_EQ(same_map.settled_at(), 3u);
+}
+
+TEST(SettlingRule, WithoutASharedSetTheRecommendationIsTheLowestNormalisedSum) {
+  // Every individual differs and the population order changes each generation; the front and
+  // its lowest-sum member do not: settled (a "first individual" rule would flip forever).
+  SettlingRule spread({true, 0.0025, 2}, OneDimension());
+  const Vectors fa = {{0.0, 1.0}, {0.4, 0.4}, {1.0, 0.0}};
+  const Vectors fb = {{1.0, 0.0}, {0.0, 1.0}, {0.4, 0.4}};
+  EXPECT_FALSE(spread.Update(1, {{2.0}, {3.0}, {4.0}}, fa));
+  EXPECT_FALSE(spread.Update(2, {{4.0}, {2.0}, {3.0}}, fb));
+  EXPECT_TRUE(spread.Update(3, {{2.0}, {3.0}, {4.0}}, fa));
 }
 
 TEST(SettlingRule, DisabledNeverStopsAndBadOptionsAreRefused) {
