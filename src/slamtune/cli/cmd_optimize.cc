@@ -190,7 +190,14 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   optim::OptimizeSettings settings;
   TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
   // A named set is checked before any work; the automatic choice waits for the search space.
-  if (args.objectives != kAutomaticObjectives) settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
+  if (args.objectives != kAutomaticObjectives) {
+    try {
+      settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
+    } catch (const InputError&) {
+      throw InputError(fmt::format("--objectives: unknown objective set '{}' (known: {}, {})", args.objectives,
+                                   kAutomaticObjectives, optim::ObjectiveSet::KnownNames()));
+    }
+  }
   settings.settling = args.settling;
   settings.population = args.population;
   settings.generations = args.generations;
