@@ -165,8 +165,9 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
 
   unsigned done_gens = 0;
   std::vector<std::vector<double>> current_f;  // objectives of the latest population
-  // Progress counts what the summary counts: SLAM runs stored (earlier sessions' included) and
-  // requests served without a run. The time left extrapolates this process's finished generations.
+  // Progress counts what the summary counts: SLAM runs stored (those of an interrupted earlier
+  // process included) and requests served without a run. The time left extrapolates this
+  // process's finished generations.
   const std::size_t runs_before = store.Count();
   unsigned first_gen_here = 0;  // the generation this process started from (0 unless resumed)
   auto report = [&](unsigned gen, bool force) {
