@@ -12,23 +12,32 @@
 namespace slamtune::optim {
 namespace {
 
-// Sum over objectives of (f - min) / (max - min) over the given records (zero ranges -> 0).
-std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records, const std::vector<std::size_t>& among,
-                                   const ObjectiveSet& objectives) {
-  const std::size_t m = objectives.size();
+// Per vector, the sum over objectives of (f - min) / (max - min) over all `scores` (zero ranges
+// count 0). `scores` must not be empty and its vectors must have one length.
+std::vector<double> NormalisedSums(const std::vector<std::vector<double>>& scores) {
+  const std::size_t m = scores.front().size();
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
-  for (std::size_t i : among) {
-    const auto f = objectives.Score(records[i]);
+  for (const auto& f : scores) {
+    SLAMTUNE_CHECK(f.size() == m);
     for (std::size_t k = 0; k < m; ++k) {
       lo[k] = std::min(lo[k], f[k]);
       hi[k] = std::max(hi[k], f[k]);
     }
   }
+  std::vector<double> sums(scores.size(), 0.0);
+  for (std::size_t i = 0; i < scores.size(); ++i)
+    for (std::size_t k = 0; k < m; ++k) sums[i] += hi[k] > lo[k] ? (scores[i][k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+  return sums;
+}
+
+// The same over the records `among` (non-empty), indexed like `records` (others 0).
+std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records, const std::vector<std::size_t>& among,
+                                   const ObjectiveSet& objectives) {
+  std::vector<std::vector<double>> scores;
+  for (std::size_t i : among) scores.push_back(objectives.Score(records[i]));
+  const std::vector<double> among_sums = NormalisedSums(scores);
   std::vector<double> sums(records.size(), 0.0);
-  for (std::size_t i : among) {
-    const auto f = objectives.Score(records[i]);
-    for (std::size_t k = 0; k < m; ++k) sums[i] += hi[k] > lo[k] ? (f[k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
-  }
+  for (std::size_t j = 0; j < among.size(); ++j) sums[among[j]] = among_sums[j];
   return sums;
 }
 
@@ -46,18 +55,7 @@ std::size_t MajorityIndex(const std::vector<std::string>& keys, const std::vecto
   SLAMTUNE_CHECK(!keys.empty() && keys.size() == scores.size() && keys.size() == ok.size());
   std::map<std::string, int> count;
   for (const auto& key : keys) ++count[key];
-  const std::size_t m = scores.front().size();
-  std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
-  for (const auto& f : scores) {
-    SLAMTUNE_CHECK(f.size() == m);
-    for (std::size_t k = 0; k < m; ++k) {
-      lo[k] = std::min(lo[k], f[k]);
-      hi[k] = std::max(hi[k], f[k]);
-    }
-  }
-  std::vector<double> sums(scores.size(), 0.0);
-  for (std::size_t i = 0; i < scores.size(); ++i)
-    for (std::size_t k = 0; k < m; ++k) sums[i] += hi[k] > lo[k] ? (scores[i][k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
+  const std::vector<double> sums = NormalisedSums(scores);
   std::size_t best = 0;
   for (std::size_t i = 1; i < keys.size(); ++i) {
     const int c = count[keys[i]], best_c = count[keys[best]];

@@ -1,11 +1,11 @@
 // The objectives NSGA-III minimises, read off one evaluation's record, and the named sets a
 // user chooses from (`slamtune optimize --objectives NAME`).
 //
-//   consistency (default)  unbacked hits, n_c, n_e
-//   occupied               unbacked hits, n_c, occupied cells
-//   paper                  eta, n_c, n_e (Han et al., Sensors 2020, §3)
+//   occupied     unbacked hits, n_c, occupied cells   (default when every run draws the same scans)
+//   consistency  unbacked hits, n_c, n_e              (default when the search varies node spacing)
+//   paper        eta, n_c, n_e (Han et al., Sensors 2020, §3)
 //
-// Why the default replaces the paper's eta: eta = occupied cells / all cells of the image, so a
+// Why the defaults replace the paper's eta: eta = occupied cells / all cells of the image, so a
 // map that breaks apart spreads over a larger bounding box and its eta falls — minimising eta
 // drives the search towards broken maps wherever the front end can break. The unbacked-hit
 // share does not depend on the map's extent: it is the share of scan end points that land in
@@ -17,7 +17,7 @@
 // disjoint copies, each clean — no end point is overruled, so u_h cannot see it, but the map
 // holds more wall than the building has. The count of occupied cells sees that (mit-killian);
 // it also falls when sparser nodes draw fewer walls, so it is biased wherever the search varies
-// the node spacing (docs/metrics.md, "Where the default objectives fail").
+// the node spacing (docs/metrics.md, "Where u_h, n_c and n_e fail").
 #pragma once
 
 #include <string>
