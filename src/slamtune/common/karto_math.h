@@ -27,9 +27,16 @@ inline int32_t KartoRoundToInt(double v) { return static_cast<int32_t>(KartoRoun
 // |a - b| <= 1e-6 (§1.2).
 inline bool KartoEqual(double a, double b) { return std::fabs(a - b) <= kKartoTolerance; }
 
+// Karto's whole-turn loops below serve every angle a robot produces; an angle beyond this many
+// radians (only corrupt input gives one) is first brought near by std::remainder, because the
+// loops would take millions of turns, or forever where subtracting 2 pi no longer changes the
+// double. An infinite angle becomes NaN.
+inline constexpr double kTurnLoopLimit = 64.0 * kTwoPi;
+
 // Maps an angle into [-pi, pi] by adding or subtracting whole turns; values already inside
 // (including +-pi) are returned unchanged (§1.3).
 inline double NormalizeAngle(double a) {
+  if (std::fabs(a) > kTurnLoopLimit) a = std::remainder(a, kTwoPi);
   while (a < -kPi) a += kTwoPi;
   while (a > kPi) a -= kTwoPi;
   return a;
@@ -37,6 +44,7 @@ inline double NormalizeAngle(double a) {
 
 // Shifts `a` by whole turns until a - ref lies in [-pi, pi]; returns the shifted a (§1.3).
 inline double NormalizeAngleDifference(double a, double ref) {
+  if (std::fabs(a - ref) > kTurnLoopLimit) a = ref + std::remainder(a - ref, kTwoPi);
   while (a - ref > kPi) a -= kTwoPi;
   while (a - ref < -kPi) a += kTwoPi;
   return a;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 namespace slamtune {
@@ -20,6 +22,22 @@ TEST(KartoMath, RoundsHalfAwayFromZero) {
 TEST(KartoMath, EqualUsesInclusiveTolerance) {
   EXPECT_TRUE(KartoEqual(1.0, 1.0 + 0.9e-6));
   EXPECT_FALSE(KartoEqual(1.0, 1.0 + 1.1e-6));
+}
+
+// Corrupt input (an odometry heading of 1e125 rad) must not hang the loops: subtracting 2 pi
+// no longer changes such a double. Angles a robot produces keep Karto's loop, bit for bit.
+TEST(KartoMath, NormalizeAngleEndsOnHugeAndInfiniteAngles) {
+  const double huge = NormalizeAngle(8.8e125);
+  EXPECT_GE(huge, -kPi);
+  EXPECT_LE(huge, kPi);
+  EXPECT_TRUE(std::isnan(NormalizeAngle(std::numeric_limits<double>::infinity())));
+  EXPECT_TRUE(std::isnan(NormalizeAngle(-std::numeric_limits<double>::infinity())));
+  const double near = NormalizeAngleDifference(1e300, 0.5);
+  EXPECT_LE(std::fabs(near - 0.5), kPi);
+  double a = 100.0 * kPi + 0.3;  // within the loop's range: whole turns subtracted one by one
+  double looped = a;
+  while (looped > kPi) looped -= kTwoPi;
+  EXPECT_EQ(NormalizeAngle(a), looped);
 }
 
 TEST(KartoMath, NormalizeAngleKeepsPiAndWrapsTurns) {

@@ -355,6 +355,10 @@ TEST(CarmenReaderTest, NonNumberAndNonFiniteFields) {
             "mem.clf:1: ODOM has 9 fields, expects 10 (ODOM x y theta tv rv accel ipc_timestamp ipc_hostname "
             "logger_timestamp)");
   EXPECT_EQ(ErrorOf("ODOM 1 2 x 0 0 0 1 h 1\n"), "mem.clf:1: ODOM theta (field 4) is not a number: 'x'");
+  EXPECT_EQ(ErrorOf("ODOM 1 2 8.8e125 0 0 0 1 h 1\n"),
+            "mem.clf:1: ODOM theta (field 4) is not a heading in radians: 8.8e125 (|theta| must be <= 1e6)");
+  EXPECT_EQ(ErrorOf("FLASER 2 1.0 2.0 0 0 -2e6 0 0 0 1 h 1\n"),
+            "mem.clf:1: FLASER theta (field 7) is not a heading in radians: -2e6 (|theta| must be <= 1e6)");
   EXPECT_EQ(ErrorOf("PARAM a b\n"),
             "mem.clf:1: PARAM has 3 fields, expects at least 5 (PARAM name value ipc_hostname timestamp)");
   EXPECT_EQ(ErrorOf("PARAM laser_max_range big h 0\n" + Flaser(1)),

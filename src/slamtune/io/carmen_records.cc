@@ -58,9 +58,18 @@ void ParseTimes(const Fields& f, std::size_t i, double* ipc_time, double* logger
   *logger_time = Finite(f, i + 2, "logger_timestamp");
 }
 
+// No logger writes a heading of a million radians (159,000 turns, unwrapped); such a field is
+// corrupt, and would send every angle computed from it into whole-turn loops.
+constexpr double kMaxAbsHeadingRad = 1e6;
+
 Pose2 ParsePose(const Fields& f, std::size_t i, std::string_view prefix) {
   const std::string p(prefix);
-  return Pose2{Finite(f, i, p + "x"), Finite(f, i + 1, p + "y"), Finite(f, i + 2, p + "theta")};
+  const double theta = Finite(f, i + 2, p + "theta");
+  if (std::fabs(theta) > kMaxAbsHeadingRad) {
+    throw CarmenRecordError(Where(f, i + 2, p + "theta") + " is not a heading in radians: " + std::string(f[i + 2]) +
+                            " (|theta| must be <= 1e6)");
+  }
+  return Pose2{Finite(f, i, p + "x"), Finite(f, i + 1, p + "y"), theta};
 }
 
 // Refuses what no laser can mean (beam_geometry.h): start_angle or fov beyond a full turn, beams
