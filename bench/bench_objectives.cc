@@ -58,6 +58,7 @@ std::vector<Figure> Figures() {
       {"occupied cells", [](const EvaluationRecord& r) { return r.occupied_cells; }},
       {"corner clusters", [](const EvaluationRecord& r) { return r.corners; }},
       {"hits in free / hits", [](const EvaluationRecord& r) { return r.hits > 0 ? r.hits_in_free_cells / r.hits : 1.0; }},
+      {"n_w (drawn wall cells)", [](const EvaluationRecord& r) { return r.drawn_wall_cells; }},
   };
 }
 
@@ -152,6 +153,9 @@ int Run(int argc, char** argv) {
     label = log_path;
   }
   context.log = log;
+  slamtune::optim::DrawWall(context, true);
+  std::fprintf(stderr, "drawn wall: %zu of %zu scans drawn along each path\n",
+               context.trajectory_map->scan_indices().size(), log->scans.size());
   slamtune::optim::ShareWork(context, 512);
   const slamtune::optim::SearchSpace space =
       space_name == "loop" ? slamtune::optim::SearchSpace::AroundBase(context.base.loop_search_maximum_distance,
@@ -193,7 +197,8 @@ int Run(int argc, char** argv) {
 
   std::printf("\n| objectives | front size | broken in front | front error min..max m | knee error m | knee broken |\n"
               "|---|---|---|---|---|---|\n");
-  for (ObjectiveSetKind kind : {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kOccupied, ObjectiveSetKind::kPaper}) {
+  for (ObjectiveSetKind kind : {ObjectiveSetKind::kDrawn, ObjectiveSetKind::kOccupied, ObjectiveSetKind::kConsistency,
+                                ObjectiveSetKind::kPaper}) {
     const ObjectiveSet set(kind);
     const auto front = slamtune::optim::NonDominated(ok, set);
     double lo = 1e300, hi = 0;

@@ -25,7 +25,7 @@ expect_line() {
 space() { printf '%b' "$2" > "$work/$1.yaml"; echo "$work/$1.yaml"; }
 
 # An objective set that does not exist.
-expect_line "slamtune: error: --objectives: unknown objective set 'eta' (known: auto, consistency, occupied, paper)" \
+expect_line "slamtune: error: --objectives: unknown objective set 'eta' (known: auto, drawn, occupied, consistency, paper)" \
   "$bin" optimize --objectives eta
 
 # Parameters that cannot be searched, and search spaces the engine would refuse.

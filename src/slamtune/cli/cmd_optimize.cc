@@ -256,6 +256,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   auto context = probed && settings.space.fixed.empty()
                      ? probed
                      : MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
+  const bool draw_wall = settings.objectives.Uses(optim::Objective::kDrawnWallCells);
+  optim::DrawWall(*context, draw_wall);
   // The baseline is the base configuration itself: its values of the varied and the fixed parameters.
   for (const auto& d : settings.space.dimensions) settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);
   for (const auto& [name, value] : settings.space.fixed) {
@@ -276,7 +278,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   }
   if (!resume) settings.invocation = InvocationJson(args);
   if (workers) {
-    workers->Setup(WorkerSetup(args.inputs, settings.space.fixed, args.no_share, args.share_mb));
+    workers->Setup(WorkerSetup(args.inputs, settings.space.fixed, args.no_share, args.share_mb, draw_wall));
   }
 
   optim::EvaluationStore store(db_path);
@@ -382,10 +384,11 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--fix", args->fix, "hold a parameter at a value while --vary searches others, NAME=VALUE (repeatable)");
       app.add_option("--objectives", args->objectives,
                      "what the map is judged by: 'occupied' (unbacked hits u_h, corner pixels n_c and occupied "
-                     "cells n_o, which also sees a corridor mapped twice side by side), 'consistency' (u_h, n_c, "
-                     "enclosed areas n_e) or 'paper' (the seed paper's eta, n_c, n_e, which rewards a map for "
+                     "cells n_o, which also sees a corridor mapped twice side by side), 'drawn' (u_h, n_c and the "
+                     "wall n_w that the same scans of the log draw along each run's path), 'consistency' (u_h, "
+                     "n_c, enclosed areas n_e) or 'paper' (the seed paper's eta, n_c, n_e, which rewards a map for "
                      "breaking apart); 'auto': 'occupied' unless the search varies the node spacing, the laser "
-                     "range or the resolution (which change the count of wall cells), then 'consistency'")
+                     "range or the resolution (which change the count of wall cells), then 'drawn'")
           ->capture_default_str();
       app.add_flag("--no-early-stop", [args](std::int64_t) { args->settling.enabled = false; },
                    "run every generation of the budget instead of stopping once the answer has settled");

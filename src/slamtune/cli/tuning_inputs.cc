@@ -156,8 +156,9 @@ std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const Tuning
 }
 
 nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                           bool no_share, std::size_t share_mb) {
-  return {{"inputs", inputs.ToJson()}, {"fixed", fixed}, {"no_share", no_share}, {"share_mb", share_mb}};
+                           bool no_share, std::size_t share_mb, bool draw_wall) {
+  return {{"inputs", inputs.ToJson()}, {"fixed", fixed},        {"no_share", no_share},
+          {"share_mb", share_mb},      {"draw_wall", draw_wall}};
 }
 
 int ServeAsWorker(const optim::MpiWorld& world) {
@@ -165,6 +166,7 @@ int ServeAsWorker(const optim::MpiWorld& world) {
     const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), true);
     auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(),
                                          setup.at("no_share").get<bool>(), setup.at("share_mb").get<std::size_t>());
+    optim::DrawWall(*context, setup.at("draw_wall").get<bool>());
     return [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
   });
   return 0;

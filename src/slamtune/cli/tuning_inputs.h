@@ -85,7 +85,7 @@ std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const Tuning
 
 // What rank 0 sends the worker ranks (MpiDispatcher::Setup) so that they build the same context.
 nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                           bool no_share, std::size_t share_mb);
+                           bool no_share, std::size_t share_mb, bool draw_wall = false);
 
 // A worker rank under mpirun: builds its context from rank 0's WorkerSetup, evaluates what rank
 // 0 sends until told to stop, and returns 0.

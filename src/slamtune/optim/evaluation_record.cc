@@ -28,7 +28,8 @@ void to_json(nlohmann::json& j, const EvaluationRecord& r) {
                        {"occupied_cells", r.occupied_cells},
                        {"hits", r.hits},
                        {"hits_in_free_cells", r.hits_in_free_cells},
-                       {"hits_in_unknown_cells", r.hits_in_unknown_cells}}},
+                       {"hits_in_unknown_cells", r.hits_in_unknown_cells},
+                       {"drawn_wall_cells", r.drawn_wall_cells}}},
                      {"nodes", r.nodes},
                      {"loop_closures", r.loop_closures},
                      {"loop_scans", r.loop_scans},
@@ -60,6 +61,7 @@ void from_json(const nlohmann::json& j, EvaluationRecord& r) {
   r.hits = s.value("hits", 0.0);
   r.hits_in_free_cells = s.value("hits_in_free_cells", 0.0);
   r.hits_in_unknown_cells = s.value("hits_in_unknown_cells", 0.0);
+  r.drawn_wall_cells = s.value("drawn_wall_cells", 0.0);
   r.nodes = j.at("nodes").get<int>();
   r.loop_closures = j.at("loop_closures").get<int>();
   r.loop_scans = j.at("loop_scans").get<std::vector<int>>();

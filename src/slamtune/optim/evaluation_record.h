@@ -31,6 +31,9 @@ struct EvaluationRecord {
   double hits = 0.0;                  // scan end points counted in the map (slam/occupancy_grid.h)
   double hits_in_free_cells = 0.0;    // ... of them in cells the map ends up calling free
   double hits_in_unknown_cells = 0.0; // ... and in cells it leaves unknown
+  // Wall cells of the map the log's fixed scans draw along the run's path
+  // (metrics/trajectory_map.h), whatever the node spacing; 0 when the evaluation drew none.
+  double drawn_wall_cells = 0.0;
 
   int nodes = 0;
   int loop_closures = 0;

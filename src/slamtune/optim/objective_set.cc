@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -10,22 +11,23 @@
 namespace slamtune::optim {
 namespace {
 
-constexpr std::array<ObjectiveInfo, 5> kInfos = {{
+constexpr std::array<ObjectiveInfo, 6> kInfos = {{
     {Objective::kOccupiedRatio, "occupied_ratio", "eta", "occupied ratio (eta)", 1.0},
     {Objective::kCornerPixels, "corner_pixels", "n_c", "corner pixels (n_c)", 1e9},
     {Objective::kEnclosedAreas, "enclosed_areas", "n_e", "enclosed areas (n_e)", 1e9},
     // A share lies in [0, 1]; 2 is worse than any map.
     {Objective::kUnbackedHits, "unbacked_hits", "u_h", "unbacked hits (u_h)", 2.0},
     {Objective::kOccupiedCells, "occupied_cells", "n_o", "occupied cells (n_o)", 1e12},
+    {Objective::kDrawnWallCells, "drawn_wall_cells", "n_w", "wall the log's scans draw along the path (n_w)", 1e12},
 }};
 
-constexpr std::array<ObjectiveSetKind, 3> kKinds = {ObjectiveSetKind::kConsistency, ObjectiveSetKind::kOccupied,
-                                                    ObjectiveSetKind::kPaper};
+constexpr std::array<ObjectiveSetKind, 4> kKinds = {ObjectiveSetKind::kDrawn, ObjectiveSetKind::kOccupied,
+                                                    ObjectiveSetKind::kConsistency, ObjectiveSetKind::kPaper};
 
 }  // namespace
 
 ObjectiveSetKind DefaultObjectiveSetKind(bool search_varies_map_sampling) {
-  return search_varies_map_sampling ? ObjectiveSetKind::kConsistency : ObjectiveSetKind::kOccupied;
+  return search_varies_map_sampling ? ObjectiveSetKind::kDrawn : ObjectiveSetKind::kOccupied;
 }
 
 const ObjectiveInfo& InfoOf(Objective objective) {
@@ -54,6 +56,7 @@ double ValueOf(const EvaluationRecord& record, Objective objective) {
       if (!(record.hits > 0.0)) return 1.0;
       return (record.hits_in_free_cells + record.hits_in_unknown_cells) / record.hits;
     case Objective::kOccupiedCells: return record.occupied_cells;
+    case Objective::kDrawnWallCells: return record.drawn_wall_cells;
   }
   SLAMTUNE_CHECK(false);
   return 0.0;
@@ -67,6 +70,9 @@ ObjectiveSet::ObjectiveSet(ObjectiveSetKind kind) : kind_(kind) {
     case ObjectiveSetKind::kOccupied:
       objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kOccupiedCells};
       break;
+    case ObjectiveSetKind::kDrawn:
+      objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kDrawnWallCells};
+      break;
     case ObjectiveSetKind::kPaper:
       objectives_ = {Objective::kOccupiedRatio, Objective::kCornerPixels, Objective::kEnclosedAreas};
       break;
@@ -78,6 +84,7 @@ const char* ObjectiveSet::NameOf(ObjectiveSetKind kind) {
   switch (kind) {
     case ObjectiveSetKind::kConsistency: return "consistency";
     case ObjectiveSetKind::kOccupied: return "occupied";
+    case ObjectiveSetKind::kDrawn: return "drawn";
     case ObjectiveSetKind::kPaper: return "paper";
   }
   return "consistency";
@@ -117,6 +124,10 @@ bool ObjectiveSet::IsFailureScore(const std::vector<double>& scores) const {
     all_failure_scores = all_failure_scores && scores[k] >= InfoOf(objectives_[k]).failure_score;
   }
   return all_failure_scores;
+}
+
+bool ObjectiveSet::Uses(Objective objective) const {
+  return std::find(objectives_.begin(), objectives_.end(), objective) != objectives_.end();
 }
 
 std::string ObjectiveSet::Describe() const {

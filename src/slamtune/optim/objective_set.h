@@ -2,7 +2,8 @@
 // user chooses from (`slamtune optimize --objectives NAME`).
 //
 //   occupied     unbacked hits, n_c, occupied cells   (default when every run draws the same scans)
-//   consistency  unbacked hits, n_c, n_e              (default when the search varies node spacing)
+//   drawn        unbacked hits, n_c, drawn wall cells (default when the search varies node spacing)
+//   consistency  unbacked hits, n_c, n_e
 //   paper        eta, n_c, n_e (Han et al., Sensors 2020, §3)
 //
 // Why the defaults replace the paper's eta: eta = occupied cells / all cells of the image, so a
@@ -18,6 +19,10 @@
 // holds more wall than the building has. The count of occupied cells sees that (mit-killian);
 // it also falls when sparser nodes draw fewer walls, so it is biased wherever the search varies
 // the node spacing (docs/metrics.md, "Where u_h, n_c and n_e fail").
+//
+// Why `drawn` exists: the count of wall cells that the same fixed scans of the log draw along each
+// run's path (metrics/trajectory_map.h) sees the same doubled walls without depending on the node
+// spacing, the laser range or the cell size a run uses.
 #pragma once
 
 #include <string>
@@ -27,7 +32,7 @@
 
 namespace slamtune::optim {
 
-enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedHits, kOccupiedCells };
+enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedHits, kOccupiedCells, kDrawnWallCells };
 
 struct ObjectiveInfo {
   Objective id;
@@ -44,12 +49,13 @@ const std::vector<Objective>& AllObjectives();
 // The objective's value for an ok record (no failure scoring).
 double ValueOf(const EvaluationRecord& record, Objective objective);
 
-enum class ObjectiveSetKind { kConsistency, kOccupied, kPaper };
+enum class ObjectiveSetKind { kConsistency, kOccupied, kDrawn, kPaper };
 
 // The set `optimize` uses when the user names none: 'occupied' when every run draws its map
 // from the same scans at the same cell size (SearchSpace::VariesMapSampling() false: the count
-// of occupied cells then compares maps), else 'consistency' (fewer nodes draw fewer wall cells,
-// so the count would reward sparse, worse maps). Measured in docs/metrics.md.
+// of occupied cells then compares maps), else 'drawn' (fewer nodes draw fewer wall cells, so
+// the map's own count would reward sparse, worse maps; the drawn wall is counted on the same
+// scans for every run). Measured in docs/metrics.md.
 ObjectiveSetKind DefaultObjectiveSetKind(bool search_varies_map_sampling);
 
 class ObjectiveSet {
@@ -57,17 +63,19 @@ class ObjectiveSet {
   ObjectiveSet() : ObjectiveSet(ObjectiveSetKind::kConsistency) {}
   explicit ObjectiveSet(ObjectiveSetKind kind);
 
-  // The set called `name` ("consistency", "occupied" or "paper"); InputError naming the known sets.
+  // The set called `name` ("drawn", "occupied", "consistency" or "paper"); InputError naming the known sets.
   static ObjectiveSet Parse(const std::string& name);
-  // "consistency", "occupied", "paper".
+  // "drawn", "occupied", "consistency", "paper".
   static const char* NameOf(ObjectiveSetKind kind);
-  // The names a user may give, for help texts: "consistency, occupied, paper".
+  // The names a user may give, for help texts: "drawn, occupied, consistency, paper".
   static std::string KnownNames();
 
   ObjectiveSetKind kind() const { return kind_; }
   const char* name() const { return NameOf(kind_); }
   const std::vector<Objective>& objectives() const { return objectives_; }
   std::size_t size() const { return objectives_.size(); }
+  // Whether `objective` is one of the set's (kDrawnWallCells needs the evaluation's trajectory map).
+  bool Uses(Objective objective) const;
 
   // The vector NSGA-III minimises, in objectives() order. A failed record is scored worst on
   // every objective (each InfoOf(..).failure_score), so the optimisation goes on.

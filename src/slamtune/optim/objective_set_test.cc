@@ -43,9 +43,18 @@ TEST(ObjectiveSet, TheOccupiedSetCountsWallCellsSoATwiceMappedCorridorScoresWors
   EXPECT_EQ(ObjectiveSet().Score(once), ObjectiveSet().Score(twice));
 }
 
+TEST(ObjectiveSet, TheDrawnSetReadsTheWallDrawnAlongThePath) {
+  EvaluationRecord r = Record(1000, 30, 20);
+  r.drawn_wall_cells = 30500;
+  const ObjectiveSet drawn(ObjectiveSetKind::kDrawn);
+  EXPECT_EQ(drawn.Score(r), (std::vector<double>{0.05, 1200, 30500}));
+  EXPECT_TRUE(drawn.Uses(Objective::kDrawnWallCells));
+  EXPECT_FALSE(ObjectiveSet(ObjectiveSetKind::kOccupied).Uses(Objective::kDrawnWallCells));
+}
+
 TEST(ObjectiveSet, TheAutomaticChoiceCountsCellsOnlyWhenEveryRunDrawsTheSameScans) {
   EXPECT_EQ(DefaultObjectiveSetKind(false), ObjectiveSetKind::kOccupied);
-  EXPECT_EQ(DefaultObjectiveSetKind(true), ObjectiveSetKind::kConsistency);
+  EXPECT_EQ(DefaultObjectiveSetKind(true), ObjectiveSetKind::kDrawn);
 }
 
 TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
@@ -60,7 +69,7 @@ TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
 TEST(ObjectiveSet, FailedRunsScoreWorseThanAnyMapAndAreRecognised) {
   const auto failed = EvaluationRecord::Failed("k", {}, "solver diverged");
   for (const ObjectiveSet& set : {ObjectiveSet(ObjectiveSetKind::kConsistency), ObjectiveSet(ObjectiveSetKind::kOccupied),
-                                  ObjectiveSet(ObjectiveSetKind::kPaper)}) {
+                                  ObjectiveSet(ObjectiveSetKind::kDrawn), ObjectiveSet(ObjectiveSetKind::kPaper)}) {
     SCOPED_TRACE(set.name());
     const auto score = set.Score(failed);
     EXPECT_TRUE(set.IsFailureScore(score));
@@ -76,11 +85,12 @@ TEST(ObjectiveSet, ParsesNamesAndRefusesUnknownOnes) {
   EXPECT_EQ(ObjectiveSet::Parse("paper").kind(), ObjectiveSetKind::kPaper);
   EXPECT_EQ(ObjectiveSet::Parse("consistency").kind(), ObjectiveSetKind::kConsistency);
   EXPECT_EQ(ObjectiveSet::Parse("occupied").kind(), ObjectiveSetKind::kOccupied);
+  EXPECT_EQ(ObjectiveSet::Parse("drawn").kind(), ObjectiveSetKind::kDrawn);
   try {
     ObjectiveSet::Parse("eta");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown objective set 'eta' (known: consistency, occupied, paper)"));
+    EXPECT_THAT(e.what(), HasSubstr("unknown objective set 'eta' (known: drawn, occupied, consistency, paper)"));
   }
 }
 
@@ -89,7 +99,9 @@ TEST(ObjectiveSet, DescribesItselfInWords) {
   EXPECT_STREQ(InfoOf(Objective::kOccupiedRatio).key, "occupied_ratio");
   EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kOccupied).Describe(),
             "unbacked hits (u_h), corner pixels (n_c) and occupied cells (n_o)");
-  EXPECT_EQ(AllObjectives().size(), 5u);
+  EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kDrawn).Describe(),
+            "unbacked hits (u_h), corner pixels (n_c) and wall the log's scans draw along the path (n_w)");
+  EXPECT_EQ(AllObjectives().size(), 6u);
 }
 
 }  // namespace

@@ -71,6 +71,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
     scores->grid = grid.summary();
     scores->quality = metrics::ComputeMapQuality(run.map, context.metrics);
     if (!context.relations.empty()) scores->error = metrics::ComputeGtError(run.trajectory, context.relations);
+    if (context.trajectory_map) scores->drawn = context.trajectory_map->Draw(run.trajectory).summary();
     if (use_cache) context.map_scores->Insert(std::move(key), *scores);
   }
   const metrics::MapQuality& quality = scores->quality;
@@ -87,6 +88,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   record.hits = static_cast<double>(scores->grid.hits);
   record.hits_in_free_cells = static_cast<double>(scores->grid.hits_in_free_cells);
   record.hits_in_unknown_cells = static_cast<double>(scores->grid.hits_in_unknown_cells);
+  record.drawn_wall_cells = static_cast<double>(scores->drawn.occupied_cells);
   record.nodes = run.summary.nodes;
   record.loop_closures = static_cast<int>(run.summary.loop_closures.size());
   for (const auto& loop : run.summary.loop_closures) record.loop_scans.push_back(loop.log_index);
@@ -127,6 +129,15 @@ CandidateMap RenderSlamMap(const SlamEvaluationContext& context, const Assignmen
   out.path.reserve(scans.size());
   for (const slam::LaserScan& scan : scans) out.path.emplace_back(scan.corrected_pose().x, scan.corrected_pose().y);
   return out;
+}
+
+void DrawWall(SlamEvaluationContext& context, bool on) {
+  SLAMTUNE_CHECK(context.log != nullptr);
+  if (!on) {
+    context.trajectory_map = nullptr;
+  } else if (context.trajectory_map == nullptr) {
+    context.trajectory_map = std::make_shared<const metrics::TrajectoryMap>(context.log, context.base);
+  }
 }
 
 void ShareWork(SlamEvaluationContext& context, std::size_t share_mb) {

@@ -11,6 +11,7 @@
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/relations.h"
 #include "slamtune/metrics/map_quality.h"
+#include "slamtune/metrics/trajectory_map.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/map_score_cache.h"
@@ -39,6 +40,9 @@ struct SlamEvaluationContext {
   std::shared_ptr<slam::SolveCache> solve_cache;
   // Scan barycentres shared by the runs (slam/barycenter_cache.h); null: none. Same results.
   std::shared_ptr<slam::BarycenterCache> barycenter_cache;
+  // The fixed scans every run's path draws for the drawn wall (metrics/trajectory_map.h,
+  // objective n_w); null: EvaluationRecord::drawn_wall_cells stays 0 (the map is not drawn).
+  std::shared_ptr<const metrics::TrajectoryMap> trajectory_map;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;
@@ -48,6 +52,10 @@ struct SlamEvaluationContext {
 // matches (budget share_mb MB), back-end solves (share_mb / 2), map scores of final states
 // (share_mb / 4) and scan barycentres (share_mb / 8), each at least 1 MB. share_mb > 0.
 void ShareWork(SlamEvaluationContext& context, std::size_t share_mb);
+// Gives `context` the trajectory map (metrics/trajectory_map.h, drawn with the context's base
+// parameters) when `on` — the objectives use the drawn wall (ObjectiveSet::Uses) — and takes it
+// away when not, so no run pays for a map nothing reads.
+void DrawWall(SlamEvaluationContext& context, bool on);
 // One line per cache with its counters, or that sharing is off.
 std::string SharedWorkReport(const SlamEvaluationContext& context);
 // The match cache in a few words for progress lines, e.g. "matches: 97.9% of 1.2 M shared,

@@ -205,6 +205,38 @@ TEST(SlamEvaluation, AnEmptyMapIsAFailedRun) {
   EXPECT_EQ(EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}}).status, "ok");
 }
 
+// The drawn wall (objective n_w) is counted only when asked for, and it ranks runs of other node
+// spacings by their error where the run's own map cannot: sparser nodes draw fewer scans into
+// their own map, so it shrinks, while the same scans of the log drawn along the sparser, worse
+// path make more wall.
+TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
+  sim::SimulationOptions o;
+  o.world = "office";
+  sim::Simulation s = sim::Simulate(o);
+  s.log.scans.resize(std::min<std::size_t>(s.log.scans.size(), 1200));
+  SlamEvaluationContext context;
+  context.log = std::make_shared<const io::LaserLog>(s.log);
+  context.relations = s.relations;
+  const Assignment dense_set = {{"minimum_travel_distance", 0.2}};
+  const Assignment sparse_set = {{"minimum_travel_distance", 1.5}, {"minimum_travel_heading", 1.0}};
+  EXPECT_EQ(EvaluateSlam(context, dense_set).drawn_wall_cells, 0.0);
+  DrawWall(context, true);
+  ASSERT_NE(context.trajectory_map, nullptr);
+  const EvaluationRecord dense = EvaluateSlam(context, dense_set);
+  const EvaluationRecord sparse = EvaluateSlam(context, sparse_set);
+  ASSERT_EQ(dense.status, "ok");
+  ASSERT_EQ(sparse.status, "ok");
+  ASSERT_TRUE(dense.has_gt && sparse.has_gt);
+  std::printf("error %.4f -> %.4f m; own map %.0f -> %.0f cells; drawn wall %.0f -> %.0f cells\n", dense.trans_mean_m,
+              sparse.trans_mean_m, dense.occupied_cells, sparse.occupied_cells, dense.drawn_wall_cells,
+              sparse.drawn_wall_cells);
+  ASSERT_GT(sparse.trans_mean_m, dense.trans_mean_m * 1.2) << "the sparse run is not worse: the test checks nothing";
+  EXPECT_LT(sparse.occupied_cells, dense.occupied_cells);      // the own map calls the worse run cleaner
+  EXPECT_GT(sparse.drawn_wall_cells, dense.drawn_wall_cells);  // the drawn wall does not
+  DrawWall(context, false);
+  EXPECT_EQ(context.trajectory_map, nullptr);
+}
+
 // The report's map of a parameter set carries one loop edge per loop closure of its evaluation,
 // both ends inside the map.
 TEST(SlamEvaluation, RenderedMapCarriesTheLoopClosuresAsEdges) {
