@@ -1,4 +1,4 @@
-// Shared scan matches (slam/match_cache.h) on an optimiser-sized batch: N parameter sets drawn
+// Shared scan matches (slam/sharing/match_cache.h) on an optimiser-sized batch: N parameter sets drawn
 // as `slamtune optimize` draws its initial population (r uniform in [2, 6] m, integer g in
 // [6, 20], pagmo's generator from --seed) are evaluated (a) each on its own, without the
 // cache, and (b) as one batch sharing the cache, both on --jobs threads. Checks that every

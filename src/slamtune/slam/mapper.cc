@@ -204,7 +204,7 @@ MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<cons
                                    double threshold) {
   if (!skip_unlinkable_near_chains_) return MatchWith(MatchRole::kSequential, scan, base, false, true);
   // A match proven unable to exceed the threshold would be computed only to be discarded
-  // (response_bound.h). With a match cache the proof is stored like a result, so a run
+  // (fast_matching/response_bound.h). With a match cache the proof is stored like a result, so a run
   // repeating this call pays for neither.
   const auto may_exceed = [&] { return near_chain_bound_->MayExceed(scan, base, threshold); };
   if (match_cache_) return match_cache_->MatchAbove(*sequential_matcher_, scan, base, false, true, threshold, may_exceed);

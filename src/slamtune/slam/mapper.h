@@ -10,10 +10,10 @@
 // copy changes later decisions only (e.g. the loop-closure parameters r, g, p, q), so an
 // optimiser can fork the state where decisions start to differ.
 //
-// Shared match results: with a MatchCache (match_cache.h) every matcher call (sequential,
+// Shared match results: with a MatchCache (sharing/match_cache.h) every matcher call (sequential,
 // near chain, loop coarse, loop fine) goes through the cache, so runs of the same log that
-// share it reuse each other's identical matches; with a SolveCache (solve_cache.h) likewise
-// every CorrectPoses solve, and with a BarycenterCache (barycenter_cache.h) every barycentre a
+// share it reuse each other's identical matches; with a SolveCache (sharing/solve_cache.h) likewise
+// every CorrectPoses solve, and with a BarycenterCache (sharing/barycenter_cache.h) every barycentre a
 // reference pose needs. Results are bit-identical with or without them.
 #pragma once
 
@@ -25,17 +25,17 @@
 #include <optional>
 #include <vector>
 
-#include "slamtune/slam/barycenter_cache.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
+#include "slamtune/slam/fast_matching/response_bound.h"
 #include "slamtune/slam/front_end.h"
 #include "slamtune/slam/laser_scan.h"
-#include "slamtune/slam/match_cache.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/pose_graph.h"
-#include "slamtune/slam/pose_graph_solver.h"
-#include "slamtune/slam/response_bound.h"
 #include "slamtune/slam/run_trace.h"
 #include "slamtune/slam/scan_matcher.h"
-#include "slamtune/slam/solve_cache.h"
+#include "slamtune/slam/sharing/barycenter_cache.h"
+#include "slamtune/slam/sharing/match_cache.h"
+#include "slamtune/slam/sharing/solve_cache.h"
 
 namespace slamtune::slam {
 
@@ -79,7 +79,7 @@ struct MapperCounters {
   std::array<int, kNumEdgeKinds> edges_added{};
   std::array<int, kNumEdgeKinds> duplicate_edges{};  // LinkScans calls dropped as duplicates (§5.1)
   int near_chain_matches = 0;                        // near chains tested (size >= g)
-  int near_chain_matches_skipped = 0;                // of those, proven unable to link (response_bound.h)
+  int near_chain_matches_skipped = 0;                // of those, proven unable to link (fast_matching/response_bound.h)
   int loop_attempts = 0;
   int loops_closed = 0;
 
@@ -112,7 +112,7 @@ class Mapper {
   void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { barycenter_cache_ = std::move(cache); }
 
   // Skip the near-chain matches proven unable to reach link_match_minimum_response_fine
-  // (response_bound.h). On by default; results are identical either way (tested), off is
+  // (fast_matching/response_bound.h). On by default; results are identical either way (tested), off is
   // for tests and timing.
   void set_skip_unlinkable_near_chains(bool on) { skip_unlinkable_near_chains_ = on; }
 

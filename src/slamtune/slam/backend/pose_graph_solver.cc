@@ -1,13 +1,13 @@
-#include "slamtune/slam/pose_graph_solver.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "slamtune/common/error.h"
-#include "slamtune/slam/ceres_solver.h"
-#include "slamtune/slam/spa_solver.h"
-#include "slamtune/slam/spa_system.h"
+#include "slamtune/slam/backend/ceres_solver.h"
+#include "slamtune/slam/backend/spa_solver.h"
+#include "slamtune/slam/backend/spa_system.h"
 
 namespace slamtune::slam {
 

@@ -1,10 +1,10 @@
-#include "slamtune/slam/ceres_solver.h"
+#include "slamtune/slam/backend/ceres_solver.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
-#include "slamtune/slam/spa_solver.h"
+#include "slamtune/slam/backend/spa_solver.h"
 #include "slamtune/slam/testing/ring_graph.h"
 
 namespace slamtune::slam {

@@ -1,4 +1,4 @@
-#include "slamtune/slam/barycenter_cache.h"
+#include "slamtune/slam/sharing/barycenter_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -41,7 +41,7 @@ TEST(BarycenterCache, ServesTheSameScanAtTheSamePoseBitForBit) {
   EXPECT_EQ(cache.counters().hits, 1u);
   ASSERT_TRUE(second.barycenter_known());
   EXPECT_TRUE(SameBits(second.barycenter(), OwnBarycenter(scan, pose)));
-  // The readout computed later agrees with the served barycentre (it checks, laser_scan.h).
+  // The readout computed later agrees with the served barycentre (it checks, slam/laser_scan.h).
   EXPECT_EQ(second.filtered_points().size(), first.filtered_points().size());
   // Known already: nothing looked up.
   cache.Provide(second);

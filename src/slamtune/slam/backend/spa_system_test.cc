@@ -1,4 +1,4 @@
-#include "slamtune/slam/spa_system.h"
+#include "slamtune/slam/backend/spa_system.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

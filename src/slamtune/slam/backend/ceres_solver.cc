@@ -1,4 +1,4 @@
-#include "slamtune/slam/ceres_solver.h"
+#include "slamtune/slam/backend/ceres_solver.h"
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>

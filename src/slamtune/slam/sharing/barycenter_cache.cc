@@ -1,4 +1,4 @@
-#include "slamtune/slam/barycenter_cache.h"
+#include "slamtune/slam/sharing/barycenter_cache.h"
 
 #include <fmt/format.h>
 

@@ -1,12 +1,12 @@
-#include "slamtune/slam/spa_solver.h"
+#include "slamtune/slam/backend/spa_solver.h"
 
 #include <Eigen/Core>
 
 #include <cmath>
 
 #include "slamtune/common/karto_math.h"
-#include "slamtune/slam/sparse_cholesky.h"
-#include "slamtune/slam/spa_system.h"
+#include "slamtune/slam/backend/spa_system.h"
+#include "slamtune/slam/backend/sparse_cholesky.h"
 
 namespace slamtune::slam {
 namespace {

@@ -9,7 +9,7 @@
 // compared word for word: the laser geometry's words (GeometryKeyWords), the address of the
 // scan's immutable readings (held by the cache, so the address cannot be reused while it lives)
 // and the bits of the corrected pose. The scan checks a provided barycentre against its own
-// when it later computes its readout (laser_scan.h), so a wrong entry would fail loudly.
+// when it later computes its readout (slam/laser_scan.h), so a wrong entry would fail loudly.
 //
 // Thread-safe. Memory is bounded by a byte budget; when it would be exceeded the least recently
 // used half of the entries is dropped (a hit counts as a use). Whether an entry was kept

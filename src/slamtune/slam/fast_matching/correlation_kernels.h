@@ -1,6 +1,6 @@
 // Inner kernels of the correlative search (docs/engine.md §4.5), shared by the
 // exhaustive search (correlation_search.cc) and the branch and bound (pruned_search.cc).
-// Internal to the slam folder.
+// Internal to fast_matching/.
 //
 // A coarse lattice row has its candidates two cells apart, so for one beam the bytes of a
 // block of 8, 16 or 32 candidates are one contiguous run of memory. SumBlock keeps 16-bit

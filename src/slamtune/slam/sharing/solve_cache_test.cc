@@ -1,4 +1,4 @@
-#include "slamtune/slam/solve_cache.h"
+#include "slamtune/slam/sharing/solve_cache.h"
 
 #include <gtest/gtest.h>
 

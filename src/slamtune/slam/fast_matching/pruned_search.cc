@@ -1,4 +1,4 @@
-#include "slamtune/slam/pruned_search.h"
+#include "slamtune/slam/fast_matching/pruned_search.h"
 
 #include <algorithm>
 #include <bit>
@@ -6,7 +6,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/slam/correlation_grid.h"
-#include "slamtune/slam/correlation_kernels.h"
+#include "slamtune/slam/fast_matching/correlation_kernels.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

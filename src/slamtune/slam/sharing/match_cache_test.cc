@@ -1,4 +1,4 @@
-#include "slamtune/slam/match_cache.h"
+#include "slamtune/slam/sharing/match_cache.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "slamtune/slam/pose_graph_solver.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
 
 namespace slamtune::slam {
 

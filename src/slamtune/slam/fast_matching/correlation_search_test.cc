@@ -1,5 +1,5 @@
-#include "slamtune/slam/correlation_search.h"
-#include "slamtune/slam/correlation_kernels.h"
+#include "slamtune/slam/fast_matching/correlation_search.h"
+#include "slamtune/slam/fast_matching/correlation_kernels.h"
 
 #include <gtest/gtest.h>
 

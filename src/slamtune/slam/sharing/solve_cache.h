@@ -6,11 +6,11 @@
 //
 // Exactness, as in match_cache.h: an entry is keyed by everything the solve depends on,
 // compared word for word (the hash only picks the bucket): the back-end's name and loss (the
-// solvers are built from those alone, pose_graph_solver.h), the bits of every node value, and
+// solvers are built from those alone, slam/backend/pose_graph_solver.h), the bits of every node value, and
 // every edge's source, target, measurement and information bits in order. An entry holds the
 // optimised node values and SolveSummary (its wall_s is the caller's to set) and, when the
 // caller gives them, the barycentres of the scans at those poses, so that a run taking the
-// stored solve need not recompute every scan's point readout to find them (laser_scan.h); the
+// stored solve need not recompute every scan's point readout to find them (slam/laser_scan.h); the
 // mapper then appends the laser geometry's words to the key. Like the MatchCache, a SolveCache
 // must only be shared by runs of the same log.
 //
@@ -32,8 +32,8 @@
 
 #include "slamtune/common/key_words.h"
 #include "slamtune/common/pose2.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
 #include "slamtune/slam/pose_graph.h"
-#include "slamtune/slam/pose_graph_solver.h"
 
 namespace slamtune::slam {
 

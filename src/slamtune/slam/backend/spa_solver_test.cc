@@ -1,4 +1,4 @@
-#include "slamtune/slam/spa_solver.h"
+#include "slamtune/slam/backend/spa_solver.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "slamtune/slam/sparse_cholesky.h"
+#include "slamtune/slam/backend/sparse_cholesky.h"
 
 #include <gtest/gtest.h>
 

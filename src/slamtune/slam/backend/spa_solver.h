@@ -11,7 +11,7 @@
 // as slam_karto's and the later decisions of the front end are the same.
 #pragma once
 
-#include "slamtune/slam/pose_graph_solver.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
 
 namespace slamtune::slam {
 
