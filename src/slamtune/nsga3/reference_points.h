@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 using ReferencePoints = std::vector<std::vector<double>>;
 
@@ -40,4 +40,4 @@ ReferencePoints LayeredReferencePoints(std::size_t objectives, std::size_t bound
 // InputError naming `field`, the offending point index and the rule.
 void ValidateReferencePoints(const ReferencePoints& points, std::size_t objectives, const char* field);
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,4 +1,4 @@
-#include "slamtune/optim/reference_points.h"
+#include "slamtune/nsga3/reference_points.h"
 
 #include <cmath>
 #include <random>
@@ -9,7 +9,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 // Upper bound on the number of reference points: beyond this, memory and the O(N H)
@@ -87,4 +87,4 @@ void ValidateReferencePoints(const ReferencePoints& points, std::size_t objectiv
   }
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 struct NormalizationOptions {
   // Off-axis weight of the ASF used to find the extreme points (eq. 4); dimensionless, > 0
@@ -70,4 +70,4 @@ Normalization ComputeNormalization(const std::vector<std::vector<double>>& candi
                                    const std::vector<std::size_t>& first_front, const NormalizationOptions& options,
                                    const std::vector<double>& earlier_ideal = {});
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 // IGD of `obtained` against `targets` (both non-empty, one common dimension).
 double InvertedGenerationalDistance(const std::vector<std::vector<double>>& targets,
@@ -22,4 +22,4 @@ std::vector<std::vector<double>> TargetsOnSimplex(const std::vector<std::vector<
 // Where each direction (non-zero) meets the unit sphere |f| = 1.
 std::vector<std::vector<double>> TargetsOnUnitSphere(const std::vector<std::vector<double>>& directions);
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,11 +1,11 @@
-#include "slamtune/optim/nsga3_survival.h"
+#include "slamtune/nsga3/nsga3_survival.h"
 
 #include <pagmo/utils/multi_objective.hpp>
 
 #include "slamtune/common/error.h"
-#include "slamtune/optim/niching.h"
+#include "slamtune/nsga3/niching.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objectives, std::size_t n,
                                const ReferencePoints& reference_points, const NormalizationOptions& options,
@@ -53,4 +53,4 @@ SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objective
   return result;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

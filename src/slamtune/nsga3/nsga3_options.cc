@@ -1,4 +1,4 @@
-#include "slamtune/optim/nsga3_options.h"
+#include "slamtune/nsga3/nsga3_options.h"
 
 #include <algorithm>
 
@@ -6,7 +6,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 void Nsga3Options::Validate() const {
   if (reference_points.empty() && divisions < 1) {
@@ -35,4 +35,4 @@ std::size_t Nsga3Options::RequiredPopulationSize(std::size_t objectives) const {
   return std::max<std::size_t>(4, (h + 3) / 4 * 4);  // §V-A: smallest multiple of 4 >= H
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,4 +1,4 @@
-#include "slamtune/optim/reference_points.h"
+#include "slamtune/nsga3/reference_points.h"
 
 #include <cmath>
 #include <set>
@@ -8,7 +8,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 using ::testing::HasSubstr;
@@ -90,4 +90,4 @@ TEST(ValidateReferencePoints, RejectsBadPointsNamingFieldAndIndex) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

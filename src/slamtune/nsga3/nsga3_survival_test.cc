@@ -1,9 +1,9 @@
-#include "slamtune/optim/nsga3_survival.h"
+#include "slamtune/nsga3/nsga3_survival.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 using ::testing::ElementsAre;
@@ -50,4 +50,4 @@ TEST(SelectSurvivors, NichingSpreadsTheLastFrontOverTheReferenceLines) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

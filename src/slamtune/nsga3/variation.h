@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 using Bounds = std::pair<std::vector<double>, std::vector<double>>;  // (lower, upper), as pagmo
 
@@ -51,4 +51,4 @@ std::vector<std::vector<double>> MakeOffspring(const std::vector<std::vector<dou
                                                const Bounds& bounds, std::size_t nix,
                                                const VariationOptions& options, std::mt19937& rng);
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,4 +1,4 @@
-#include "slamtune/optim/niching.h"
+#include "slamtune/nsga3/niching.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 // Uniform index in [0, size), size >= 1.
@@ -110,4 +110,4 @@ NicheSelection SelectByNiching(std::size_t count, std::vector<std::size_t> niche
   return result;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -5,11 +5,11 @@
 
 #include <cstddef>
 
-#include "slamtune/optim/normalization.h"
-#include "slamtune/optim/reference_points.h"
-#include "slamtune/optim/variation.h"
+#include "slamtune/nsga3/normalization.h"
+#include "slamtune/nsga3/reference_points.h"
+#include "slamtune/nsga3/variation.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 struct Nsga3Options {
   // Generations run by one evolve() call; 0 returns the population unchanged.
@@ -48,4 +48,4 @@ struct Nsga3Options {
   std::size_t RequiredPopulationSize(std::size_t objectives) const;
 };
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -14,7 +14,7 @@
 #include <random>
 #include <vector>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 // Perpendicular distance from `point` to the line through the origin with direction
 // `direction` (non-zero): |point - (w.point / w.w) w|.
@@ -45,4 +45,4 @@ NicheSelection SelectByNiching(std::size_t count, std::vector<std::size_t> niche
                                const std::vector<std::size_t>& last_front, const Association& association,
                                std::mt19937& rng);
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -14,10 +14,10 @@
 #include <random>
 #include <vector>
 
-#include "slamtune/optim/normalization.h"
-#include "slamtune/optim/reference_points.h"
+#include "slamtune/nsga3/normalization.h"
+#include "slamtune/nsga3/reference_points.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 // What the survival step did and why.
 struct SurvivalResult {
@@ -37,4 +37,4 @@ SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objective
                                const ReferencePoints& reference_points, const NormalizationOptions& options,
                                std::mt19937& rng, const std::vector<double>& earlier_ideal = {});
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

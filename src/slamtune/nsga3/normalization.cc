@@ -1,4 +1,4 @@
-#include "slamtune/optim/normalization.h"
+#include "slamtune/nsga3/normalization.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 // Relative accuracy demanded of the hyperplane solve E b = 1; a larger residual means the
@@ -164,4 +164,4 @@ Normalization ComputeNormalization(const std::vector<std::vector<double>>& candi
   return result;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

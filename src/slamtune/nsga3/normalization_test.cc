@@ -1,11 +1,11 @@
-#include "slamtune/optim/normalization.h"
+#include "slamtune/nsga3/normalization.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 using ::testing::ElementsAre;
@@ -148,4 +148,4 @@ TEST(NormalizationOptions, RejectsInvalidValuesNamingTheField) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,4 +1,4 @@
-#include "slamtune/optim/niching.h"
+#include "slamtune/nsga3/niching.h"
 
 #include <cmath>
 #include <set>
@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 using ::testing::ElementsAre;
@@ -97,4 +97,4 @@ TEST(SelectByNiching, SameSeedSameChoice) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

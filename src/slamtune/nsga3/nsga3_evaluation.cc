@@ -1,4 +1,4 @@
-#include "slamtune/optim/nsga3_evaluation.h"
+#include "slamtune/nsga3/nsga3_evaluation.h"
 
 #include <cmath>
 #include <limits>
@@ -9,7 +9,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 // slot_of value of an offspring whose fitness was copied from the population.
@@ -83,4 +83,4 @@ OffspringEvaluation EvaluateOffspring(const pagmo::problem& problem, const std::
   return result;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,6 +1,6 @@
 // Fitness evaluation of an offspring population for NSGA-III, without duplicate work.
 //
-// Tuning runs pay seconds to minutes per evaluation (a whole SLAM run), and integer genes
+// Expensive problems pay seconds to minutes per evaluation (slamtune's: a whole SLAM run), and integer genes
 // make identical children common, so a genotype whose fitness is already known is never
 // evaluated again: an offspring equal (bit for bit, after integer repair) to a member of the
 // current population copies that member's fitness, and an offspring equal to an earlier
@@ -18,7 +18,7 @@
 #include <pagmo/bfe.hpp>
 #include <pagmo/problem.hpp>
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 // What the evaluation did.
 struct OffspringEvaluation {
@@ -36,4 +36,4 @@ OffspringEvaluation EvaluateOffspring(const pagmo::problem& problem, const std::
                                       const std::vector<std::vector<double>>& population_f,
                                       const std::vector<std::vector<double>>& offspring);
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

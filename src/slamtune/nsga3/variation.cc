@@ -1,4 +1,4 @@
-#include "slamtune/optim/variation.h"
+#include "slamtune/nsga3/variation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 void RequireInRange(const char* field, double value, double low, double high) {
@@ -66,4 +66,4 @@ std::vector<std::vector<double>> MakeOffspring(const std::vector<std::vector<dou
   return children;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

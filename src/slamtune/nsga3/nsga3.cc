@@ -1,4 +1,4 @@
-#include "slamtune/optim/nsga3.h"
+#include "slamtune/nsga3/nsga3.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <fmt/format.h>
 
 #include "slamtune/common/error.h"
-#include "slamtune/optim/nsga3_evaluation.h"
-#include "slamtune/optim/nsga3_survival.h"
+#include "slamtune/nsga3/nsga3_evaluation.h"
+#include "slamtune/nsga3/nsga3_survival.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 // Rejects problems NSGA-III cannot run on.
@@ -221,4 +221,4 @@ pagmo::population Nsga3::evolve(pagmo::population pop) const {
   return pop;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

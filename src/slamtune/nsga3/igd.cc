@@ -1,4 +1,4 @@
-#include "slamtune/optim/igd.h"
+#include "slamtune/nsga3/igd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 double InvertedGenerationalDistance(const std::vector<std::vector<double>>& targets,
                                     const std::vector<std::vector<double>>& obtained) {
@@ -50,4 +50,4 @@ std::vector<std::vector<double>> TargetsOnUnitSphere(const std::vector<std::vect
   return targets;
 }
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -13,7 +13,7 @@
 // of each objective; the price is choosing the reference points (reference_points.h).
 //
 // Usage, composing with pagmo:
-//   optim::Nsga3 nsga3(options, /*seed=*/42);
+//   nsga3::Nsga3 nsga3(options, /*seed=*/42);
 //   pagmo::population pop(problem, nsga3.RequiredPopulationSize(problem.get_nobj()), 7);
 //   pop = nsga3.evolve(pop);            // or pagmo::algorithm(nsga3).evolve(pop)
 //   nsga3.summary().BriefReport();      // via algorithm.extract<Nsga3>() when wrapped
@@ -35,10 +35,10 @@
 #include <pagmo/population.hpp>
 #include <pagmo/rng.hpp>
 
-#include "slamtune/optim/normalization.h"
-#include "slamtune/optim/nsga3_options.h"
+#include "slamtune/nsga3/normalization.h"
+#include "slamtune/nsga3/nsga3_options.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 
 // One generation of a run.
 struct GenerationRecord {
@@ -131,4 +131,4 @@ class Nsga3 {
 
 const char* ToString(StopReason reason);
 
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,4 +1,4 @@
-#include "slamtune/optim/nsga3.h"
+#include "slamtune/nsga3/nsga3.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +13,10 @@
 #include <pagmo/utils/multi_objective.hpp>
 
 #include "slamtune/common/error.h"
-#include "slamtune/optim/igd.h"
-#include "slamtune/optim/nsga3_evaluation.h"
+#include "slamtune/nsga3/igd.h"
+#include "slamtune/nsga3/nsga3_evaluation.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 using ::testing::HasSubstr;
@@ -357,4 +357,4 @@ TEST(Nsga3State, RoundTripsAndRejectsMalformedText) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,13 +1,13 @@
-#include "slamtune/optim/igd.h"
+#include "slamtune/nsga3/igd.h"
 
 #include <cmath>
 #include <numeric>
 
 #include <gtest/gtest.h>
 
-#include "slamtune/optim/reference_points.h"
+#include "slamtune/nsga3/reference_points.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 TEST(InvertedGenerationalDistance, IsZeroOnTheTargetsAndAveragesNearestDistances) {
@@ -36,4 +36,4 @@ TEST(Targets, LieOnTheDtlzFrontsAlongTheReferenceDirections) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3

@@ -1,4 +1,4 @@
-#include "slamtune/optim/variation.h"
+#include "slamtune/nsga3/variation.h"
 
 #include <cmath>
 #include <set>
@@ -8,7 +8,7 @@
 
 #include "slamtune/common/error.h"
 
-namespace slamtune::optim {
+namespace slamtune::nsga3 {
 namespace {
 
 using ::testing::ElementsAre;
@@ -92,4 +92,4 @@ TEST(MakeOffspring, SameSeedSameChildren) {
 }
 
 }  // namespace
-}  // namespace slamtune::optim
+}  // namespace slamtune::nsga3
