@@ -18,9 +18,7 @@
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
-#include "slamtune/slam/sharing/barycenter_cache.h"
-#include "slamtune/slam/sharing/match_cache.h"
-#include "slamtune/slam/sharing/solve_cache.h"
+#include "slamtune/slam/sharing/shared_work.h"
 
 namespace slamtune::optim {
 
@@ -29,16 +27,13 @@ struct SlamEvaluationContext {
   std::vector<io::Relation> relations;  // empty: no ground-truth errors
   slam::MapperParams base;              // parameters not in the assignment
   metrics::MapQualityOptions metrics;
-  // Scan-match results shared by all evaluations of this context (slam/sharing/match_cache.h); null:
-  // no sharing. Results are identical either way; only the time changes.
-  std::shared_ptr<slam::MatchCache> match_cache;
+  // Scan matches, back-end solves and scan barycentres shared by all evaluations of this context
+  // (slam/sharing/shared_work.h); null caches: no sharing. Results are identical either way; only
+  // the time changes.
+  slam::SharedWork shared_work;
   // Map scores of final states already scored (map_score_cache.h); null: every run builds and
   // scores its map. Results are identical either way.
   std::shared_ptr<MapScoreCache> map_scores;
-  // Back-end solves shared by the runs (slam/sharing/solve_cache.h); null: none. Same results either way.
-  std::shared_ptr<slam::SolveCache> solve_cache;
-  // Scan barycentres shared by the runs (slam/sharing/barycenter_cache.h); null: none. Same results.
-  std::shared_ptr<slam::BarycenterCache> barycenter_cache;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;

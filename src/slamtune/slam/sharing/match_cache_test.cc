@@ -302,9 +302,10 @@ TEST(MatchCache, LogRunsWithAndWithoutTheCacheAreIdentical) {
   log->scans.resize(std::min<std::size_t>(log->scans.size(), 120));
   const MapperParams params;
   const RunResult plain = RunLog(log, params);
-  auto cache = std::make_shared<MatchCache>();
+  SharedWork shared;
+  shared.match_cache = std::make_shared<MatchCache>();
   for (int run = 0; run < 2; ++run) {
-    LogRunner runner(log, params, cache);
+    LogRunner runner(log, params, shared);
     runner.RunToEnd();
     const auto trajectory = runner.Trajectory();
     ASSERT_EQ(trajectory.size(), plain.trajectory.size());
@@ -312,7 +313,7 @@ TEST(MatchCache, LogRunsWithAndWithoutTheCacheAreIdentical) {
       ASSERT_EQ(trajectory[i].pose, plain.trajectory[i].pose) << "scan " << i << " run " << run;
     }
   }
-  const MatchCacheCounters c = cache->counters();
+  const MatchCacheCounters c = shared.match_cache->counters();
   EXPECT_GT(c.misses, 10u);
   EXPECT_EQ(c.hits, c.misses);  // the second run repeated every call of the first
   EXPECT_EQ(c.bypassed, 0u);
