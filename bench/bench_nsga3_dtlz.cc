@@ -32,13 +32,13 @@
 #include <pagmo/utils/multi_objective.hpp>
 
 #include "slamtune/common/error.h"
-#include "slamtune/optim/igd.h"
-#include "slamtune/optim/nsga3.h"
-#include "slamtune/optim/reference_points.h"
+#include "slamtune/nsga3/igd.h"
+#include "slamtune/nsga3/nsga3.h"
+#include "slamtune/nsga3/reference_points.h"
 
 namespace {
 
-using slamtune::optim::ReferencePoints;
+using slamtune::nsga3::ReferencePoints;
 using Points = std::vector<std::vector<double>>;
 
 constexpr std::size_t kObjectives = 3;
@@ -87,7 +87,7 @@ double Hypervolume(const Points& front, const std::vector<double>& reference) {
 RunResult Measure(const Points& final_f, const Points& targets, const std::vector<double>& hv_reference,
                   double seconds) {
   const Points front = NonDominated(final_f);
-  return {slamtune::optim::InvertedGenerationalDistance(targets, front), Hypervolume(front, hv_reference), seconds};
+  return {slamtune::nsga3::InvertedGenerationalDistance(targets, front), Hypervolume(front, hv_reference), seconds};
 }
 
 template <typename Evolve>
@@ -127,7 +127,7 @@ int Run(const std::vector<std::string>& problems, unsigned seeds, double generat
     if (it == kCases.end()) throw slamtune::InputError("--problems: unknown problem '" + name + "', expected dtlz1..dtlz4");
     cases.push_back(*it);
   }
-  const ReferencePoints directions = slamtune::optim::DasDennisPoints(kObjectives, kDivisions);
+  const ReferencePoints directions = slamtune::nsga3::DasDennisPoints(kObjectives, kDivisions);
   nlohmann::json out = nlohmann::json::array();
   if (!json) {
     std::printf("%-6s %-9s %5s | %-33s | %-33s | %s\n", "prob", "algo", "gens", "IGD best / median / worst",
@@ -138,8 +138,8 @@ int Run(const std::vector<std::string>& problems, unsigned seeds, double generat
         std::max(1u, static_cast<unsigned>(std::lround(generations_scale * static_cast<double>(c.generations))));
     const std::size_t n = kObjectives + c.k - 1;
     const pagmo::problem prob(pagmo::dtlz(c.id, n, kObjectives));
-    const Points targets = c.linear_front ? slamtune::optim::TargetsOnSimplex(directions, 0.5)
-                                          : slamtune::optim::TargetsOnUnitSphere(directions);
+    const Points targets = c.linear_front ? slamtune::nsga3::TargetsOnSimplex(directions, 0.5)
+                                          : slamtune::nsga3::TargetsOnUnitSphere(directions);
     const std::vector<double> hv_reference(kObjectives, c.linear_front ? 0.55 : 1.1);
 
     std::map<std::string, std::vector<RunResult>> results;
@@ -148,11 +148,11 @@ int Run(const std::vector<std::string>& problems, unsigned seeds, double generat
       pagmo::population start91(prob);
       for (std::size_t k = 0; k < 91; ++k) start91.push_back(start.get_x()[k], start.get_f()[k]);
 
-      slamtune::optim::Nsga3Options options;
+      slamtune::nsga3::Nsga3Options options;
       options.generations = generations;
       options.divisions = kDivisions;
       results["NSGA-III"].push_back(Timed(
-          [&] { return slamtune::optim::Nsga3(options, seed).evolve(start); }, targets, hv_reference));
+          [&] { return slamtune::nsga3::Nsga3(options, seed).evolve(start); }, targets, hv_reference));
       const pagmo::nsga2 nsga2(generations, std::nextafter(1.0, 0.0), 30.0, 1.0 / static_cast<double>(n), 20.0, seed);
       results["NSGA-II"].push_back(Timed([&] { return nsga2.evolve(start); }, targets, hv_reference));
       const pagmo::moead moead(generations, "grid", "tchebycheff", 20u, 1.0, 0.5, 20.0, 0.9, 2u, true, seed);

@@ -1,4 +1,4 @@
-// Shared scan matches (slam/match_cache.h) on an optimiser-sized batch: N parameter sets drawn
+// Shared scan matches (slam/sharing/match_cache.h) on an optimiser-sized batch: N parameter sets drawn
 // as `slamtune optimize` draws its initial population (r uniform in [2, 6] m, integer g in
 // [6, 20], pagmo's generator from --seed) are evaluated (a) each on its own, without the
 // cache, and (b) as one batch sharing the cache, both on --jobs threads. Checks that every
@@ -278,9 +278,9 @@ int Run(int argc, char** argv) {
   plain.relations = relations;
   for (const auto& [name, value] : space.fixed) slamtune::slam::SetNumeric(plain.base, name, value);
   slamtune::optim::SlamEvaluationContext shared = plain;
-  shared.match_cache = std::make_shared<slamtune::slam::MatchCache>();
-  shared.solve_cache = std::make_shared<slamtune::slam::SolveCache>();
-  shared.barycenter_cache = std::make_shared<slamtune::slam::BarycenterCache>();
+  shared.shared_work.match_cache = std::make_shared<slamtune::slam::MatchCache>();
+  shared.shared_work.solve_cache = std::make_shared<slamtune::slam::SolveCache>();
+  shared.shared_work.barycenter_cache = std::make_shared<slamtune::slam::BarycenterCache>();
 
   std::printf("%s: %zu scans, %d sets, %d jobs, seed %u\n", label.c_str(), log->scans.size(), sets,
               jobs, seed);
@@ -299,9 +299,9 @@ int Run(int argc, char** argv) {
     loops_max = std::max(loops_max, a.loops[i]);
   }
   std::printf("speed-up (a)/(b): %.2fx; loop closures per set %d..%d\n", a.wall_s / b.wall_s, loops_min, loops_max);
-  std::printf("%s\n%s\n%s\n", shared.match_cache->counters().ToString().c_str(),
-              shared.solve_cache->counters().ToString().c_str(),
-              shared.barycenter_cache->counters().ToString().c_str());
+  std::printf("%s\n%s\n%s\n", shared.shared_work.match_cache->counters().ToString().c_str(),
+              shared.shared_work.solve_cache->counters().ToString().c_str(),
+              shared.shared_work.barycenter_cache->counters().ToString().c_str());
   std::printf("results identical: %s (%d of %d sets differ)\n", differing == 0 ? "yes" : "NO", differing, sets);
   return differing == 0 ? 0 : 1;
 }

@@ -10,9 +10,19 @@ function(slamtune_set_compile_options target)
   endif()
 endfunction()
 
-# slamtune_folder(name [DEPENDS lower folders...] [EXTERNAL packages...])
+# slamtune_folder(name [DEPENDS folders...] [TEST_DEPENDS folders...] [EXTERNAL packages...])
+#   DEPENDS       the folders the library's own code includes (declared before it, so layers go one way);
+#   TEST_DEPENDS  further folders that only its tests and testing/ helpers include;
+#   EXTERNAL      the packages the library's own code includes.
+# Every .cc under src/slamtune/<name>, sub-folders included, is compiled into slamtune_<name>, except
+# tests (*_test.cc) and testing/ helpers.
 function(slamtune_folder name)
-  cmake_parse_arguments(F "" "" "DEPENDS;EXTERNAL" ${ARGN})
+  cmake_parse_arguments(F "" "" "DEPENDS;TEST_DEPENDS;EXTERNAL" ${ARGN})
+  foreach(dep IN LISTS F_DEPENDS F_TEST_DEPENDS)
+    if(NOT DEFINED SLAMTUNE_CLOSURE_${dep})
+      message(FATAL_ERROR "slamtune_folder(${name}): folder '${dep}' must be declared before '${name}'")
+    endif()
+  endforeach()
   set(dir ${CMAKE_SOURCE_DIR}/src/slamtune/${name})
   file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${dir}/*.cc)
   list(FILTER srcs EXCLUDE REGEX "_test\\.cc$")
@@ -36,13 +46,37 @@ function(slamtune_folder name)
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
     slamtune_set_compile_options(${target})
   endif()
+  # The folder and every folder it uses, directly or through another.
+  set(closure ${name})
+  foreach(dep IN LISTS F_DEPENDS)
+    list(APPEND closure ${SLAMTUNE_CLOSURE_${dep}})
+  endforeach()
+  list(REMOVE_DUPLICATES closure)
+  set(SLAMTUNE_CLOSURE_${name} ${closure} PARENT_SCOPE)
+  set(SLAMTUNE_TEST_DEPS_${name} ${F_TEST_DEPENDS} PARENT_SCOPE)
   set(SLAMTUNE_FOLDERS ${SLAMTUNE_FOLDERS} ${name} PARENT_SCOPE)
   set(SLAMTUNE_FOLDER_TARGETS ${SLAMTUNE_FOLDER_TARGETS} ${target} PARENT_SCOPE)
-  set(SLAMTUNE_DEPS_${name} ${F_DEPENDS} PARENT_SCOPE)
 endfunction()
 
-# <folder>_tests: every *_test.cc of the folder, plus its and common's testing/ helpers, linked against the
-# folder and the folders below it. Each test is registered with CTest.
+# slamtune_folder_objects(out folders...): the object libraries of `folders` and of every folder they use.
+# Object libraries pass their objects only to targets that link them directly, so an executable built on
+# some folders links this whole list.
+function(slamtune_folder_objects out)
+  set(folders "")
+  foreach(folder IN LISTS ARGN)
+    if(NOT DEFINED SLAMTUNE_CLOSURE_${folder})
+      message(FATAL_ERROR "slamtune_folder_objects: unknown folder '${folder}'")
+    endif()
+    list(APPEND folders ${SLAMTUNE_CLOSURE_${folder}})
+  endforeach()
+  list(REMOVE_DUPLICATES folders)
+  list(TRANSFORM folders PREPEND slamtune_)
+  set(${out} ${folders} PARENT_SCOPE)
+endfunction()
+
+# <folder>_tests: every *_test.cc of the folder (sub-folders included), plus its and common's testing/
+# helpers, linked against the folder, the folders it uses and its TEST_DEPENDS. Each test is registered
+# with CTest.
 function(slamtune_folder_tests name)
   set(dir ${CMAKE_SOURCE_DIR}/src/slamtune/${name})
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${dir}/*_test.cc)
@@ -57,11 +91,7 @@ function(slamtune_folder_tests name)
     return()
   endif()
   add_executable(${name}_tests ${tests} ${helpers})
-  # Object libraries pass their objects only to targets that link them directly: name every layer.
-  set(layers slamtune_${name})
-  foreach(dep IN LISTS SLAMTUNE_DEPS_${name})
-    list(APPEND layers slamtune_${dep})
-  endforeach()
+  slamtune_folder_objects(layers ${name} ${SLAMTUNE_TEST_DEPS_${name}})
   target_link_libraries(${name}_tests PRIVATE ${layers} GTest::gtest GTest::gtest_main GTest::gmock)
   target_compile_definitions(${name}_tests PRIVATE
     SLAMTUNE_SOURCE_DIR="${CMAKE_SOURCE_DIR}"

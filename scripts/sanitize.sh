@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds the library and its tests with AddressSanitizer and UndefinedBehaviorSanitizer (GCC, in
-# build-asan/) and runs the io, metrics and optim test executables and the fuzz corpus replays
+# build-asan/) and runs the io, metrics, nsga3 and optim test executables and the fuzz corpus replays
 # (fuzz/CMakeLists.txt) under them.
 #
-#   bash scripts/sanitize.sh            # io, metrics and optim suites, fuzz corpus replays
+#   bash scripts/sanitize.sh            # io, metrics, nsga3 and optim suites, fuzz corpus replays
 #   bash scripts/sanitize.sh REGEX      # the CTest tests matching REGEX (ctest -R REGEX)
 #
 # Any sanitizer report fails its test (halt_on_error, leaks included). Exit status 0 when the run
@@ -22,9 +22,9 @@ if [[ ! -f "$build/CMakeCache.txt" ]]; then
     -DSLAMTUNE_BUILD_BENCH=OFF -DSLAMTUNE_WITH_MPI=OFF >/dev/null
 fi
 if [[ -z "$regex" ]]; then
-  nice cmake --build "$build" --target io_tests metrics_tests optim_tests fuzz_all -j"$jobs"
+  nice cmake --build "$build" --target io_tests metrics_tests nsga3_tests optim_tests fuzz_all -j"$jobs"
   # Test names are the GoogleTest names; the executables carry them as CTest labels.
-  select=(-L '^(io|metrics|optim|fuzz)$')
+  select=(-L '^(io|metrics|nsga3|optim|fuzz)$')
 else
   nice cmake --build "$build" -j"$jobs"
   select=(-R "$regex")

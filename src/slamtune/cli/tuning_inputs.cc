@@ -133,10 +133,8 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
 }
 
 void ShareWork(optim::SlamEvaluationContext& context, bool no_share, std::size_t share_mb) {
-  context.match_cache = nullptr;
+  context.shared_work = {};
   context.map_scores = nullptr;
-  context.solve_cache = nullptr;
-  context.barycenter_cache = nullptr;
   if (no_share) return;
   if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
   optim::ShareWork(context, share_mb);

@@ -1,5 +1,5 @@
 // Exact cache keys as vectors of 64-bit words, shared by the caches that let SLAM runs reuse each
-// other's work (slam/match_cache.h, slam/solve_cache.h, optim/map_score_cache.h). A key holds the
+// other's work (slam/sharing/match_cache.h, slam/sharing/solve_cache.h, optim/map_score_cache.h). A key holds the
 // bits of everything a result depends on and is compared word for word; KeyWordsHash only picks
 // a bucket, so a collision costs time, never a wrong result.
 #pragma once

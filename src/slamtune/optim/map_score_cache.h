@@ -5,7 +5,7 @@
 // three metrics and the relation errors, which together cost about half of a run whose scan
 // matches were all served by the MatchCache.
 //
-// Exactness, as in slam/match_cache.h: an entry is keyed by everything the scores depend on,
+// Exactness, as in slam/sharing/match_cache.h: an entry is keyed by everything the scores depend on,
 // compared word for word (the hash only picks the bucket): the occupancy-grid options
 // (resolution, min_pass_through, occupancy_threshold), the bits of the laser geometry (angles,
 // min/max range, range threshold, offset), and for each processed scan its log index and the

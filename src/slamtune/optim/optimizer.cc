@@ -16,9 +16,9 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/nsga3/nsga3.h"
 #include "slamtune/optim/budget_estimate.h"
 #include "slamtune/optim/candidate_selection.h"
-#include "slamtune/optim/nsga3.h"
 #include "slamtune/optim/tuning_problem.h"
 
 namespace slamtune::optim {
@@ -228,16 +228,16 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   }
 
   if (done_gens < total_gens && !settling.settled()) {
-    Nsga3Options options;
+    nsga3::Nsga3Options options;
     options.generations = total_gens - done_gens;
     options.divisions = settings.divisions;
     options.population_size = settings.population;
-    Nsga3 nsga3(options, settings.seed);
-    if (!rng_state.empty()) nsga3.RestoreRngState(rng_state);
-    nsga3.set_bfe(pagmo::bfe(pagmo::member_bfe{}));
+    nsga3::Nsga3 algorithm(options, settings.seed);
+    if (!rng_state.empty()) algorithm.RestoreRngState(rng_state);
+    algorithm.set_bfe(pagmo::bfe(pagmo::member_bfe{}));
     evaluator.SetProgressCallback(
         [&](const EvaluationRecord&, const BatchEvaluatorStats&) { report(done_gens + 1, false); });
-    nsga3.set_generation_callback([&](const GenerationRecord& record, const std::string& state) {
+    algorithm.set_generation_callback([&](const nsga3::GenerationRecord& record, const std::string& state) {
       // Saved first: a kill after this line loses nothing of this generation.
       store.PutGeneration(static_cast<int>(done_gens + 1), PopulationJson(record.x, record.f, state));
       ++done_gens;
@@ -246,11 +246,11 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
         result.snapshots.push_back({static_cast<int>(done_gens), record.x, record.f});
       }
       report(done_gens, true);
-      if (!settling.Update(done_gens, record.x, record.f)) return CallbackAction::kContinue;
+      if (!settling.Update(done_gens, record.x, record.f)) return nsga3::CallbackAction::kContinue;
       if (hooks.progress) hooks.progress(settling.Describe(total_gens), true);
-      return CallbackAction::kStop;
+      return nsga3::CallbackAction::kStop;
     });
-    pop = nsga3.evolve(pop);
+    pop = algorithm.evolve(pop);
     evaluator.SetProgressCallback(nullptr);
   }
 

@@ -1,4 +1,4 @@
-// The whole method of Han et al. (Sensors 2020) on one log: NSGA-III (nsga3.h) over the
+// The whole method of Han et al. (Sensors 2020) on one log: NSGA-III (nsga3/nsga3.h) over the
 // search space, each candidate scored by the map objectives of its SLAM run, then the
 // candidates an engineer needs (candidate_selection.h).
 //

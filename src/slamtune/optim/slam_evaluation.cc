@@ -30,9 +30,7 @@ slam::OccupancyGrid GridOf(const slam::LogRunner& runner, const slam::MapperPara
 
 slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
   SLAMTUNE_CHECK(context.log != nullptr);
-  slam::LogRunner runner(context.log, params, context.match_cache);
-  runner.set_solve_cache(context.solve_cache);
-  runner.set_barycenter_cache(context.barycenter_cache);
+  slam::LogRunner runner(context.log, params, context.shared_work);
   runner.RunToEnd();
   return runner;
 }
@@ -144,17 +142,19 @@ void ShareWork(SlamEvaluationContext& context, std::size_t share_mb) {
   SLAMTUNE_CHECK(share_mb > 0);
   slam::MatchCacheOptions options;
   options.byte_budget = share_mb << 20;
-  context.match_cache = std::make_shared<slam::MatchCache>(options);
-  context.solve_cache = std::make_shared<slam::SolveCache>(std::max<std::size_t>(share_mb << 19, 1 << 20));
+  slam::SharedWork& work = context.shared_work;
+  work.match_cache = std::make_shared<slam::MatchCache>(options);
+  work.solve_cache = std::make_shared<slam::SolveCache>(std::max<std::size_t>(share_mb << 19, 1 << 20));
   context.map_scores = std::make_shared<MapScoreCache>(std::max<std::size_t>(share_mb << 18, 1 << 20));
-  context.barycenter_cache = std::make_shared<slam::BarycenterCache>(std::max<std::size_t>(share_mb << 17, 1 << 20));
+  work.barycenter_cache = std::make_shared<slam::BarycenterCache>(std::max<std::size_t>(share_mb << 17, 1 << 20));
 }
 
 std::string SharedWorkReport(const SlamEvaluationContext& context) {
-  if (!context.match_cache) return "match cache: off (--no-share)";
-  std::string out = context.match_cache->counters().ToString();
-  for (const std::string& line : {context.solve_cache ? context.solve_cache->counters().ToString() : "",
-                                  context.barycenter_cache ? context.barycenter_cache->counters().ToString() : "",
+  const slam::SharedWork& work = context.shared_work;
+  if (!work.match_cache) return "match cache: off (--no-share)";
+  std::string out = work.match_cache->counters().ToString();
+  for (const std::string& line : {work.solve_cache ? work.solve_cache->counters().ToString() : "",
+                                  work.barycenter_cache ? work.barycenter_cache->counters().ToString() : "",
                                   context.map_scores ? context.map_scores->counters().ToString() : ""}) {
     if (!line.empty()) out.append(1, '\n').append(line);
   }
@@ -162,8 +162,8 @@ std::string SharedWorkReport(const SlamEvaluationContext& context) {
 }
 
 std::string SharedWorkBrief(const SlamEvaluationContext& context) {
-  if (!context.match_cache) return "";
-  const slam::MatchCacheCounters c = context.match_cache->counters();
+  if (!context.shared_work.match_cache) return "";
+  const slam::MatchCacheCounters c = context.shared_work.match_cache->counters();
   const std::uint64_t calls = c.hits + c.waits + c.misses;
   if (calls == 0) return "";
   return fmt::format("matches: {:.1f}% of {} shared, {} computed", 100.0 * static_cast<double>(c.hits + c.waits) / calls,

@@ -19,9 +19,7 @@
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
-#include "slamtune/slam/barycenter_cache.h"
-#include "slamtune/slam/match_cache.h"
-#include "slamtune/slam/solve_cache.h"
+#include "slamtune/slam/sharing/shared_work.h"
 
 namespace slamtune::optim {
 
@@ -30,16 +28,13 @@ struct SlamEvaluationContext {
   std::vector<io::Relation> relations;  // empty: no ground-truth errors
   slam::MapperParams base;              // parameters not in the assignment
   metrics::MapQualityOptions metrics;
-  // Scan-match results shared by all evaluations of this context (slam/match_cache.h); null:
-  // no sharing. Results are identical either way; only the time changes.
-  std::shared_ptr<slam::MatchCache> match_cache;
+  // Scan matches, back-end solves and scan barycentres shared by all evaluations of this context
+  // (slam/sharing/shared_work.h); null caches: no sharing. Results are identical either way; only
+  // the time changes.
+  slam::SharedWork shared_work;
   // Map scores of final states already scored (map_score_cache.h); null: every run builds and
   // scores its map. Results are identical either way.
   std::shared_ptr<MapScoreCache> map_scores;
-  // Back-end solves shared by the runs (slam/solve_cache.h); null: none. Same results either way.
-  std::shared_ptr<slam::SolveCache> solve_cache;
-  // Scan barycentres shared by the runs (slam/barycenter_cache.h); null: none. Same results.
-  std::shared_ptr<slam::BarycenterCache> barycenter_cache;
   // The fixed scans every run's path draws for the drawn wall (metrics/trajectory_map.h,
   // objective n_w); null: EvaluationRecord::drawn_wall_cells stays 0 (the map is not drawn).
   std::shared_ptr<const metrics::TrajectoryMap> trajectory_map;

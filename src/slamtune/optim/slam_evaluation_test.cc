@@ -126,9 +126,9 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
   SlamEvaluationContext plain;
   plain.log = std::move(log);
   SlamEvaluationContext shared = plain;
-  shared.match_cache = std::make_shared<slam::MatchCache>();
-  shared.solve_cache = std::make_shared<slam::SolveCache>();
-  shared.barycenter_cache = std::make_shared<slam::BarycenterCache>();
+  shared.shared_work.match_cache = std::make_shared<slam::MatchCache>();
+  shared.shared_work.solve_cache = std::make_shared<slam::SolveCache>();
+  shared.shared_work.barycenter_cache = std::make_shared<slam::BarycenterCache>();
   const std::vector<Assignment> batch = RandomSets(sets, seed);
   const std::vector<Evaluated> without = EvaluateAll(plain, batch, 1);
   const std::vector<Evaluated> with = EvaluateAll(shared, batch, 3);
@@ -139,11 +139,11 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
     loop_lists.insert(without[i].record.loop_scans);
     loops += without[i].record.loop_scans.size();
   }
-  const slam::MatchCacheCounters c = shared.match_cache->counters();
+  const slam::MatchCacheCounters c = shared.shared_work.match_cache->counters();
   EXPECT_GT(c.hits + c.waits, 0u) << label << ": the cache served nothing";
   EXPECT_EQ(c.bypassed, 0u);
   EXPECT_GE(loop_lists.size(), min_loop_lists) << label << ": the sets did not diverge";
-  EXPECT_GT(shared.barycenter_cache->counters().hits, 0u) << label << ": no barycentre was shared";
+  EXPECT_GT(shared.shared_work.barycenter_cache->counters().hits, 0u) << label << ": no barycentre was shared";
 
   // Map scores shared too (the optimiser's path: records only). Twice, so that the second pass
   // is served from the map-score cache entirely.
@@ -176,13 +176,14 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
     final_states.insert(state);
   }
   EXPECT_EQ(m.entries, final_states.size()) << label << ": one entry per distinct final state";
-  const slam::SolveCacheCounters sc = shared.solve_cache->counters();
+  const slam::SolveCacheCounters sc = shared.shared_work.solve_cache->counters();
   if (loops > 0) {
     EXPECT_GT(sc.hits, 0u) << label << ": no solve was shared";
   }
   std::printf("%s: %zu scans, %zu loop closures, %zu distinct loop-closure lists over %zu sets; %s; %s; %s; %s\n",
               label.c_str(), plain.log->scans.size(), loops, loop_lists.size(), batch.size(), c.ToString().c_str(),
-              sc.ToString().c_str(), m.ToString().c_str(), shared.barycenter_cache->counters().ToString().c_str());
+              sc.ToString().c_str(), m.ToString().c_str(),
+              shared.shared_work.barycenter_cache->counters().ToString().c_str());
 }
 
 std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::size_t scans) {

@@ -111,7 +111,7 @@ class LaserScan {
   // Reference pose for distance tests: barycentre or sensor pose (§2.2).
   Pose2 ReferencePose(bool use_barycenter) const { return use_barycenter ? barycenter() : SensorPose(); }
 
-  // A hint for MatchCache (match_cache.h): the id under which the cache last interned this
+  // A hint for MatchCache (sharing/match_cache.h): the id under which the cache last interned this
   // scan's (log index, readings, corrected pose). The cache checks the id against the interned
   // contents before using it, so any value, stale or copied, is safe; it only saves a hash
   // lookup. Relaxed atomic access, so scans shared by threads stay race-free.

@@ -43,9 +43,8 @@ LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperP
   return g;
 }
 
-LogRunner::LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params,
-                     std::shared_ptr<MatchCache> match_cache)
-    : log_(std::move(log)), mapper_(params, std::move(match_cache)) {
+LogRunner::LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params, SharedWork shared)
+    : log_(std::move(log)), mapper_(params, std::move(shared)) {
   SLAMTUNE_CHECK(log_ != nullptr);
   if (log_->scans.empty()) throw InputError(log_->path, 0, "the log has no laser scans");
   frame_ = OdometryFrameOf(*log_);

@@ -76,11 +76,10 @@ inline const Pose2& OdometricPose(const io::LaserScanRecord& record, const Odome
 
 class LogRunner {
  public:
-  // Validates `params`. The log is shared (read-only) by all copies of the runner.
-  // `match_cache` (may be null) lets runs of this same log share scan-match results
-  // (match_cache.h); results are identical with or without it.
-  LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params,
-            std::shared_ptr<MatchCache> match_cache = nullptr);
+  // Validates `params`. The log is shared (read-only) by all copies of the runner. `shared`
+  // lets runs of this same log share scan matches, back-end solves and barycentres
+  // (sharing/shared_work.h); results are identical with or without it.
+  LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params, SharedWork shared = {});
 
   bool Done() const { return next_ >= log_->scans.size(); }
   std::size_t next_index() const { return next_; }
@@ -95,12 +94,8 @@ class LogRunner {
   // geometry stays the one built at construction.
   void SetParams(const MapperParams& params) { mapper_.SetParams(params); }
   const Mapper& mapper() const { return mapper_; }
-  // Back-end solves shared with other runs of this log (solve_cache.h); may be null.
-  void set_solve_cache(std::shared_ptr<SolveCache> cache) { mapper_.set_solve_cache(std::move(cache)); }
   // Every match and solve is also written to `trace` (run_trace.h); null: none.
   void set_trace(std::shared_ptr<RunTrace> trace) { mapper_.set_trace(std::move(trace)); }
-  // Scan barycentres shared with other runs of this log (barycenter_cache.h); may be null.
-  void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { mapper_.set_barycenter_cache(std::move(cache)); }
   // See Mapper::set_skip_unlinkable_near_chains (same results either way).
   void set_skip_unlinkable_near_chains(bool on) { mapper_.set_skip_unlinkable_near_chains(on); }
   const io::LaserLog& log() const { return *log_; }

@@ -100,7 +100,7 @@ TEST(LogRunner, MitCsailNodeCountMatchesReferenceKarto) {
   EXPECT_EQ(runner.Summary().laser_max_range, 80.0);
 }
 
-// The back end's arithmetic decides loops on mit-killian (spa_system.h): with r = 5.90, g = 8,
+// The back end's arithmetic decides loops on mit-killian (backend/spa_system.h): with r = 5.90, g = 8,
 // p = 0.7, the reference Karto build (open_karto + slam_karto's SPA) closes its first four loops
 // at these log scans with these coarse responses; the fourth (6314) needs bit-exact solves after
 // the first three: with algebraically equal variants of the edge measurement, mean heading and

@@ -26,8 +26,7 @@ bool SameOptions(const ScanMatcherOptions& a, const ScanMatcherOptions& b) {
 
 }  // namespace
 
-Mapper::Mapper(const MapperParams& params, std::shared_ptr<MatchCache> match_cache)
-    : params_(params), match_cache_(std::move(match_cache)) {
+Mapper::Mapper(const MapperParams& params, SharedWork shared) : params_(params), shared_(std::move(shared)) {
   params_.Validate();
   solver_ = MakeSolver(params_.solver, params_.ceres_loss_function);
 }
@@ -68,7 +67,7 @@ void Mapper::SetScanSensorPose(int id, const Pose2& sensor_pose) {
 }
 
 void Mapper::UpdateReferencePose(int id) {
-  if (params_.use_scan_barycenter && barycenter_cache_) barycenter_cache_->Provide(scans_[id]);
+  if (params_.use_scan_barycenter && shared_.barycenter_cache) shared_.barycenter_cache->Provide(scans_[id]);
   reference_poses_[static_cast<std::size_t>(id)] = scans_[id].ReferencePose(params_.use_scan_barycenter);
 }
 
@@ -82,7 +81,7 @@ std::vector<const LaserScan*> Mapper::ScanPointers(const std::vector<int>& ids) 
 MatchResult Mapper::MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
                               bool penalize, bool refine) {
   ScanMatcher& matcher = role == MatchRole::kLoop ? *loop_matcher_ : *sequential_matcher_;
-  if (match_cache_) return match_cache_->Match(role, matcher, scan, base, penalize, refine);
+  if (shared_.match_cache) return shared_.match_cache->Match(role, matcher, scan, base, penalize, refine);
   return matcher.Match(scan, base, penalize, refine);
 }
 
@@ -204,10 +203,12 @@ MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<cons
                                    double threshold) {
   if (!skip_unlinkable_near_chains_) return MatchWith(MatchRole::kSequential, scan, base, false, true);
   // A match proven unable to exceed the threshold would be computed only to be discarded
-  // (response_bound.h). With a match cache the proof is stored like a result, so a run
+  // (fast_matching/response_bound.h). With a match cache the proof is stored like a result, so a run
   // repeating this call pays for neither.
   const auto may_exceed = [&] { return near_chain_bound_->MayExceed(scan, base, threshold); };
-  if (match_cache_) return match_cache_->MatchAbove(*sequential_matcher_, scan, base, false, true, threshold, may_exceed);
+  if (shared_.match_cache) {
+    return shared_.match_cache->MatchAbove(*sequential_matcher_, scan, base, false, true, threshold, may_exceed);
+  }
   return may_exceed() ? sequential_matcher_->Match(scan, base, false, true) : ProvenBelowThreshold();
 }
 
@@ -290,12 +291,12 @@ int Mapper::CorrectPoses() {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::uint64_t> key;
   std::optional<SolveCache::Solved> stored;
-  if (solve_cache_) {
+  if (shared_.solve_cache) {
     key = SolveCache::KeyOf(params_.solver, params_.ceres_loss_function, nodes, graph_.edges());
     key.push_back(params_.robot_pose_graph ? 1 : 0);  // how the values are written back
     // The stored barycentres also depend on the laser (range threshold, ...): key it too.
     AppendGeometryKey(*geometry_, &key);
-    stored = solve_cache_->Find(key);
+    stored = shared_.solve_cache->Find(key);
   }
   if (stored) {
     // Another run made this very solve: its node values, and the barycentres it computed.
@@ -327,13 +328,13 @@ int Mapper::CorrectPoses() {
       }
     }
   }
-  if (solve_cache_ && !stored) {
+  if (shared_.solve_cache && !stored) {
     SolveCache::Solved solved{summary, nodes, {}};
     if (summary.usable && params_.use_scan_barycenter) {
       solved.barycenters.reserve(nodes.size());
       for (const LaserScan& s : scans_) solved.barycenters.push_back(s.barycenter());
     }
-    solve_cache_->Store(std::move(key), std::move(solved));
+    shared_.solve_cache->Store(std::move(key), std::move(solved));
   }
   const int index = static_cast<int>(solver_runs_.size()) - 1;
   if (trace_) {

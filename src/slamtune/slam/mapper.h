@@ -10,11 +10,11 @@
 // copy changes later decisions only (e.g. the loop-closure parameters r, g, p, q), so an
 // optimiser can fork the state where decisions start to differ.
 //
-// Shared match results: with a MatchCache (match_cache.h) every matcher call (sequential,
-// near chain, loop coarse, loop fine) goes through the cache, so runs of the same log that
-// share it reuse each other's identical matches; with a SolveCache (solve_cache.h) likewise
-// every CorrectPoses solve, and with a BarycenterCache (barycenter_cache.h) every barycentre a
-// reference pose needs. Results are bit-identical with or without them.
+// Shared work (sharing/shared_work.h): with a MatchCache every matcher call (sequential, near
+// chain, loop coarse, loop fine) goes through the cache, so runs of the same log that share it
+// reuse each other's identical matches; with a SolveCache likewise every CorrectPoses solve, and
+// with a BarycenterCache every barycentre a reference pose needs. Results are bit-identical with
+// or without them.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,17 +25,15 @@
 #include <optional>
 #include <vector>
 
-#include "slamtune/slam/barycenter_cache.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
+#include "slamtune/slam/fast_matching/response_bound.h"
 #include "slamtune/slam/front_end.h"
 #include "slamtune/slam/laser_scan.h"
-#include "slamtune/slam/match_cache.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/pose_graph.h"
-#include "slamtune/slam/pose_graph_solver.h"
-#include "slamtune/slam/response_bound.h"
 #include "slamtune/slam/run_trace.h"
 #include "slamtune/slam/scan_matcher.h"
-#include "slamtune/slam/solve_cache.h"
+#include "slamtune/slam/sharing/shared_work.h"
 
 namespace slamtune::slam {
 
@@ -79,7 +77,7 @@ struct MapperCounters {
   std::array<int, kNumEdgeKinds> edges_added{};
   std::array<int, kNumEdgeKinds> duplicate_edges{};  // LinkScans calls dropped as duplicates (§5.1)
   int near_chain_matches = 0;                        // near chains tested (size >= g)
-  int near_chain_matches_skipped = 0;                // of those, proven unable to link (response_bound.h)
+  int near_chain_matches_skipped = 0;                // of those, proven unable to link (fast_matching/response_bound.h)
   int loop_attempts = 0;
   int loops_closed = 0;
 
@@ -88,9 +86,9 @@ struct MapperCounters {
 
 class Mapper {
  public:
-  // Validates `params` (InputError) and picks the back-end. `match_cache` (may be null: no
-  // sharing) is shared by copies of the mapper.
-  explicit Mapper(const MapperParams& params, std::shared_ptr<MatchCache> match_cache = nullptr);
+  // Validates `params` (InputError) and picks the back-end. The caches of `shared` (each may be
+  // null: that work is not shared) are shared by copies of the mapper.
+  explicit Mapper(const MapperParams& params, SharedWork shared = {});
 
   // Mapper::Process of §3.2. `scan` carries its odometric pose (laser pose, zero offset for
   // CARMEN logs) and time; its log_index is kept for reports. The first scan fixes the laser
@@ -102,17 +100,11 @@ class Mapper {
   // cannot change once a scan has been processed.
   void SetParams(const MapperParams& params);
   const MapperParams& params() const { return params_; }
-  void set_match_cache(std::shared_ptr<MatchCache> cache) { match_cache_ = std::move(cache); }
-  const std::shared_ptr<MatchCache>& match_cache() const { return match_cache_; }
-  // Back-end solves shared with other runs of the same log (may be null: no sharing).
-  void set_solve_cache(std::shared_ptr<SolveCache> cache) { solve_cache_ = std::move(cache); }
   // Every match and solve from now on is also written to `trace` (run_trace.h); null: none.
   void set_trace(std::shared_ptr<RunTrace> trace) { trace_ = std::move(trace); }
-  // Scan barycentres shared with other runs of the same log (may be null: no sharing).
-  void set_barycenter_cache(std::shared_ptr<BarycenterCache> cache) { barycenter_cache_ = std::move(cache); }
 
   // Skip the near-chain matches proven unable to reach link_match_minimum_response_fine
-  // (response_bound.h). On by default; results are identical either way (tested), off is
+  // (fast_matching/response_bound.h). On by default; results are identical either way (tested), off is
   // for tests and timing.
   void set_skip_unlinkable_near_chains(bool on) { skip_unlinkable_near_chains_ = on; }
 
@@ -162,10 +154,8 @@ class Mapper {
   std::optional<ScanMatcher> loop_matcher_;
   std::optional<ResponseBound> near_chain_bound_;  // with the sequential matcher's options
   bool skip_unlinkable_near_chains_ = true;
-  std::shared_ptr<MatchCache> match_cache_;  // null: no sharing; thread-safe, shared by copies
-  std::shared_ptr<SolveCache> solve_cache_;  // likewise
-  std::shared_ptr<BarycenterCache> barycenter_cache_;  // likewise
-  std::shared_ptr<RunTrace> trace_;                     // observer only; shared by copies
+  SharedWork shared_;                // caches may be null: no sharing; thread-safe, shared by copies
+  std::shared_ptr<RunTrace> trace_;  // observer only; shared by copies
   std::vector<LaserScan> scans_;
   std::vector<Pose2> reference_poses_;
   PoseGraph graph_;

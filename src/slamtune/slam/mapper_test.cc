@@ -31,7 +31,7 @@ MapperParams FastParams() {
 }
 
 // Everything the engine decided and computed; the count of near-chain matches skipped by
-// the response bound (response_bound.h) only when `same_skips`.
+// the response bound (fast_matching/response_bound.h) only when `same_skips`.
 void ExpectSameState(const LogRunner& a, const LogRunner& b, bool same_skips = true) {
   const Mapper& ma = a.mapper();
   const Mapper& mb = b.mapper();

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "slamtune/common/pose2.h"
-#include "slamtune/slam/pose_graph_solver.h"
+#include "slamtune/slam/backend/pose_graph_solver.h"
 
 namespace slamtune::slam {
 

@@ -1,5 +1,5 @@
 // Karto's correlative scan matcher, docs/engine.md §4.2-§4.6. The exhaustive search is
-// done on integer byte sums (correlation_search.h) and turned into Karto's responses with
+// done on integer byte sums (fast_matching/correlation_search.h) and turned into Karto's responses with
 // the same division, penalties and reductions, so results are bit-identical to the
 // straightforward double loop (see scan_matcher_test.cc, "MatchesReferenceLoop").
 #include "slamtune/slam/scan_matcher.h"
@@ -14,9 +14,9 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/slam/correlation_grid.h"
-#include "slamtune/slam/correlation_search.h"
+#include "slamtune/slam/fast_matching/correlation_search.h"
+#include "slamtune/slam/fast_matching/pruned_search.h"
 #include "slamtune/slam/match_covariance.h"
-#include "slamtune/slam/pruned_search.h"
 #include "slamtune/slam/scan_lookup_table.h"
 
 namespace slamtune::slam {
@@ -156,7 +156,7 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
                      IsStepTwoLattice(cells, grid.geometry().stride);
   if (prune) {
     // Skippable: every sum <= bound gives a response below best - 0.1, which Karto never uses
-    // (not the best, not a tie, outside the covariance window; pruned_search.h).
+    // (not the best, not a tie, outside the covariance window; fast_matching/pruned_search.h).
     auto prunable = [this](std::int32_t bound, std::int32_t best_sum) {
       return response_of_sum[static_cast<std::size_t>(bound)] <
              response_of_sum[static_cast<std::size_t>(best_sum)] - 0.1;

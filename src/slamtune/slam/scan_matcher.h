@@ -10,7 +10,7 @@
 //
 // Speed without changing a bit: the search works on integer byte sums (vectorised, far points
 // clipped per row), unpenalised coarse passes skip candidates provably > 0.1 below the best
-// (pruned_search.h), and the results equal those of ReferenceScanMatcher, a plain
+// (fast_matching/pruned_search.h), and the results equal those of ReferenceScanMatcher, a plain
 // transcription of Karto's loops (scan_matcher_test.cc checks it on synthetic and intel data).
 #pragma once
 
@@ -40,7 +40,7 @@ struct ScanMatcherOptions {
   bool use_response_expansion = false;
   int threads = 1;  // rows of an exhaustive coarse search spread over this many threads; results independent of it
   // Skip, in unpenalised coarse passes over small grids (the loop matcher), the blocks of
-  // candidates provably more than 0.1 below the best response (pruned_search.h); results are
+  // candidates provably more than 0.1 below the best response (fast_matching/pruned_search.h); results are
   // identical either way, only the time changes.
   bool branch_and_bound = true;
 
@@ -58,7 +58,7 @@ struct MatchResult {
 };
 
 // Stands for a match that was not computed because its response provably cannot exceed the
-// caller's threshold (response_bound.h): the response is -inf, below every threshold.
+// caller's threshold (fast_matching/response_bound.h): the response is -inf, below every threshold.
 inline MatchResult ProvenBelowThreshold() {
   MatchResult r;
   r.response = -std::numeric_limits<double>::infinity();

@@ -1,0 +1,323 @@
+#include "slamtune/slam/sharing/match_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <thread>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/karto_math.h"
+#include "slamtune/sim/simulation.h"
+#include "slamtune/slam/log_runner.h"
+
+namespace slamtune::slam {
+namespace {
+
+// A 6 m square room seen from (x, y): ranges of 181 beams over 180 degrees.
+LaserScan RoomScan(const Pose2& pose, int log_index) {
+  static const auto geometry = [] {
+    LaserGeometry g;
+    g.min_angle = -kPi / 2;
+    g.angular_resolution = kPi / 180;
+    g.num_readings = 181;
+    g.max_range = 80.0;
+    g.range_threshold = 12.0;
+    return std::make_shared<const LaserGeometry>(g);
+  }();
+  auto ranges = std::make_shared<std::vector<double>>();
+  for (int i = 0; i < geometry->num_readings; ++i) {
+    const double a = pose.theta + geometry->min_angle + i * geometry->angular_resolution;
+    const double c = std::cos(a);
+    const double s = std::sin(a);
+    double r = 1e9;
+    if (c > 1e-9) r = std::min(r, (3.0 - pose.x) / c);
+    if (c < -1e-9) r = std::min(r, (-3.0 - pose.x) / c);
+    if (s > 1e-9) r = std::min(r, (3.0 - pose.y) / s);
+    if (s < -1e-9) r = std::min(r, (-3.0 - pose.y) / s);
+    ranges->push_back(r);
+  }
+  LaserScan scan(geometry, ranges, pose, 0.1 * log_index);
+  scan.log_index = log_index;
+  return scan;
+}
+
+bool SameBits(const MatchResult& a, const MatchResult& b) {
+  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  if (bits(a.mean.x) != bits(b.mean.x) || bits(a.mean.y) != bits(b.mean.y) ||
+      bits(a.mean.theta) != bits(b.mean.theta) || bits(a.response) != bits(b.response)) {
+    return false;
+  }
+  for (int k = 0; k < 9; ++k) {
+    if (bits(a.covariance.data()[k]) != bits(b.covariance.data()[k])) return false;
+  }
+  return true;
+}
+
+struct Fixture {
+  LaserScan scan = RoomScan({0.05, -0.02, 0.01}, 3);
+  std::vector<LaserScan> bases = {RoomScan({0, 0, 0}, 0), RoomScan({0.2, 0, 0}, 1), RoomScan({0.4, 0.1, 0}, 2)};
+  std::vector<const LaserScan*> base_ptrs = {&bases[0], &bases[1], &bases[2]};
+  ScanMatcherOptions options;
+};
+
+TEST(MatchCacheOptions, RejectsAZeroBudget) {
+  MatchCacheOptions o;
+  o.byte_budget = 0;
+  EXPECT_THROW(o.Validate(), InputError);
+  EXPECT_THROW(MatchCache{o}, InputError);
+}
+
+// Near-chain calls: a proof that the response stays below the threshold is stored and served
+// like a result (the proof is not asked for again), a real match is stored when the proof
+// fails, and another threshold is another key.
+TEST(MatchCache, MatchAboveStoresProofsAndMatchesPerThreshold) {
+  Fixture f;
+  MatchCache cache;
+  ScanMatcher matcher(f.options);
+  int asked = 0;
+  const auto cannot = [&] { return ++asked, false; };
+  const auto can = [&] { return ++asked, true; };
+  EXPECT_TRUE(IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.8, cannot)));
+  EXPECT_TRUE(IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.8, can)));
+  EXPECT_EQ(asked, 1);  // the second call was served the stored proof
+  const MatchResult real = cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.5, can);
+  EXPECT_EQ(asked, 2);  // another threshold: another entry
+  ScanMatcher fresh(f.options);
+  EXPECT_TRUE(SameBits(real, fresh.Match(f.scan, f.base_ptrs, false, true)));
+  EXPECT_TRUE(SameBits(real, cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.5, cannot)));
+  EXPECT_EQ(asked, 2);
+  // Near-chain entries are apart from plain sequential ones with the same inputs.
+  const MatchResult plain = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, true);
+  EXPECT_TRUE(SameBits(plain, real));
+  EXPECT_EQ(cache.counters().misses, 3u);
+  EXPECT_EQ(cache.counters().hits, 2u);
+}
+
+TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
+  Fixture f;
+  MatchCache cache;
+  const auto key = [&](MatchRole role, const ScanMatcherOptions& o, const LaserScan& s,
+                       const std::vector<const LaserScan*>& b, bool penalize, bool refine) {
+    return cache.KeyOf(role, o, s, b, penalize, refine);
+  };
+  const auto base = key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, true, true);
+  ASSERT_FALSE(base.empty());
+  EXPECT_NE(base, key(MatchRole::kLoop, f.options, f.scan, f.base_ptrs, true, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, false, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, true, false));
+  // Each result-affecting option changes the key; threads and branch_and_bound do not.
+  std::vector<ScanMatcherOptions> changed(12, f.options);
+  changed[0].search_dimension = 0.5;
+  changed[1].search_resolution = 0.025;
+  changed[2].smear_deviation = 0.04;
+  changed[3].range_threshold = 11.0;
+  changed[4].coarse_angle_offset = 0.3;
+  changed[5].coarse_angle_resolution = 0.03;
+  changed[6].fine_angle_step = 0.003;
+  changed[7].distance_variance_penalty = 0.1;
+  changed[8].angle_variance_penalty = 0.1;
+  changed[9].minimum_distance_penalty = 0.4;
+  changed[10].minimum_angle_penalty = 0.8;
+  changed[11].use_response_expansion = true;
+  for (const ScanMatcherOptions& o : changed) {
+    EXPECT_NE(base, key(MatchRole::kSequential, o, f.scan, f.base_ptrs, true, true));
+  }
+  ScanMatcherOptions speed = f.options;
+  speed.threads = 3;
+  speed.branch_and_bound = !speed.branch_and_bound;
+  EXPECT_EQ(base, key(MatchRole::kSequential, speed, f.scan, f.base_ptrs, true, true));
+  // The laser geometry counts.
+  LaserGeometry wider = f.scan.geometry();
+  wider.max_range = 81.0;
+  const auto wider_ptr = std::make_shared<const LaserGeometry>(wider);
+  LaserScan other_laser(wider_ptr, f.scan.ranges_ptr(), f.scan.odometric_pose(), f.scan.time());
+  other_laser.log_index = f.scan.log_index;
+  other_laser.SetCorrectedPose(f.scan.corrected_pose());
+  std::vector<LaserScan> other_bases;
+  for (const LaserScan& b : f.bases) {
+    other_bases.emplace_back(wider_ptr, b.ranges_ptr(), b.odometric_pose(), b.time());
+    other_bases.back().log_index = b.log_index;
+  }
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, other_laser, {&other_bases[0], &other_bases[1], &other_bases[2]},
+                      true, true));
+  // One ulp of the scan's pose, of a base pose, the base order and the log index all count.
+  // (The copied bases carry the interning hint of the originals: a stale hint must not count.)
+  LaserScan moved = f.scan;
+  moved.SetSensorPose({std::nextafter(f.scan.SensorPose().x, 1.0), f.scan.SensorPose().y, f.scan.SensorPose().theta});
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, moved, f.base_ptrs, true, true));
+  std::vector<LaserScan> bases = f.bases;
+  bases[1].SetSensorPose({0.2, 0, std::nextafter(0.0, 1.0)});
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, {&bases[0], &bases[1], &bases[2]}, true, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, {f.base_ptrs[1], f.base_ptrs[0], f.base_ptrs[2]},
+                      true, true));
+  LaserScan renumbered = f.scan;
+  renumbered.log_index = 4;
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, renumbered, f.base_ptrs, true, true));
+  // Same readings data, a copied scan: same key.
+  const LaserScan copy = f.scan;
+  EXPECT_EQ(base, key(MatchRole::kSequential, f.options, copy, f.base_ptrs, true, true));
+}
+
+// Base scans are named by interned ids: half a word each, not five.
+TEST(MatchCache, KeysAreCompact) {
+  std::vector<LaserScan> bases;
+  for (int i = 0; i < 70; ++i) bases.push_back(RoomScan({0.01 * i, 0, 0}, i));
+  std::vector<const LaserScan*> ptrs;
+  for (const LaserScan& b : bases) ptrs.push_back(&b);
+  const LaserScan scan = RoomScan({0.7, 0, 0}, 70);
+  MatchCache cache;
+  const auto key = cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, ptrs, true, true);
+  EXPECT_EQ(key.size(), 10u + 35u);
+  EXPECT_EQ(cache.counters().interned, 70u);
+  // The same call again, and through copies of the scans: the same key, no new ids.
+  std::vector<LaserScan> copies = bases;
+  std::vector<const LaserScan*> copy_ptrs;
+  for (const LaserScan& b : copies) copy_ptrs.push_back(&b);
+  EXPECT_EQ(key, cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, copy_ptrs, true, true));
+  EXPECT_EQ(cache.counters().interned, 70u);
+}
+
+// Ids freed by eviction are reused for other scans; keys stay exact: a scan interned under a
+// reused id never matches an entry made for the scan that held the id before.
+TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
+  Fixture f;
+  MatchCacheOptions o;
+  o.byte_budget = 1;  // every finished entry is evicted, freeing its ids
+  MatchCache cache(o);
+  ScanMatcher reference(f.options);
+  ScanMatcher matcher(f.options);
+  std::vector<LaserScan> bases = f.bases;  // keeps the hints of earlier rounds: stale, or reused ids
+  for (int round = 0; round < 3; ++round) {
+    for (LaserScan& b : bases) {
+      const Pose2 p = b.corrected_pose();
+      b.SetCorrectedPose({p.x + 0.01 * round, p.y, p.theta});
+    }
+    const std::vector<const LaserScan*> ptrs = {&bases[0], &bases[1], &bases[2]};
+    const MatchResult expected = reference.Match(f.scan, ptrs, true, true);
+    EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, ptrs, true, true), expected));
+  }
+  const MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 3u);
+  EXPECT_EQ(c.interned, 0u);
+  EXPECT_EQ(c.bytes, 0u);
+}
+
+TEST(MatchCache, HitReturnsTheMatchersResult) {
+  Fixture f;
+  ScanMatcher reference(f.options);
+  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, true, true);
+  MatchCache cache;
+  ScanMatcher a(f.options);
+  ScanMatcher b(f.options);
+  EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, a, f.scan, f.base_ptrs, true, true), expected));
+  EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, true, true), expected));
+  // Another flag combination is another entry.
+  const MatchResult coarse = reference.Match(f.scan, f.base_ptrs, false, false);
+  EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, false, false), coarse));
+  const MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 2u);
+  EXPECT_EQ(c.hits, 1u);
+  EXPECT_EQ(c.waits, 0u);
+  EXPECT_EQ(c.entries, 2u);
+  EXPECT_GT(c.bytes, 0u);
+}
+
+TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
+  Fixture f;
+  ScanMatcher reference(f.options);
+  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, true, true);
+  MatchCache cache;
+  constexpr int kThreads = 4;
+  std::vector<MatchResult> results(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      ScanMatcher matcher(f.options);
+      results[t] = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, true);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (const MatchResult& r : results) EXPECT_TRUE(SameBits(r, expected));
+  const MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 1u);
+  EXPECT_EQ(c.hits + c.waits, static_cast<std::uint64_t>(kThreads - 1));
+}
+
+TEST(MatchCache, EvictionNeverChangesResults) {
+  Fixture f;
+  MatchCacheOptions o;
+  o.byte_budget = 1;  // every insertion evicts
+  MatchCache cache(o);
+  ScanMatcher reference(f.options);
+  ScanMatcher matcher(f.options);
+  for (int round = 0; round < 2; ++round) {
+    for (bool penalize : {false, true}) {
+      const MatchResult expected = reference.Match(f.scan, f.base_ptrs, penalize, true);
+      EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, penalize, true), expected));
+    }
+  }
+  const MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 4u);
+  EXPECT_EQ(c.evictions, 4u);
+  EXPECT_EQ(c.entries, 0u);
+  EXPECT_EQ(c.interned, 0u);
+  EXPECT_EQ(c.bytes, 0u);
+}
+
+// Eviction drops the least recently used entries: a hit keeps an old entry.
+TEST(MatchCache, EvictionKeepsRecentlyUsedEntries) {
+  Fixture f;
+  ScanMatcher matcher(f.options);
+  std::size_t two_entries = 0;
+  {
+    MatchCache probe;
+    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);
+    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);
+    two_entries = probe.counters().bytes;
+  }
+  MatchCacheOptions o;
+  o.byte_budget = two_entries + 8;  // a third entry evicts
+  MatchCache cache(o);
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);   // B
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A used again
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, true);   // C: evicts B
+  MatchCacheCounters c = cache.counters();
+  EXPECT_EQ(c.misses, 3u);
+  EXPECT_EQ(c.hits, 1u);
+  EXPECT_GE(c.evictions, 1u);
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A: still there
+  EXPECT_EQ(cache.counters().hits, 2u);
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);  // B: gone
+  EXPECT_EQ(cache.counters().misses, 4u);
+}
+
+// Two runs of the same log sharing a cache: the second is served entirely from it and both
+// equal a run without the cache, bit for bit.
+TEST(MatchCache, LogRunsWithAndWithoutTheCacheAreIdentical) {
+  sim::SimulationOptions so;
+  so.world = "office";
+  auto log = std::make_shared<io::LaserLog>(sim::Simulate(so).log);
+  log->scans.resize(std::min<std::size_t>(log->scans.size(), 120));
+  const MapperParams params;
+  const RunResult plain = RunLog(log, params);
+  SharedWork shared;
+  shared.match_cache = std::make_shared<MatchCache>();
+  for (int run = 0; run < 2; ++run) {
+    LogRunner runner(log, params, shared);
+    runner.RunToEnd();
+    const auto trajectory = runner.Trajectory();
+    ASSERT_EQ(trajectory.size(), plain.trajectory.size());
+    for (std::size_t i = 0; i < trajectory.size(); ++i) {
+      ASSERT_EQ(trajectory[i].pose, plain.trajectory[i].pose) << "scan " << i << " run " << run;
+    }
+  }
+  const MatchCacheCounters c = shared.match_cache->counters();
+  EXPECT_GT(c.misses, 10u);
+  EXPECT_EQ(c.hits, c.misses);  // the second run repeated every call of the first
+  EXPECT_EQ(c.bypassed, 0u);
+}
+
+}  // namespace
+}  // namespace slamtune::slam
