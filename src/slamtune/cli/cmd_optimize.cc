@@ -6,11 +6,9 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
-#include <thread>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/recommendation_files.h"
@@ -50,27 +48,12 @@ struct OptimizeArgs {
   unsigned generations = 60;
   std::size_t divisions = 10;
   unsigned seed = 1;
-  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  bool quiet = false;
-  bool no_share = false;       // evaluate without the shared scan-match cache
-  std::size_t share_mb = 512;  // MB, memory budget of the shared scan-match cache
+  TuningRunOptions run;
 };
 
 // The budget of the main job on the built-in world: a few minutes on 2 cores.
 constexpr std::size_t kBuiltInPopulation = 20;
 constexpr unsigned kBuiltInGenerations = 8;
-
-void EnsureWritableDir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir, 0, "cannot create output folder: " + ec.message());
-  const auto probe = std::filesystem::path(dir) / ".slamtune_write_test";
-  {
-    std::ofstream f(probe);
-    if (!f) throw InputError(dir, 0, "output folder is not writable");
-  }
-  std::filesystem::remove(probe, ec);
-}
 
 // The files whose content the run depends on, by their key in TuningInputOptions::ToJson.
 std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
@@ -154,15 +137,9 @@ void RefuseHeldRun(const std::string& dir, const std::string& db_path) {
 }
 
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
-  optim::MpiWorld world;
-  if (world.rank() > 0) return ServeAsWorker(world);
-  // Rank 0 of several: the workers wait for the setup; any error below stops them (destructor).
-  std::optional<optim::MpiDispatcher> workers;
-  if (world.distributed()) {
-    workers.emplace(world);
-    // One rank per core: rank 0 evaluates on one thread unless --jobs says otherwise.
-    if (app.get_option("--jobs")->count() == 0) args.jobs = 1;
-  }
+  TuningProcess process;
+  if (process.is_worker()) return process.Serve();
+  process.FitJobs(app, args.run);
   const bool resume = !args.resume.empty();
   if (resume && !args.out.empty() && args.out != args.resume) {
     throw InputError("give either --out DIR or --resume DIR, not both with different folders");
@@ -188,7 +165,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
 
   // Preamble: every input is loaded and validated before any work starts.
   optim::OptimizeSettings settings;
-  TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
+  TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet);
   // A named set is checked before any work; the automatic choice waits for the search space.
   if (args.objectives != kAutomaticObjectives) {
     try {
@@ -203,7 +180,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   settings.generations = args.generations;
   settings.divisions = args.divisions;
   settings.seed = args.seed;
-  if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
+  args.run.Validate();
   if (!args.vary.empty() && !args.space_file.empty()) {
     throw InputError("give the search space either with --space or with --vary/--fix, not both");
   }
@@ -219,15 +196,15 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   std::optional<optim::BaseFrontEnd> base_front_end;
   if (args.space_file.empty() && !flag_space && !args.around_base_without_steps) {
-    EnsureWritableDir(dir);
+    EnsureWritableOutputFolder(dir);
     if (!lock) {
       lock.emplace(dir);
       if (!resume) RefuseHeldRun(dir, db_path);
     }
-    probed = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
+    probed = MakeEvaluationContext(inputs, {}, args.run);
     optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
     args.space_file = choice.space_name();
-    if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
+    if (!args.run.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
     base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(),
                                          std::move(choice.map), std::move(choice.trajectory)};
   }
@@ -255,7 +232,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                            flag_space ? "--vary/--fix" : named_space ? "--space" : args.space_file);
   auto context = probed && settings.space.fixed.empty()
                      ? probed
-                     : MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
+                     : MakeEvaluationContext(inputs, settings.space.fixed, args.run);
   // The baseline is the base configuration itself: its values of the varied and the fixed parameters.
   for (const auto& d : settings.space.dimensions) settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);
   for (const auto& [name, value] : settings.space.fixed) {
@@ -269,22 +246,18 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   for (const auto& p : slam::ToNamedValues(inputs.base)) {
     std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);
   }
-  EnsureWritableDir(dir);
+  EnsureWritableOutputFolder(dir);
   if (!lock) {
     lock.emplace(dir);
     if (!resume) RefuseHeldRun(dir, db_path);
   }
   if (!resume) settings.invocation = InvocationJson(args);
-  if (workers) {
-    workers->Setup(WorkerSetup(args.inputs, settings.space.fixed, args.no_share, args.share_mb));
-  }
+  process.SetupWorkers(args.inputs, settings.space.fixed, args.run);
 
   optim::EvaluationStore store(db_path);
-  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
+  Progress progress(args.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
   const std::size_t total = settings.population * (settings.generations + 1);
-  const std::string parallelism =
-      workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
-              : fmt::format("{} job{}", args.jobs, args.jobs == 1 ? "" : "s");
+  const std::string parallelism = process.Parallelism(args.run.jobs);
   progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
                               "seed {}; maps judged by {}; results in {}",
                               settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label,
@@ -293,12 +266,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                   true);
   progress.Finish();
 
-  optim::BatchEvaluator evaluator(
-      [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); }, &store, args.jobs);
-  if (workers) evaluator.SetRemote(&*workers);
+  optim::BatchEvaluator evaluator(EvaluateWith(context), &store, args.run.jobs);
+  process.ShareWith(evaluator);
   optim::OptimizeHooks hooks;
   // Under mpirun the counts are rank 0's own runs (each rank has its own caches).
-  const std::string shared_label = workers ? "rank 0 " : "";
+  const std::string shared_label = process.has_workers() ? "rank 0 " : "";
   hooks.progress = [&progress, context, shared_label, verbose = args.verbose](const std::string& line, bool force) {
     const std::string shared = verbose ? optim::SharedWorkBrief(*context) : std::string();
     progress.Update(shared.empty() ? line : line + " | " + shared_label + shared, force);
@@ -312,7 +284,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
   result.base_front_end = std::move(base_front_end);
   progress.Finish();
-  if (workers) workers->Stop();  // the report's maps are rendered here
+  process.StopWorkers();  // the report's maps are rendered here
 
   const auto* best = result.Find("recommended");
   const slam::MapperParams best_params = context->ParamsFor(best->record.params);
@@ -321,7 +293,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   if (result.verdict_kind == optim::VerdictKind::kBetter) result.changes = files.changes;
   result.how_to_load = HowToLoad(dir);
   const auto summary = report::WriteOptimizeReport(result, dir);
-  if (!args.quiet) {
+  if (!args.run.quiet) {
     std::printf("%s\n\n", result.verdict.c_str());
     for (const auto& c : result.candidates) {
       std::string params;
@@ -353,9 +325,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
                 "(report.html, results.json, tables, maps, figures) to %s\n",
                 result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
     for (const std::string& line : HowToLoad(dir)) std::printf("%s\n", line.c_str());
-    if (workers) {
-      std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
-    }
+    process.PrintWorkersShare(evaluator);
     if (args.verbose) std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
   }
   return 0;
@@ -401,14 +371,9 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
           ->capture_default_str();
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
-      app.add_option("--jobs,-j", args->jobs,
-                     "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs one)");
-      app.add_flag("--quiet,-q", args->quiet, "no progress output");
+      args->run.AddParallelismTo(app);
       app.add_flag("--verbose,-v", args->verbose, "also show how much work the SLAM runs shared (cache statistics)");
-      app.add_flag("--no-share", args->no_share,
-                   "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for timing comparisons)");
-      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter, barycentres an eighth)")
-          ->capture_default_str();
+      args->run.AddSharingTo(app);
       args->inputs.AddTo(app);
       app.footer(
           "Examples:\n"
