@@ -12,6 +12,7 @@
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/recommendation_files.h"
+#include "slamtune/cli/result_neutral_options.h"
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/folder_lock.h"
@@ -49,6 +50,7 @@ struct OptimizeArgs {
   std::size_t divisions = 10;
   unsigned seed = 1;
   TuningRunOptions run;
+  ResultNeutralOptions result_neutral;  // the options that may accompany --resume
 };
 
 // The budget of the main job on the built-in world: a few minutes on 2 cores.
@@ -68,19 +70,6 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"settling", {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
 }
 
-// Whether --resume came alone (with options that do not change results): then the settings
-// come from the run database.
-bool OnlyResumeOptions(const CLI::App& app) {
-  for (const CLI::Option* opt : app.get_options()) {
-    const std::string name = opt->get_name();
-    if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out" &&
-        name != "--no-share" && name != "--share-mb" && name != "--verbose") {
-      return false;
-    }
-  }
-  return true;
-}
-
 // The recorded inputs that are the files named now must still have their recorded content
 // (runs recorded before content hashes were kept are not checked).
 void RequireRecordedContent(const nlohmann::json& invocation, const TuningInputOptions& inputs) {
@@ -93,14 +82,15 @@ void RequireRecordedContent(const nlohmann::json& invocation, const TuningInputO
 }
 
 // --resume DIR: before anything is printed, the run database must be whole (PRAGMA
-// quick_check); alone, --resume takes the settings from it; the input files must be unchanged.
+// quick_check); alone (with options that do not change results), --resume takes the settings
+// from it; the input files must be unchanged.
 void PrepareResume(const std::string& dir, const std::string& db_path, const CLI::App& app, OptimizeArgs& args) {
   if (!std::filesystem::exists(db_path)) {
     throw InputError(dir, 0, "--resume: not a slamtune optimisation folder (no run.sqlite)");
   }
   optim::CheckRunDatabase(db_path);
   std::optional<nlohmann::json> inv = optim::EvaluationStore(db_path).Meta("invocation");
-  if (OnlyResumeOptions(app)) {
+  if (args.result_neutral.OnlyTheseGiven(app)) {
     if (!inv) throw InputError(db_path, 0, "--resume: the run database holds no command line");
     args.inputs = TuningInputOptions::FromJson(inv->at("inputs"));
     args.space_file = inv->at("space");
@@ -338,8 +328,9 @@ const SubcommandRegistrar kRegistrar{{
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<OptimizeArgs>();
       app.add_option("LOG", args->inputs.log, "CARMEN log (.clf/.log, plain or gzip) or a ROS 2 / ROS 1 recording (.mcap, .db3, bag folder, .bag); none: the built-in world");
-      app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)");
-      app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder");
+      ResultNeutralOptions& neutral = args->result_neutral;
+      neutral.Add(app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)"));
+      neutral.Add(app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder"));
       app.add_option("--space", args->space_file,
                      "search-space YAML (vary: NAME: {min, max, step, type}; fix: NAME: V); 'loop' for r and g "
                      "around the base configuration; 'paper' for the seed paper's (r 2..6, g 6..20, p = 0.7, "
@@ -371,9 +362,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
           ->capture_default_str();
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
-      args->run.AddParallelismTo(app);
-      app.add_flag("--verbose,-v", args->verbose, "also show how much work the SLAM runs shared (cache statistics)");
-      args->run.AddSharingTo(app);
+      neutral.Add(args->run.AddParallelismTo(app));
+      neutral.Add(
+          app.add_flag("--verbose,-v", args->verbose, "also show how much work the SLAM runs shared (cache statistics)"));
+      neutral.Add(args->run.AddSharingTo(app));
       args->inputs.AddTo(app);
       app.footer(
           "Examples:\n"
