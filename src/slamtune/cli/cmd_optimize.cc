@@ -271,7 +271,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   hooks.started = [&notice, &dir] {
     notice.emplace(fmt::format("every finished evaluation is saved: continue with `slamtune optimize --resume {}`", dir));
   };
-  optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
+  optim::OptimizeResult result = optim::RunOptimization(
+      settings, evaluator, store, resume ? optim::OptimizationStart::kResume : optim::OptimizationStart::kNew, hooks);
   result.base_front_end = std::move(base_front_end);
   progress.Finish();
   process.StopWorkers();  // the report's maps are rendered here
