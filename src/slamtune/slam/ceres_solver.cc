@@ -56,22 +56,18 @@ struct AngleManifoldFunctor {
   }
 };
 
-ceres::LossFunction* MakeLoss(const std::string& name) {
-  if (name == "HuberLoss") return new ceres::HuberLoss(0.7);
-  if (name == "CauchyLoss") return new ceres::CauchyLoss(0.7);
+ceres::LossFunction* MakeLoss(CeresLoss loss) {
+  switch (loss) {
+    case CeresLoss::kNone: return nullptr;
+    case CeresLoss::kHuber: return new ceres::HuberLoss(0.7);
+    case CeresLoss::kCauchy: return new ceres::CauchyLoss(0.7);
+  }
   return nullptr;
 }
 
 }  // namespace
 
-void CeresOptions::Validate() const {
-  if (loss != "None" && loss != "HuberLoss" && loss != "CauchyLoss") {
-    throw InputError(fmt::format("ceres_loss_function = '{}' is not supported: must be None, HuberLoss or CauchyLoss",
-                                 loss));
-  }
-}
-
-CeresSolver::CeresSolver(const CeresOptions& options) : options_(options) { options_.Validate(); }
+CeresSolver::CeresSolver(const CeresOptions& options) : options_(options) {}
 
 SolveSummary CeresSolver::Solve(std::vector<Pose2>& nodes, std::span<const Edge> edges) const {
   SolveSummary summary;

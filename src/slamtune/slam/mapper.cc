@@ -294,7 +294,7 @@ int Mapper::CorrectPoses() {
   std::vector<std::uint64_t> key;
   std::optional<SolveCache::Solved> stored;
   if (solve_cache_) {
-    key = SolveCache::KeyOf(params_.solver, params_.ceres_loss_function, nodes, graph_.edges());
+    key = SolveCache::KeyOf(NameOf(params_.solver), NameOf(params_.ceres_loss_function), nodes, graph_.edges());
     key.push_back(params_.robot_pose_graph ? 1 : 0);  // how the values are written back
     // The stored barycentres also depend on the laser (range threshold, ...): key it too.
     AppendGeometryKey(*geometry_, &key);
