@@ -1,12 +1,10 @@
 #include "slamtune/slam/ceres_solver.h"
 
 #include <ceres/ceres.h>
-#include <fmt/format.h>
 
 #include <Eigen/Cholesky>
 #include <cmath>
 
-#include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 
 namespace slamtune::slam {

@@ -1,7 +1,5 @@
 #include "slamtune/slam/pose_graph_solver.h"
 
-#include <fmt/format.h>
-
 #include <cmath>
 
 #include "slamtune/common/error.h"
