@@ -51,6 +51,8 @@ namespace {
 using slamtune::Pose2;
 using slamtune::slam::LaserGeometry;
 using slamtune::slam::LaserScan;
+using slamtune::slam::Penalize;
+using slamtune::slam::Refine;
 
 std::vector<LaserScan> IntelScans() {
   const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/intel.clf.gz";
@@ -132,7 +134,7 @@ slamtune::slam::ScanMatcherOptions LoopOptions() {
 // Every iteration runs the same batch of matches: scan i against the `window` scans before
 // it, for i = window, window + stride, ... (30 matches), so runs are comparable.
 template <typename Matcher>
-void RunMatches(benchmark::State& state, Matcher& matcher, std::size_t window, bool penalize, bool refine) {
+void RunMatches(benchmark::State& state, Matcher& matcher, std::size_t window, Penalize penalize, Refine refine) {
   const std::vector<LaserScan>& scans = Scans();
   const std::size_t batch = 30;
   const std::size_t stride = std::max<std::size_t>(1, (scans.size() - window) / batch);
@@ -159,11 +161,11 @@ void RunMatches(benchmark::State& state, Matcher& matcher, std::size_t window, b
 
 void BM_Sequential(benchmark::State& state) {
   slamtune::slam::ScanMatcher matcher(SequentialOptions());
-  RunMatches(state, matcher, 70, true, true);
+  RunMatches(state, matcher, 70, Penalize::kYes, Refine::kYes);
 }
 void BM_ReferenceSequential(benchmark::State& state) {
   slamtune::slam::ReferenceScanMatcher matcher(SequentialOptions());
-  RunMatches(state, matcher, 70, true, true);
+  RunMatches(state, matcher, 70, Penalize::kYes, Refine::kYes);
 }
 // Arg 0: threads; arg 1: branch and bound on (1) or off (0, the exhaustive integer search).
 void BM_LoopCoarse(benchmark::State& state) {
@@ -171,16 +173,16 @@ void BM_LoopCoarse(benchmark::State& state) {
   o.threads = static_cast<int>(state.range(0));
   o.branch_and_bound = state.range(1) != 0;
   slamtune::slam::ScanMatcher matcher(o);
-  RunMatches(state, matcher, 12, false, false);
+  RunMatches(state, matcher, 12, Penalize::kNo, Refine::kNo);
 }
 // The near-chain / loop-fine use of the sequential matcher: no penalty, refined.
 void BM_SequentialUnpenalised(benchmark::State& state) {
   slamtune::slam::ScanMatcher matcher(SequentialOptions());
-  RunMatches(state, matcher, 20, false, true);
+  RunMatches(state, matcher, 20, Penalize::kNo, Refine::kYes);
 }
 void BM_ReferenceLoopCoarse(benchmark::State& state) {
   slamtune::slam::ReferenceScanMatcher matcher(LoopOptions());
-  RunMatches(state, matcher, 12, false, false);
+  RunMatches(state, matcher, 12, Penalize::kNo, Refine::kNo);
 }
 // The correlation-grid build alone (clear, back-face filter, insert, smear) of the
 // sequential matcher's grid from 70 base scans, for the same 30 queries as BM_Sequential.

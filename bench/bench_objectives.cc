@@ -153,7 +153,7 @@ int Run(int argc, char** argv) {
     label = log_path;
   }
   context.log = log;
-  slamtune::optim::DrawWall(context, true);
+  slamtune::optim::DrawWall(context, slamtune::optim::WallDrawing::kDraw);
   std::fprintf(stderr, "drawn wall: %zu of %zu scans drawn along each path\n",
                context.trajectory_map->scan_indices().size(), log->scans.size());
   slamtune::optim::ShareWork(context, 512);

@@ -176,7 +176,7 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
       }
     };
     start = std::chrono::steady_clock::now();
-    result = optim::RunOptimization(settings, evaluator, store, false, hooks);
+    result = optim::RunOptimization(settings, evaluator, store, optim::OptimizationStart::kNew, hooks);
   }
   const double wall = Seconds(start);
   for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix);

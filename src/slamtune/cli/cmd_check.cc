@@ -43,7 +43,7 @@ const SubcommandRegistrar kCheck(Subcommand{
       app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag or CARMEN log")->required();
       app.add_flag("--json", args->json, "Print the report as one JSON object");
       app.add_flag("--strict", args->strict, "Exit 1 when a problem is found");
-      args->input.AddTo(app, false);
+      args->input.AddTo(app, LogInputOptions::MaxScans::kOmit);
       io::CheckOptions& c = args->check;
       const char* limits = "Check limits";
       app.add_option("--gap-factor", c.gap_factor, "a scan gap is longer than this x the median period")

@@ -6,14 +6,13 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
-#include <thread>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/recommendation_files.h"
+#include "slamtune/cli/result_neutral_options.h"
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/folder_lock.h"
@@ -50,27 +49,13 @@ struct OptimizeArgs {
   unsigned generations = 60;
   std::size_t divisions = 10;
   unsigned seed = 1;
-  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  bool quiet = false;
-  bool no_share = false;       // evaluate without the shared scan-match cache
-  std::size_t share_mb = 512;  // MB, memory budget of the shared scan-match cache
+  TuningRunOptions run;
+  ResultNeutralOptions result_neutral;  // the options that may accompany --resume
 };
 
 // The budget of the main job on the built-in world: a few minutes on 2 cores.
 constexpr std::size_t kBuiltInPopulation = 20;
 constexpr unsigned kBuiltInGenerations = 8;
-
-void EnsureWritableDir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir, 0, "cannot create output folder: " + ec.message());
-  const auto probe = std::filesystem::path(dir) / ".slamtune_write_test";
-  {
-    std::ofstream f(probe);
-    if (!f) throw InputError(dir, 0, "output folder is not writable");
-  }
-  std::filesystem::remove(probe, ec);
-}
 
 // The files whose content the run depends on, by their key in TuningInputOptions::ToJson.
 std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
@@ -85,19 +70,6 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"settling", {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
 }
 
-// Whether --resume came alone (with options that do not change results): then the settings
-// come from the run database.
-bool OnlyResumeOptions(const CLI::App& app) {
-  for (const CLI::Option* opt : app.get_options()) {
-    const std::string name = opt->get_name();
-    if (opt->count() > 0 && name != "--resume" && name != "--jobs" && name != "--quiet" && name != "--out" &&
-        name != "--no-share" && name != "--share-mb" && name != "--verbose") {
-      return false;
-    }
-  }
-  return true;
-}
-
 // The recorded inputs that are the files named now must still have their recorded content
 // (runs recorded before content hashes were kept are not checked).
 void RequireRecordedContent(const nlohmann::json& invocation, const TuningInputOptions& inputs) {
@@ -109,15 +81,62 @@ void RequireRecordedContent(const nlohmann::json& invocation, const TuningInputO
   io::RequireSameContent(invocation.at("input_hashes").get<std::map<std::string, std::string>>(), same_path);
 }
 
+// The run's folder (--out DIR, or --resume DIR) and its run database. One process at a time
+// works in it, from before its database is read to the last report file (FolderLock).
+class RunFolder {
+ public:
+  // InputError for --out and --resume naming different folders, or neither.
+  RunFolder(const std::string& out, const std::string& resume) : resume_(!resume.empty()) {
+    if (resume_ && !out.empty() && out != resume) {
+      throw InputError("give either --out DIR or --resume DIR, not both with different folders");
+    }
+    dir_ = resume_ ? resume : out;
+    if (dir_.empty()) throw InputError("--out DIR is required (or --resume DIR to continue a run)");
+    db_path_ = (std::filesystem::path(dir_) / "run.sqlite").string();
+  }
+
+  const std::string& dir() const { return dir_; }
+  const std::string& db_path() const { return db_path_; }
+  bool resume() const { return resume_; }
+
+  // Locks the folder now if it can be locked before the inputs are read: it exists and can be
+  // written (else EnsureLocked creates and checks it after the inputs, and locks it then).
+  void LockIfWritable() {
+    if (std::filesystem::is_directory(dir_) && access(dir_.c_str(), W_OK) == 0) lock_.emplace(dir_);
+  }
+  // Creates and checks the folder, and locks it unless it is locked already; a new run's
+  // folder must not hold another.
+  void EnsureLocked() {
+    EnsureWritableOutputFolder(dir_);
+    if (!lock_) {
+      lock_.emplace(dir_);
+      if (!resume_) RefuseHeldRun();
+    }
+  }
+  void RefuseHeldRun() const {
+    if (std::filesystem::exists(db_path_)) {
+      throw InputError(dir_, 0, "already holds an optimisation; use --resume DIR or a new --out");
+    }
+  }
+
+ private:
+  std::string dir_;
+  std::string db_path_;
+  bool resume_ = false;
+  std::optional<FolderLock> lock_;
+};
+
 // --resume DIR: before anything is printed, the run database must be whole (PRAGMA
-// quick_check); alone, --resume takes the settings from it; the input files must be unchanged.
-void PrepareResume(const std::string& dir, const std::string& db_path, const CLI::App& app, OptimizeArgs& args) {
+// quick_check); alone (with options that do not change results), --resume takes the settings
+// from it; the input files must be unchanged.
+void PrepareResume(const RunFolder& folder, const CLI::App& app, OptimizeArgs& args) {
+  const std::string& db_path = folder.db_path();
   if (!std::filesystem::exists(db_path)) {
-    throw InputError(dir, 0, "--resume: not a slamtune optimisation folder (no run.sqlite)");
+    throw InputError(folder.dir(), 0, "--resume: not a slamtune optimisation folder (no run.sqlite)");
   }
   optim::CheckRunDatabase(db_path);
   std::optional<nlohmann::json> inv = optim::EvaluationStore(db_path).Meta("invocation");
-  if (OnlyResumeOptions(app)) {
+  if (args.result_neutral.OnlyTheseGiven(app)) {
     if (!inv) throw InputError(db_path, 0, "--resume: the run database holds no command line");
     args.inputs = TuningInputOptions::FromJson(inv->at("inputs"));
     args.space_file = inv->at("space");
@@ -141,55 +160,17 @@ void PrepareResume(const std::string& dir, const std::string& db_path, const CLI
   if (inv) RequireRecordedContent(*inv, args.inputs);
 }
 
-// Whether the folder can be locked before the inputs are read: it exists and can be written
-// (else the output folder is created and checked after the inputs, and locked then).
-bool CanLockNow(const std::string& dir) {
-  return std::filesystem::is_directory(dir) && access(dir.c_str(), W_OK) == 0;
-}
-
-void RefuseHeldRun(const std::string& dir, const std::string& db_path) {
-  if (std::filesystem::exists(db_path)) {
-    throw InputError(dir, 0, "already holds an optimisation; use --resume DIR or a new --out");
-  }
-}
-
-int RunOptimize(OptimizeArgs args, const CLI::App& app) {
-  optim::MpiWorld world;
-  if (world.rank() > 0) return ServeAsWorker(world);
-  // Rank 0 of several: the workers wait for the setup; any error below stops them (destructor).
-  std::optional<optim::MpiDispatcher> workers;
-  if (world.distributed()) {
-    workers.emplace(world);
-    // One rank per core: rank 0 evaluates on one thread unless --jobs says otherwise.
-    if (app.get_option("--jobs")->count() == 0) args.jobs = 1;
-  }
-  const bool resume = !args.resume.empty();
-  if (resume && !args.out.empty() && args.out != args.resume) {
-    throw InputError("give either --out DIR or --resume DIR, not both with different folders");
-  }
-  const std::string dir = resume ? args.resume : args.out;
-  if (dir.empty()) throw InputError("--out DIR is required (or --resume DIR to continue a run)");
-  const std::string db_path = (std::filesystem::path(dir) / "run.sqlite").string();
-
-  // One process at a time in the folder, from before its database is read to the last report file.
-  std::optional<FolderLock> lock;
-  if (CanLockNow(dir)) lock.emplace(dir);
-  if (resume) {
-    PrepareResume(dir, db_path, app, args);
-  } else {
-    RefuseHeldRun(dir, db_path);
-  }
-
-  const bool built_in = args.inputs.log.empty();
-  if (built_in && !resume) {
-    if (app.get_option("--population")->count() == 0) args.population = kBuiltInPopulation;
-    if (app.get_option("--generations")->count() == 0) args.generations = kBuiltInGenerations;
-  }
-
-  // Preamble: every input is loaded and validated before any work starts.
+// Everything the optimisation runs with, decided before its first SLAM run.
+struct OptimizationPlan {
   optim::OptimizeSettings settings;
-  TuningInputs inputs = LoadTuningInputs(args.inputs, args.quiet);
-  // A named set is checked before any work; the automatic choice waits for the search space.
+  std::shared_ptr<optim::SlamEvaluationContext> context;
+  std::optional<optim::BaseFrontEnd> base_front_end;  // when a run of the base configuration chose the space
+};
+
+// The settings from the command line: a named objective set (checked before any work; the
+// automatic choice waits for the search space), early stopping and the budget.
+optim::OptimizeSettings CommandLineSettings(const OptimizeArgs& args) {
+  optim::OptimizeSettings settings;
   if (args.objectives != kAutomaticObjectives) {
     try {
       settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
@@ -203,7 +184,11 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   settings.generations = args.generations;
   settings.divisions = args.divisions;
   settings.seed = args.seed;
-  if (args.jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", args.jobs));
+  return settings;
+}
+
+// The search space given by --vary/--fix, if any.
+std::optional<optim::SearchSpace> FlagSpace(const OptimizeArgs& args) {
   if (!args.vary.empty() && !args.space_file.empty()) {
     throw InputError("give the search space either with --space or with --vary/--fix, not both");
   }
@@ -211,40 +196,71 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
     throw InputError("--fix goes with --vary (it holds a value while others are searched); to change a base "
                      "value, use --set NAME=VALUE");
   }
-  std::optional<optim::SearchSpace> flag_space;
-  if (!args.vary.empty()) flag_space = optim::SearchSpace::FromFlags(args.vary, args.fix);
+  if (args.vary.empty()) return std::nullopt;
+  return optim::SearchSpace::FromFlags(args.vary, args.fix);
+}
+
+// No --space: loop closure, or the front end when the base configuration's map breaks there
+// (one SLAM run, after the output folder is known to be usable). Sets args.space_file to the
+// chosen space's name and returns the context of that run.
+std::shared_ptr<optim::SlamEvaluationContext> ProbeDefaultSpace(const TuningInputs& inputs, RunFolder& folder,
+                                                                OptimizeArgs& args, OptimizationPlan& plan) {
+  folder.EnsureLocked();
+  auto probed = MakeEvaluationContext(inputs, {}, args.run);
+  optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
+  args.space_file = choice.space_name();
+  if (!args.run.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
+  plan.base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(),
+                                            std::move(choice.map), std::move(choice.trajectory)};
+  return probed;
+}
+
+// --space NAME or FILE (or, resuming a folder written before named spaces, r and g around the base).
+optim::SearchSpace NamedOrFileSpace(const OptimizeArgs& args, const slam::MapperParams& base) {
+  if (args.space_file == "loop") return optim::SearchSpace::Loop(base);
+  if (args.around_base_without_steps) {
+    return optim::SearchSpace::AroundBase(base.loop_search_maximum_distance, base.loop_match_minimum_chain_size);
+  }
+  if (args.space_file == "paper") return optim::SearchSpace::PaperDefault();
+  if (args.space_file == "front-end") return optim::SearchSpace::FrontEnd(base);
+  return optim::SearchSpace::FromYaml(args.space_file);
+}
+
+// What the report says of the base configuration and the run's inputs, and what of them must
+// match on --resume: the baseline is the base configuration itself, its values of the varied
+// and the fixed parameters.
+void DescribeBase(const TuningInputs& inputs, const TuningInputOptions& input_options,
+                  optim::OptimizeSettings& settings) {
+  for (const auto& d : settings.space.dimensions) {
+    settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);
+  }
+  for (const auto& [name, value] : settings.space.fixed) {
+    settings.default_assignment[name] = slam::GetNumeric(inputs.base, name);
+  }
+  settings.base_label = inputs.base_label;
+  settings.log_path = inputs.log_label;
+  settings.log_input = inputs.log_input;
+  settings.relations_path = inputs.relations_label;
+  settings.engine = {{"inputs", input_options.ToJson()}, {"base", nlohmann::json::object()}};
+  for (const auto& p : slam::ToNamedValues(inputs.base)) {
+    std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);
+  }
+}
+
+// Preamble: the settings, the search space, the objective set and the evaluation context,
+// each validated before any work starts.
+OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder, OptimizeArgs& args) {
+  OptimizationPlan plan;
+  optim::OptimizeSettings& settings = plan.settings;
+  settings = CommandLineSettings(args);
+  args.run.Validate();
+  const std::optional<optim::SearchSpace> flag_space = FlagSpace(args);
   settings.Validate();  // the budget, before any run
-  // No --space: loop closure, or the front end when the base configuration's map breaks there
-  // (one SLAM run, after the output folder is known to be usable).
   std::shared_ptr<optim::SlamEvaluationContext> probed;
-  std::optional<optim::BaseFrontEnd> base_front_end;
   if (args.space_file.empty() && !flag_space && !args.around_base_without_steps) {
-    EnsureWritableDir(dir);
-    if (!lock) {
-      lock.emplace(dir);
-      if (!resume) RefuseHeldRun(dir, db_path);
-    }
-    probed = MakeEvaluationContext(inputs, {}, args.no_share, args.share_mb);
-    optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
-    args.space_file = choice.space_name();
-    if (!args.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
-    base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(),
-                                         std::move(choice.map), std::move(choice.trajectory)};
+    probed = ProbeDefaultSpace(inputs, folder, args, plan);
   }
-  if (flag_space) {
-    settings.space = *flag_space;
-  } else if (args.space_file == "loop") {
-    settings.space = optim::SearchSpace::Loop(inputs.base);
-  } else if (args.around_base_without_steps) {
-    settings.space = optim::SearchSpace::AroundBase(inputs.base.loop_search_maximum_distance,
-                                                    inputs.base.loop_match_minimum_chain_size);
-  } else if (args.space_file == "paper") {
-    settings.space = optim::SearchSpace::PaperDefault();
-  } else if (args.space_file == "front-end") {
-    settings.space = optim::SearchSpace::FrontEnd(inputs.base);
-  } else {
-    settings.space = optim::SearchSpace::FromYaml(args.space_file);
-  }
+  settings.space = flag_space ? *flag_space : NamedOrFileSpace(args, inputs.base);
   if (args.objectives == kAutomaticObjectives) {
     args.objectives = optim::ObjectiveSet::NameOf(optim::DefaultObjectiveSetKind(settings.space.VariesMapSampling()));
     settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
@@ -253,112 +269,136 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   const bool named_space = args.space_file == "loop" || args.space_file == "paper" || args.space_file == "front-end";
   optim::CheckSpaceAgainst(settings.space, inputs.base,
                            flag_space ? "--vary/--fix" : named_space ? "--space" : args.space_file);
-  auto context = probed && settings.space.fixed.empty()
-                     ? probed
-                     : MakeEvaluationContext(inputs, settings.space.fixed, args.no_share, args.share_mb);
-  const bool draw_wall = settings.objectives.Uses(optim::Objective::kDrawnWallCells);
-  optim::DrawWall(*context, draw_wall);
-  // The baseline is the base configuration itself: its values of the varied and the fixed parameters.
-  for (const auto& d : settings.space.dimensions) settings.default_assignment[d.name] = slam::GetNumeric(inputs.base, d.name);
-  for (const auto& [name, value] : settings.space.fixed) {
-    settings.default_assignment[name] = slam::GetNumeric(inputs.base, name);
-  }
-  settings.base_label = inputs.base_label;
-  settings.log_path = inputs.log_label;
-  settings.log_input = inputs.log_input;
-  settings.relations_path = inputs.relations_label;
-  settings.engine = {{"inputs", args.inputs.ToJson()}, {"base", nlohmann::json::object()}};
-  for (const auto& p : slam::ToNamedValues(inputs.base)) {
-    std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);
-  }
-  EnsureWritableDir(dir);
-  if (!lock) {
-    lock.emplace(dir);
-    if (!resume) RefuseHeldRun(dir, db_path);
-  }
-  if (!resume) settings.invocation = InvocationJson(args);
-  if (workers) {
-    workers->Setup(WorkerSetup(args.inputs, settings.space.fixed, args.no_share, args.share_mb, draw_wall));
-  }
+  plan.context =
+      probed && settings.space.fixed.empty() ? probed : MakeEvaluationContext(inputs, settings.space.fixed, args.run);
+  optim::DrawWall(*plan.context, optim::WallDrawingFor(settings.objectives));
+  DescribeBase(inputs, args.inputs, settings);
+  return plan;
+}
 
-  optim::EvaluationStore store(db_path);
-  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
-  const std::size_t total = settings.population * (settings.generations + 1);
-  const std::string parallelism =
-      workers ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world.size(), args.jobs)
-              : fmt::format("{} job{}", args.jobs, args.jobs == 1 ? "" : "s");
-  progress.Update(fmt::format("optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
-                              "seed {}; maps judged by {}; results in {}",
-                              settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label,
-                              settings.population, settings.generations, total, parallelism, settings.seed,
-                              settings.objectives.Describe(), dir),
-                  true);
-  progress.Finish();
-
-  optim::BatchEvaluator evaluator(
-      [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); }, &store, args.jobs);
-  if (workers) evaluator.SetRemote(&*workers);
+// The progress hooks of the optimisation: its lines (with the shared work's counts under
+// --verbose) and the candidates' maps.
+optim::OptimizeHooks ProgressHooks(Progress& progress, const std::shared_ptr<optim::SlamEvaluationContext>& context,
+                                   const TuningProcess& process, bool verbose) {
   optim::OptimizeHooks hooks;
   // Under mpirun the counts are rank 0's own runs (each rank has its own caches).
-  const std::string shared_label = workers ? "rank 0 " : "";
-  hooks.progress = [&progress, context, shared_label, verbose = args.verbose](const std::string& line, bool force) {
+  const std::string shared_label = process.has_workers() ? "rank 0 " : "";
+  hooks.progress = [&progress, context, shared_label, verbose](const std::string& line, bool force) {
     const std::string shared = verbose ? optim::SharedWorkBrief(*context) : std::string();
     progress.Update(shared.empty() ? line : line + " | " + shared_label + shared, force);
   };
   hooks.render_map = [context](const optim::Assignment& a) { return optim::RenderSlamMap(*context, a); };
+  return hooks;
+}
+
+// The first line: what is optimised on what, with which budget and parallelism, and where to.
+std::string Headline(const optim::OptimizeSettings& settings, const TuningInputs& inputs,
+                     const std::string& parallelism, const std::string& dir) {
+  const std::size_t total = settings.population * (settings.generations + 1);
+  return fmt::format(
+      "optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
+      "seed {}; maps judged by {}; results in {}",
+      settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label, settings.population,
+      settings.generations, total, parallelism, settings.seed, settings.objectives.Describe(), dir);
+}
+
+// One line per candidate: its parameters, objectives, loop closures and errors.
+void PrintCandidates(const optim::OptimizeResult& result, const optim::SearchSpace& space) {
+  for (const auto& c : result.candidates) {
+    std::string params;
+    for (const auto& d : space.dimensions) {
+      params += fmt::format("{}{}={:.4g}", params.empty() ? "" : " ", d.name, c.record.params.at(d.name));
+    }
+    std::string objectives;
+    for (optim::Objective o : result.objectives.objectives()) {
+      objectives += fmt::format("{}{} {:.4g}", objectives.empty() ? "" : " ", optim::InfoOf(o).short_name,
+                                optim::ValueOf(c.record, o));
+    }
+    std::printf(
+        "%-12s %s | %s | loops %d%s\n", c.label.c_str(), params.c_str(), objectives.c_str(), c.record.loop_closures,
+        c.record.has_gt
+            ? fmt::format(" | trans {:.4f} m rot {:.3f} deg", c.record.trans_mean_m, c.record.rot_mean_deg).c_str()
+            : "");
+  }
+}
+
+// The verdict, the candidates, the changes to make and what was written, on stdout.
+void PrintOutcome(const optim::OptimizeResult& result, const RecommendationFiles& files, std::size_t report_files,
+                  const optim::SearchSpace& space, const std::string& base_label, const std::string& dir) {
+  std::printf("%s\n\n", result.verdict.c_str());
+  PrintCandidates(result, space);
+  if (result.verdict_kind == optim::VerdictKind::kBetter) {
+    std::printf("\nchanges from %s (best_change.yaml):\n", base_label.c_str());
+    for (const std::string& change : files.changes) std::printf("  %s\n", change.c_str());
+  } else {
+    std::printf("\nno change from %s: best.yaml is that configuration unchanged, best_change.yaml sets nothing\n",
+                base_label.c_str());
+  }
+  std::printf("\nNSGA-III %s.", result.settling.c_str());
+  std::printf(
+      "\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote the parameter files (best.yaml, best_change.yaml for "
+      "slam_toolbox; best_slam_karto.yaml, best_slam_karto_change.yaml for slam_karto) and %zu report files "
+      "(report.html, results.json, tables, maps, figures) to %s\n",
+      result.evaluation_count, result.cache_hits, result.wall_s, report_files, dir.c_str());
+  for (const std::string& line : HowToLoad(dir)) std::printf("%s\n", line.c_str());
+}
+
+int RunOptimize(OptimizeArgs args, const CLI::App& app) {
+  TuningProcess process;
+  if (process.is_worker()) return process.Serve();
+  process.FitJobs(app, args.run);
+  RunFolder folder(args.out, args.resume);
+  folder.LockIfWritable();
+  if (folder.resume()) {
+    PrepareResume(folder, app, args);
+  } else {
+    folder.RefuseHeldRun();
+  }
+  if (args.inputs.log.empty() && !folder.resume()) {  // the built-in world's budget
+    if (app.get_option("--population")->count() == 0) args.population = kBuiltInPopulation;
+    if (app.get_option("--generations")->count() == 0) args.generations = kBuiltInGenerations;
+  }
+
+  // Preamble: every input is loaded and validated before any work starts.
+  const TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet);
+  OptimizationPlan plan = PlanOptimization(inputs, folder, args);
+  const optim::OptimizeSettings& settings = plan.settings;
+  folder.EnsureLocked();
+  if (!folder.resume()) plan.settings.invocation = InvocationJson(args);
+  process.SetupWorkers(args.inputs, settings.space.fixed, args.run, optim::WallDrawingFor(settings.objectives));
+
+  optim::EvaluationStore store(folder.db_path());
+  Progress progress(args.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
+  progress.Update(Headline(settings, inputs, process.Parallelism(args.run.jobs), folder.dir()), true);
+  progress.Finish();
+
+  optim::BatchEvaluator evaluator(EvaluateWith(plan.context), &store, args.run.jobs);
+  process.ShareWith(evaluator);
+  optim::OptimizeHooks hooks = ProgressHooks(progress, plan.context, process, args.verbose);
   // From the committed start on, Ctrl-C or a kill says how to go on.
   std::optional<SignalNotice> notice;
-  hooks.started = [&notice, &dir] {
-    notice.emplace(fmt::format("every finished evaluation is saved: continue with `slamtune optimize --resume {}`", dir));
+  hooks.started = [&notice, &folder] {
+    notice.emplace(
+        fmt::format("every finished evaluation is saved: continue with `slamtune optimize --resume {}`", folder.dir()));
   };
-  optim::OptimizeResult result = optim::RunOptimization(settings, evaluator, store, resume, hooks);
-  result.base_front_end = std::move(base_front_end);
+  optim::OptimizeResult result = optim::RunOptimization(
+      settings, evaluator, store, folder.resume() ? optim::OptimizationStart::kResume : optim::OptimizationStart::kNew,
+      hooks);
+  result.base_front_end = std::move(plan.base_front_end);
   progress.Finish();
-  if (workers) workers->Stop();  // the report's maps are rendered here
+  process.StopWorkers();  // the report's maps are rendered here
 
   const auto* best = result.Find("recommended");
-  const slam::MapperParams best_params = context->ParamsFor(best->record.params);
-  const RecommendationFiles files = WriteRecommendationFiles(dir, inputs, best_params, result);
+  const slam::MapperParams best_params = plan.context->ParamsFor(best->record.params);
+  const RecommendationFiles files = WriteRecommendationFiles(folder.dir(), inputs, best_params, result);
   for (const std::string& warning : files.warnings) std::fprintf(stderr, "slamtune: warning: %s\n", warning.c_str());
   if (result.verdict_kind == optim::VerdictKind::kBetter) result.changes = files.changes;
-  result.how_to_load = HowToLoad(dir);
-  const auto summary = report::WriteOptimizeReport(result, dir);
-  if (!args.quiet) {
-    std::printf("%s\n\n", result.verdict.c_str());
-    for (const auto& c : result.candidates) {
-      std::string params;
-      for (const auto& d : settings.space.dimensions) {
-        params += fmt::format("{}{}={:.4g}", params.empty() ? "" : " ", d.name, c.record.params.at(d.name));
-      }
-      std::string objectives;
-      for (optim::Objective o : result.objectives.objectives()) {
-        objectives += fmt::format("{}{} {:.4g}", objectives.empty() ? "" : " ", optim::InfoOf(o).short_name,
-                                  optim::ValueOf(c.record, o));
-      }
-      std::printf("%-12s %s | %s | loops %d%s\n", c.label.c_str(), params.c_str(), objectives.c_str(),
-                  c.record.loop_closures,
-                  c.record.has_gt ? fmt::format(" | trans {:.4f} m rot {:.3f} deg", c.record.trans_mean_m,
-                                                c.record.rot_mean_deg)
-                                        .c_str()
-                                  : "");
-    }
-    if (result.verdict_kind == optim::VerdictKind::kBetter) {
-      std::printf("\nchanges from %s (best_change.yaml):\n", inputs.base_label.c_str());
-      for (const std::string& change : files.changes) std::printf("  %s\n", change.c_str());
-    } else {
-      std::printf("\nno change from %s: best.yaml is that configuration unchanged, best_change.yaml sets nothing\n",
-                  inputs.base_label.c_str());
-    }
-    std::printf("\nNSGA-III %s.", result.settling.c_str());
-    std::printf("\n%zu SLAM runs, %zu cache hits, %.1f s. Wrote the parameter files (best.yaml, best_change.yaml for "
-                "slam_toolbox; best_slam_karto.yaml, best_slam_karto_change.yaml for slam_karto) and %zu report files "
-                "(report.html, results.json, tables, maps, figures) to %s\n",
-                result.evaluation_count, result.cache_hits, result.wall_s, summary.files.size(), dir.c_str());
-    for (const std::string& line : HowToLoad(dir)) std::printf("%s\n", line.c_str());
-    if (workers) {
-      std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world.size() - 1);
-    }
-    if (args.verbose) std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
+  result.how_to_load = HowToLoad(folder.dir());
+  const auto summary = report::WriteOptimizeReport(result, folder.dir());
+  if (!args.run.quiet) {
+    PrintOutcome(result, files, summary.files.size(), settings.space, inputs.base_label, folder.dir());
+    process.PrintWorkersShare(evaluator);
+    if (args.verbose) std::printf("%s\n", optim::SharedWorkReport(*plan.context).c_str());
   }
   return 0;
 }
@@ -370,8 +410,9 @@ const SubcommandRegistrar kRegistrar{{
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<OptimizeArgs>();
       app.add_option("LOG", args->inputs.log, "CARMEN log (.clf/.log, plain or gzip) or a ROS 2 / ROS 1 recording (.mcap, .db3, bag folder, .bag); none: the built-in world");
-      app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)");
-      app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder");
+      ResultNeutralOptions& neutral = args->result_neutral;
+      neutral.Add(app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)"));
+      neutral.Add(app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder"));
       app.add_option("--space", args->space_file,
                      "search-space YAML (vary: NAME: {min, max, step, type}; fix: NAME: V); 'loop' for r and g "
                      "around the base configuration; 'paper' for the seed paper's (r 2..6, g 6..20, p = 0.7, "
@@ -404,14 +445,10 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
           ->capture_default_str();
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
-      app.add_option("--jobs,-j", args->jobs,
-                     "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs one)");
-      app.add_flag("--quiet,-q", args->quiet, "no progress output");
-      app.add_flag("--verbose,-v", args->verbose, "also show how much work the SLAM runs shared (cache statistics)");
-      app.add_flag("--no-share", args->no_share,
-                   "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for timing comparisons)");
-      app.add_option("--share-mb", args->share_mb, "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores a quarter, barycentres an eighth)")
-          ->capture_default_str();
+      neutral.Add(args->run.AddParallelismTo(app));
+      neutral.Add(app.add_flag("--verbose,-v", args->verbose,
+                               "also show how much work the SLAM runs shared (cache statistics)"));
+      neutral.Add(args->run.AddSharingTo(app));
       args->inputs.AddTo(app);
       app.footer(
           "Examples:\n"

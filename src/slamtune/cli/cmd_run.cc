@@ -108,44 +108,48 @@ slam::MapperParams ResolveParams(const RunArgs& args) {
   return params;
 }
 
-int Run(const RunArgs& args) {
-  const slam::MapperParams params = ResolveParams(args);
-  std::vector<io::Relation> relations;
-  if (!args.relations.empty()) relations = io::ReadRelations(args.relations);  // fail before the long run
-  sim::SimulationOptions world;
-  world.world = args.world;
-  world.seed = args.world_seed;
-  if (args.log.empty()) world.Validate();
-  EnsureOutputDir(args.out);
-  const auto file = [&](const char* name) { return (std::filesystem::path(args.out) / name).string(); };
+std::string OutFile(const std::string& out, const char* name) { return (std::filesystem::path(out) / name).string(); }
 
-  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto, 10.0);
+// The log a run works on and the relations its error is measured against.
+struct RunInput {
   std::shared_ptr<const io::LaserLog> log;
-  std::string log_label = args.log, relations_label = args.relations;
+  std::vector<io::Relation> relations;  // --relations, or the simulated world's own
+  std::string log_label;                // the path, or "built-in world NAME (seed N)"
+  std::string relations_label;          // the path, "simulated (true trajectory)", or empty
+};
+
+// Reads the log, or simulates `world` without one (whose relations stand in for missing
+// --relations); says what was read, and checks that the relations match scans of the log.
+void LoadRunLog(const RunArgs& args, const sim::SimulationOptions& world, RunInput& input) {
+  input.log_label = args.log;
+  input.relations_label = args.relations;
   if (args.log.empty()) {
     if (!args.quiet) {
       std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n", args.world.c_str(),
                    args.world_seed);
     }
     sim::Simulation simulation = sim::Simulate(world);
-    log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
-    log_label = fmt::format("built-in world {} (seed {})", args.world, args.world_seed);
+    input.log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
+    input.log_label = fmt::format("built-in world {} (seed {})", args.world, args.world_seed);
     if (args.relations.empty()) {
-      relations = std::move(simulation.relations);
-      relations_label = "simulated (true trajectory)";
+      input.relations = std::move(simulation.relations);
+      input.relations_label = "simulated (true trajectory)";
     }
   } else {
-    log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
+    input.log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
   }
   if (!args.quiet) {
-    for (const std::string& line : io::DescribeLogInput(*log)) std::fprintf(stderr, "%s\n", line.c_str());
+    for (const std::string& line : io::DescribeLogInput(*input.log)) std::fprintf(stderr, "%s\n", line.c_str());
   }
   if (!args.relations.empty()) {
-    const metrics::RelationMatch match = metrics::RequireMatchingRelations(*log, relations, args.relations);
+    const metrics::RelationMatch match = metrics::RequireMatchingRelations(*input.log, input.relations, args.relations);
     if (!args.quiet && !match.complete()) WarnPartialRelations(args.relations, match);
   }
+}
 
-  slam::LogRunner runner(log, params);
+// The SLAM run over the whole log, with progress every 50 scans and, with --trace, every match
+// and solve written to the trace file.
+void RunSlam(const RunArgs& args, slam::LogRunner& runner, Progress& progress) {
   std::shared_ptr<slam::RunTrace> trace;
   if (!args.trace.empty()) {
     trace = std::make_shared<slam::RunTrace>(args.trace);
@@ -160,43 +164,78 @@ int Run(const RunArgs& args) {
                                 FormatDuration(elapsed)));
   });
   if (trace) trace->Close();
-  const slam::RunSummary summary = runner.Summary();
-  const std::vector<io::TimedPose> trajectory = runner.Trajectory();
+}
 
-  // Map from the final poses (§8), then its metrics.
+// The map of the final poses (§8) and its metrics.
+struct RunMap {
+  io::MapImage image;
+  metrics::MapQuality quality;
+  double wall_s = 0;  // building, writing and measuring it
+};
+
+// Builds the map, writes map.pgm/map.yaml and map.png, and measures it. InputError when no
+// reading lies within the range threshold (nothing to map).
+RunMap WriteMap(const slam::LogRunner& runner, const slam::MapperParams& params, const std::string& log_label,
+                const std::string& out) {
   const auto map_start = std::chrono::steady_clock::now();
   slam::OccupancyGridOptions grid_options;
   grid_options.resolution = params.resolution;
   grid_options.min_pass_through = params.min_pass_through;
   grid_options.occupancy_threshold = params.occupancy_threshold;
-  const io::MapImage map =
-      slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid_options)
-          .ToMapImage();
-  if (map.width <= 0 || map.height <= 0) {
+  RunMap map;
+  map.image = slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid_options)
+                  .ToMapImage();
+  if (map.image.width <= 0 || map.image.height <= 0) {
     throw InputError(log_label, 0,
                      fmt::format("nothing to map: no reading of the {} processed scans lies within the range "
                                  "threshold ({} m); are all readings no-returns?",
                                  runner.mapper().scans().size(), runner.mapper().range_threshold()));
   }
-  io::WriteMapServer(map, file("map.yaml"));
-  io::WritePng(map, file("map.png"));
-  const metrics::MapQuality quality = metrics::ComputeMapQuality(map);
-  const double map_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - map_start).count();
+  io::WriteMapServer(map.image, OutFile(out, "map.yaml"));
+  io::WritePng(map.image, OutFile(out, "map.png"));
+  map.quality = metrics::ComputeMapQuality(map.image);
+  map.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - map_start).count();
+  return map;
+}
 
-  io::WriteTrajectory(file("trajectory.txt"), trajectory);
-  WriteLoopClosuresCsv(file("loop_closures.csv"), summary);
+// trajectory.txt, loop_closures.csv, front_end.csv and front_end_map.png; returns where the
+// front end may have lost its place.
+slam::FrontEndEvidence WriteRunTables(const slam::LogRunner& runner, const slam::RunSummary& summary,
+                                      const std::vector<io::TimedPose>& trajectory, const io::MapImage& map,
+                                      const std::string& out) {
+  io::WriteTrajectory(OutFile(out, "trajectory.txt"), trajectory);
+  WriteLoopClosuresCsv(OutFile(out, "loop_closures.csv"), summary);
   const slam::FrontEndEvidence front_end = slam::AssessFrontEnd(runner.sequential_matches());
-  WriteFrontEndCsv(file("front_end.csv"), runner.sequential_matches(), front_end);
+  WriteFrontEndCsv(OutFile(out, "front_end.csv"), runner.sequential_matches(), front_end);
   report::WriteBytes(
       report::EncodePng(report::RenderFrontEndMap(map, trajectory, runner.sequential_matches(), front_end)),
-      file("front_end_map.png"));
+      OutFile(out, "front_end_map.png"));
+  return front_end;
+}
 
+nlohmann::json MapJson(const metrics::MapQuality& quality) {
+  return {{"width", quality.width},
+          {"height", quality.height},
+          {"resolution", quality.resolution},
+          {"occupied_cells", quality.occupied_cells},
+          {"free_cells", quality.free_cells},
+          {"unknown_cells", quality.unknown_cells},
+          {"occupied_ratio", quality.occupied_ratio},
+          {"corner_pixels", quality.corner_pixels},
+          {"corners", quality.corners},
+          {"enclosed_areas", quality.enclosed_areas},
+          {"message", quality.message}};
+}
+
+// run.json's counts, timing, laser, input, parameters and map metrics.
+nlohmann::json RunJson(const slam::RunSummary& summary, const io::LaserLog& log, const std::string& log_label,
+                       const slam::MapperParams& params, const RunMap& map) {
   nlohmann::json edges = nlohmann::json::object(), duplicates = nlohmann::json::object();
   for (int k = 0; k < slam::kNumEdgeKinds; ++k) {
     edges[slam::EdgeKindName(static_cast<slam::EdgeKind>(k))] = summary.edges[k];
     duplicates[slam::EdgeKindName(static_cast<slam::EdgeKind>(k))] = summary.duplicate_edges[k];
   }
-  nlohmann::json run = {
+  return {
       {"log", log_label},
       {"scans", summary.scans_read},
       {"scans_offered", summary.scans_offered},
@@ -212,57 +251,76 @@ int Run(const RunArgs& args) {
       {"solver_runs", summary.solver_runs},
       {"solver_wall_s", summary.solver_wall_s},
       {"wall_s", summary.wall_s},
-      {"map_wall_s", map_wall_s},
+      {"map_wall_s", map.wall_s},
       {"log_duration_s", summary.log_duration_s},
       {"realtime_factor", summary.wall_s > 0 ? Number(summary.log_duration_s / summary.wall_s) : nullptr},
       {"laser_max_range_m", summary.laser_max_range},
       {"range_threshold_m", summary.range_threshold},
-      {"no_return_value_m", Number(log->no_return_value)},
-      {"no_return_rule", log->no_return_rule},
-      {"input", io::DescribeLogInput(*log)},
+      {"no_return_value_m", Number(log.no_return_value)},
+      {"no_return_rule", log.no_return_rule},
+      {"input", io::DescribeLogInput(log)},
       {"params", ParamsJson(params)},
-      {"map",
-       {{"width", quality.width},
-        {"height", quality.height},
-        {"resolution", quality.resolution},
-        {"occupied_cells", quality.occupied_cells},
-        {"free_cells", quality.free_cells},
-        {"unknown_cells", quality.unknown_cells},
-        {"occupied_ratio", quality.occupied_ratio},
-        {"corner_pixels", quality.corner_pixels},
-        {"corners", quality.corners},
-        {"enclosed_areas", quality.enclosed_areas},
-        {"message", quality.message}}},
+      {"map", MapJson(map.quality)},
   };
-  std::string gt_line;
-  if (!relations_label.empty()) {
-    const metrics::GtError e = metrics::ComputeGtError(trajectory, relations);
-    nlohmann::json gt = nlohmann::json::object();
-    for (const auto& [key, value] : metrics::GtErrorFields(e)) gt[key] = Number(value);
-    gt["relations_used"] = e.relations_used;
-    gt["relations_missing"] = e.relations_missing;
-    gt["relations_file"] = relations_label;
-    run["gt_error"] = gt;
-    gt_line = fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e.trans_mean_m,
-                          e.trans_std_m, e.rot_mean_deg, e.rot_std_deg, e.relations_used);
-  }
-  run["front_end"] = report::FrontEndEvidenceJson(front_end);
-  run["peak_memory_mb"] = PeakMemoryMb();
-  WriteFileAtomically(file("run.json"), run.dump(2) + "\n");
+}
 
-  progress.Finish();
+// With relations: their error in run.json ("gt_error") and the summary's ", error ..." part.
+std::string AddGtError(const std::vector<io::TimedPose>& trajectory, const RunInput& input, nlohmann::json& run) {
+  if (input.relations_label.empty()) return "";
+  const metrics::GtError e = metrics::ComputeGtError(trajectory, input.relations);
+  nlohmann::json gt = nlohmann::json::object();
+  for (const auto& [key, value] : metrics::GtErrorFields(e)) gt[key] = Number(value);
+  gt["relations_used"] = e.relations_used;
+  gt["relations_missing"] = e.relations_missing;
+  gt["relations_file"] = input.relations_label;
+  run["gt_error"] = gt;
+  return fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e.trans_mean_m, e.trans_std_m,
+                     e.rot_mean_deg, e.rot_std_deg, e.relations_used);
+}
+
+void PrintRunSummary(const slam::RunSummary& summary, const std::string& gt_line, const std::string& out,
+                     const slam::FrontEndEvidence& front_end) {
   const std::string dropped =
       summary.scans_wrong_reading_count > 0
           ? fmt::format(", {} scans dropped (reading count differs from the first scan's)", summary.scans_wrong_reading_count)
           : "";
   std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s; wrote %s\n", summary.scans_read,
               summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, dropped.c_str(),
-              gt_line.c_str(), args.out.c_str());
+              gt_line.c_str(), out.c_str());
   std::printf("%s\n", front_end.Summary().c_str());
   if (front_end.points_at_front_end()) {
     std::printf("  (front_end_map.png marks them on the map, front_end.csv has every match; the default "
                 "optimize searches the front-end parameters for this log)\n");
   }
+}
+
+int Run(const RunArgs& args) {
+  const slam::MapperParams params = ResolveParams(args);
+  RunInput input;
+  if (!args.relations.empty()) input.relations = io::ReadRelations(args.relations);  // fail before the long run
+  sim::SimulationOptions world;
+  world.world = args.world;
+  world.seed = args.world_seed;
+  if (args.log.empty()) world.Validate();
+  EnsureOutputDir(args.out);
+
+  Progress progress(args.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto, 10.0);
+  LoadRunLog(args, world, input);
+  slam::LogRunner runner(input.log, params);
+  RunSlam(args, runner, progress);
+  const slam::RunSummary summary = runner.Summary();
+  const std::vector<io::TimedPose> trajectory = runner.Trajectory();
+
+  const RunMap map = WriteMap(runner, params, input.log_label, args.out);
+  const slam::FrontEndEvidence front_end = WriteRunTables(runner, summary, trajectory, map.image, args.out);
+  nlohmann::json run = RunJson(summary, *input.log, input.log_label, params, map);
+  const std::string gt_line = AddGtError(trajectory, input, run);
+  run["front_end"] = report::FrontEndEvidenceJson(front_end);
+  run["peak_memory_mb"] = PeakMemoryMb();
+  WriteFileAtomically(OutFile(args.out, "run.json"), run.dump(2) + "\n");
+
+  progress.Finish();
+  PrintRunSummary(summary, gt_line, args.out, front_end);
   return 0;
 }
 

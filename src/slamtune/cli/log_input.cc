@@ -6,11 +6,13 @@
 
 namespace slamtune::cli {
 
-void LogInputOptions::AddTo(CLI::App& app, bool with_max_scans) {
+void LogInputOptions::AddTo(CLI::App& app, MaxScans max_scans_option) {
   app.add_flag("--lenient", lenient, "Skip malformed records or messages (and count them) instead of failing");
   app.add_option("--no-return", no_return,
                  "Readings >= this value (m) are no-returns; overrides the log's own (PARAM, range_max, detected)");
-  if (with_max_scans) app.add_option("--max-scans", max_scans, "Read only the first N laser scans (0 = all)");
+  if (max_scans_option == MaxScans::kOffer) {
+    app.add_option("--max-scans", max_scans, "Read only the first N laser scans (0 = all)");
+  }
   app.add_option("--beams", beams,
                  "Scans whose beam count or angles differ from the others': 'resample' onto the most common "
                  "geometry, or 'strict' (dropped, as Karto does)")

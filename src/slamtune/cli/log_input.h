@@ -23,8 +23,10 @@ struct LogInputOptions {
   std::vector<double> laser_offset;  // X,Y,YAW when given
   double max_odom_gap_s = 0.5;
 
-  // Adds the options to `app`; --max-scans only when `with_max_scans`.
-  void AddTo(CLI::App& app, bool with_max_scans = true);
+  // Whether a command offers --max-scans (one that checks a whole log does not).
+  enum class MaxScans { kOffer, kOmit };
+  // Adds the options to `app`.
+  void AddTo(CLI::App& app, MaxScans max_scans_option = MaxScans::kOffer);
   // Throws InputError naming the option for a bad value.
   io::LogReadOptions ToReadOptions() const;
   // Everything that changes what is read, for the run database and --resume.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -132,42 +133,123 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
   return in;
 }
 
-void ShareWork(optim::SlamEvaluationContext& context, bool no_share, std::size_t share_mb) {
+std::vector<CLI::Option*> TuningRunOptions::AddParallelismTo(CLI::App& app) {
+  return {app.add_option("--jobs,-j", jobs,
+                         "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs "
+                         "one)"),
+          app.add_flag("--quiet,-q", quiet, "no progress output")};
+}
+
+std::vector<CLI::Option*> TuningRunOptions::AddSharingTo(CLI::App& app) {
+  return {app.add_flag("--no-share", no_share,
+                       "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for "
+                       "timing comparisons)"),
+          app.add_option("--share-mb", share_mb,
+                         "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores "
+                         "a quarter, barycentres an eighth)")
+              ->capture_default_str()};
+}
+
+void TuningRunOptions::Validate() const {
+  if (jobs < 1) throw InputError(fmt::format("--jobs = {} is out of range: must be >= 1", jobs));
+}
+
+int TuningRunOptions::DefaultJobs() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+void ShareWork(optim::SlamEvaluationContext& context, const TuningRunOptions& run) {
   context.shared_work = {};
   context.map_scores = nullptr;
-  if (no_share) return;
-  if (share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
-  optim::ShareWork(context, share_mb);
+  if (run.no_share) return;
+  if (run.share_mb == 0) throw InputError("--share-mb = 0 is out of range: must be >= 1 (or use --no-share)");
+  optim::ShareWork(context, run.share_mb);
 }
 
 std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const TuningInputs& inputs,
                                                                     const std::map<std::string, double>& fixed,
-                                                                    bool no_share, std::size_t share_mb) {
+                                                                    const TuningRunOptions& run) {
   auto context = std::make_shared<optim::SlamEvaluationContext>();
   context->log = inputs.log;
   context->relations = inputs.relations;
   context->base = inputs.base;
-  ShareWork(*context, no_share, share_mb);
+  ShareWork(*context, run);
   // Checked with the varied values by the command (a fixed value may fit only with them).
   for (const auto& [name, value] : fixed) slam::AssignNumeric(context->base, name, value);
   return context;
 }
 
+optim::EvaluateFn EvaluateWith(std::shared_ptr<const optim::SlamEvaluationContext> context) {
+  return [context = std::move(context)](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
+}
+
 nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                           bool no_share, std::size_t share_mb, bool draw_wall) {
-  return {{"inputs", inputs.ToJson()}, {"fixed", fixed},        {"no_share", no_share},
-          {"share_mb", share_mb},      {"draw_wall", draw_wall}};
+                           const TuningRunOptions& run, optim::WallDrawing drawing) {
+  return {{"inputs", inputs.ToJson()},
+          {"fixed", fixed},
+          {"no_share", run.no_share},
+          {"share_mb", run.share_mb},
+          {"draw_wall", drawing == optim::WallDrawing::kDraw}};
+}
+
+void CreateOutputFolder(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir, 0, "cannot create output folder: " + ec.message());
+}
+
+void EnsureWritableOutputFolder(const std::string& dir) {
+  CreateOutputFolder(dir);
+  const auto probe = std::filesystem::path(dir) / ".slamtune_write_test";
+  {
+    std::ofstream f(probe);
+    if (!f) throw InputError(dir, 0, "output folder is not writable");
+  }
+  std::error_code ec;
+  std::filesystem::remove(probe, ec);
 }
 
 int ServeAsWorker(const optim::MpiWorld& world) {
   optim::ServeEvaluations(world, [](const nlohmann::json& setup) -> optim::EvaluateFn {
     const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), true);
-    auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(),
-                                         setup.at("no_share").get<bool>(), setup.at("share_mb").get<std::size_t>());
-    optim::DrawWall(*context, setup.at("draw_wall").get<bool>());
-    return [context](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
+    TuningRunOptions run;
+    run.no_share = setup.at("no_share").get<bool>();
+    run.share_mb = setup.at("share_mb").get<std::size_t>();
+    auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(), run);
+    optim::DrawWall(*context, setup.at("draw_wall").get<bool>() ? optim::WallDrawing::kDraw : optim::WallDrawing::kSkip);
+    return EvaluateWith(std::move(context));
   });
   return 0;
+}
+
+TuningProcess::TuningProcess() {
+  if (world_.distributed() && world_.rank() == 0) workers_.emplace(world_);
+}
+
+void TuningProcess::FitJobs(const CLI::App& app, TuningRunOptions& run) const {
+  if (workers_ && app.get_option("--jobs")->count() == 0) run.jobs = 1;
+}
+
+void TuningProcess::SetupWorkers(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
+                                 const TuningRunOptions& run, optim::WallDrawing drawing) {
+  if (workers_) workers_->Setup(WorkerSetup(inputs, fixed, run, drawing));
+}
+
+void TuningProcess::ShareWith(optim::BatchEvaluator& evaluator) {
+  if (workers_) evaluator.SetRemote(&*workers_);
+}
+
+void TuningProcess::StopWorkers() {
+  if (workers_) workers_->Stop();
+}
+
+std::string TuningProcess::Parallelism(int jobs) const {
+  return workers_ ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world_.size(), jobs)
+                  : fmt::format("{} job{}", jobs, jobs == 1 ? "" : "s");
+}
+
+void TuningProcess::PrintWorkersShare(const optim::BatchEvaluator& evaluator) const {
+  if (workers_) {
+    std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world_.size() - 1);
+  }
 }
 
 }  // namespace slamtune::cli

@@ -74,7 +74,8 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
   std::vector<EvaluationRecord> fresh(todo.size());
   std::atomic<std::size_t> next{0};
   // Bookkeeping of one finished evaluation, local or remote.
-  auto finish = [&](std::size_t t, EvaluationRecord record, bool remote) {
+  enum class RanOn { kThisProcess, kWorkerRank };
+  auto finish = [&](std::size_t t, EvaluationRecord record, RanOn ran_on) {
     const std::size_t i = todo[t];
     fresh[t] = std::move(record);
     if (store_) store_->Put(fresh[t]);  // committed at once: an interruption loses nothing finished
@@ -83,7 +84,7 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
       std::lock_guard guard(mutex_);
       memory_[keys[i]] = fresh[t];
       ++stats_.evaluated;
-      if (remote) ++stats_.remote;
+      if (ran_on == RanOn::kWorkerRank) ++stats_.remote;
       if (fresh[t].status != "ok") ++stats_.failed;
       stats_.busy_s += fresh[t].wall_s;
       snapshot = stats_;
@@ -97,7 +98,7 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
   auto worker = [&] {
     for (std::size_t t = next++; t < todo.size(); t = next++) {
       const std::size_t i = todo[t];
-      finish(t, RunGuarded(evaluate_, batch[i], keys[i]), false);
+      finish(t, RunGuarded(evaluate_, batch[i], keys[i]), RanOn::kThisProcess);
     }
   };
   const bool use_remote = remote_ != nullptr && remote_->slots() > 0 && !todo.empty();
@@ -120,7 +121,7 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
               SLAMTUNE_CHECK(t < todo.size());
               record.key = keys[todo[t]];
               record.params = batch[todo[t]];
-              finish(t, std::move(record), true);
+              finish(t, std::move(record), RanOn::kWorkerRank);
             });
       } catch (...) {
         next = todo.size();  // local threads stop taking work; finished ones are stored

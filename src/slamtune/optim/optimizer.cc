@@ -120,17 +120,15 @@ std::string BestObjectives(const ObjectiveSet& objectives, const std::vector<std
   return out;
 }
 
-}  // namespace
-
-OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
-                               bool resume, const OptimizeHooks& hooks) {
-  // Preamble: validate everything before any work.
+// Preamble, before any work: with kResume the stored run's settings must equal `settings`;
+// a new run needs a run database without one and stores them. Returns settings.ToJson().
+nlohmann::json OpenRun(const OptimizeSettings& settings, EvaluationStore& store, OptimizationStart start) {
   settings.Validate();
   const nlohmann::json settings_json = settings.ToJson();
   const auto stored_raw = store.Settings();
   const std::optional<nlohmann::json> stored =
       stored_raw ? std::optional<nlohmann::json>(UpgradedSettings(*stored_raw)) : std::nullopt;
-  if (resume) {
+  if (start == OptimizationStart::kResume) {
     if (!stored) throw InputError(store.path(), 0, "--resume: this folder holds no slamtune optimisation");
     if (*stored != settings_json) {
       std::string diff;
@@ -145,132 +143,202 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
     }
     store.StartRun(settings_json, settings.invocation);
   }
-  if (hooks.started) hooks.started();
+  return settings_json;
+}
 
-  const auto start = Clock::now();
-  auto shared = std::shared_ptr<BatchEvaluator>(&evaluator, [](BatchEvaluator*) {});
-  pagmo::problem problem{TuningProblem(settings.space, settings.objectives, shared)};
+// Generation `generation` as saved: {"x": decisions, "f": objectives, "rng": state}.
+GenerationSnapshot SnapshotOf(unsigned generation, const nlohmann::json& saved) {
+  return {static_cast<int>(generation), saved.at("x").get<std::vector<std::vector<double>>>(),
+          saved.at("f").get<std::vector<std::vector<double>>>()};
+}
 
-  OptimizeResult result;
-  result.log_path = settings.log_path;
-  result.log_input = settings.log_input;
-  result.relations_path = settings.relations_path;
-  result.space = settings.space;
-  result.objectives = settings.objectives;
-  result.settings = settings_json;
+GenerationSnapshot StoredSnapshot(const EvaluationStore& store, unsigned generation) {
+  return SnapshotOf(generation, *store.Generation(static_cast<int>(generation)));
+}
 
-  const unsigned total_gens = settings.generations;
-  std::vector<unsigned> snapshot_gens{1, std::max(1u, total_gens / 2), total_gens};
-  snapshot_gens.erase(std::unique(snapshot_gens.begin(), snapshot_gens.end()), snapshot_gens.end());
+// Generations 1, half of `last` and `last`, without repeats.
+std::vector<unsigned> FigureGenerations(unsigned last) {
+  std::vector<unsigned> gens{1, std::max(1u, last / 2), last};
+  gens.erase(std::unique(gens.begin(), gens.end()), gens.end());
+  return gens;
+}
 
-  unsigned done_gens = 0;
-  std::vector<std::vector<double>> current_f;  // objectives of the latest population
+// The generations of one optimisation: generation 0 (or, resuming, the last saved one), then
+// NSGA-III until the budget is spent or the answer has settled; each finished generation is
+// saved, shown and fed to the settling rule, and the figures' generations are kept.
+class Generations {
+ public:
+  Generations(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
+              const OptimizeHooks& hooks, Clock::time_point start);
+
+  // Generation 0, or with kResume the last saved generation and the generator's state; the
+  // settling rule sees every saved generation again.
+  void Begin(OptimizationStart start);
+  // NSGA-III over the generations left, unless the run has settled.
+  void Evolve();
+
+  const pagmo::population& population() const { return pop_; }
+  unsigned done() const { return done_gens_; }
+  const SettlingRule& settling() const { return settling_; }
+  // Generations 1, G/2 and G of the budget G, or 1, s/2 and s of a run settled at s, in order.
+  std::vector<GenerationSnapshot> Snapshots() const;
+
+ private:
+  // Whether a progress line is shown whenever it comes (generation ends, announcements) or
+  // only when the progress display is due for one (OptimizeHooks::progress's `force`).
+  enum class Show { kWhenDue, kAlways };
+  // The progress line during generation `gen` or at its end.
+  void Report(unsigned gen, Show show);
+  void Announce(const std::string& line) const {
+    if (hooks_.progress) hooks_.progress(line, /*force=*/true);
+  }
+  void StartFromGenerationZero();
+  void RestoreGeneration(int saved);
+  nsga3::CallbackAction Finished(const nsga3::GenerationRecord& record, const std::string& state);
+
+  const OptimizeSettings& settings_;
+  BatchEvaluator& evaluator_;
+  EvaluationStore& store_;
+  const OptimizeHooks& hooks_;
+  const Clock::time_point start_;
+  const unsigned total_gens_;
+  const std::vector<unsigned> snapshot_gens_;
+  pagmo::problem problem_;
+  pagmo::population pop_;
+  std::string rng_state_;
+  unsigned done_gens_ = 0;
   // Progress counts what the summary counts: SLAM runs stored (those of an interrupted earlier
   // process included) and requests served without a run. The time left extrapolates this
   // process's finished generations.
-  const std::size_t runs_before = store.Count();
-  unsigned first_gen_here = 0;  // the generation this process started from (0 unless resumed)
-  auto report = [&](unsigned gen, bool force) {
-    if (!hooks.progress) return;
-    const auto st = evaluator.stats();
-    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-    const double rate = elapsed > 0 ? st.evaluated / elapsed * 60.0 : 0.0;
-    // A fresh run also spent its time on generation 0.
-    const unsigned gens_here = done_gens - first_gen_here + (first_gen_here == 0 ? 1 : 0);
-    const double left = gens_here > 0 ? elapsed / gens_here * (total_gens - done_gens) : -1;
-    hooks.progress(fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}", gen,
-                               total_gens, runs_before + st.evaluated, st.cache_hits, rate,
-                               BestObjectives(settings.objectives, current_f), FormatDuration(left)),
-                   force);
-  };
+  const std::size_t runs_before_;
+  // The generation this process started from (0 unless resumed).
+  unsigned first_gen_here_ = 0;
+  std::vector<std::vector<double>> current_f_;  // objectives of the latest population
+  SettlingRule settling_;
+  std::vector<GenerationSnapshot> snapshots_;
+};
 
-  // Generation 0 is the initial population; when resuming, start from the last saved one.
-  pagmo::population pop(problem, 0u, settings.seed);
-  std::string rng_state;
-  const int last_saved = resume ? store.LastGeneration() : -1;
+Generations::Generations(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
+                         const OptimizeHooks& hooks, Clock::time_point start)
+    : settings_(settings),
+      evaluator_(evaluator),
+      store_(store),
+      hooks_(hooks),
+      start_(start),
+      total_gens_(settings.generations),
+      snapshot_gens_(FigureGenerations(settings.generations)),
+      problem_(TuningProblem(settings.space, settings.objectives,
+                             std::shared_ptr<BatchEvaluator>(&evaluator, [](BatchEvaluator*) {}))),
+      pop_(problem_, 0u, settings.seed),
+      runs_before_(store.Count()),
+      settling_(settings.settling, settings.space) {}
+
+void Generations::Report(unsigned gen, Show show) {
+  if (!hooks_.progress) return;
+  const auto st = evaluator_.stats();
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+  const double rate = elapsed > 0 ? st.evaluated / elapsed * 60.0 : 0.0;
+  // A fresh run also spent its time on generation 0.
+  const unsigned gens_here = done_gens_ - first_gen_here_ + (first_gen_here_ == 0 ? 1 : 0);
+  const double left = gens_here > 0 ? elapsed / gens_here * (total_gens_ - done_gens_) : -1;
+  hooks_.progress(fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}", gen,
+                              total_gens_, runs_before_ + st.evaluated, st.cache_hits, rate,
+                              BestObjectives(settings_.objectives, current_f_), FormatDuration(left)),
+                  show == Show::kAlways);
+}
+
+void Generations::StartFromGenerationZero() {
+  Announce(fmt::format("generation 0: {} random parameter sets", settings_.population));
+  pop_ = InitialPopulation(problem_, settings_.population, settings_.seed);
+  store_.PutGeneration(
+      0, PopulationJson({pop_.get_x().begin(), pop_.get_x().end()}, {pop_.get_f().begin(), pop_.get_f().end()}, ""));
+  if (hooks_.progress && total_gens_ > 0) {
+    const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    Announce(BudgetEstimateLine(settings_.population, total_gens_, evaluator_.stats().evaluated, seconds,
+                                settings_.settling.enabled));
+  }
+}
+
+void Generations::RestoreGeneration(int saved_generation) {
+  const nlohmann::json saved = *store_.Generation(saved_generation);
+  const auto xs = saved.at("x").get<std::vector<std::vector<double>>>();
+  const auto fs = saved.at("f").get<std::vector<std::vector<double>>>();
+  for (std::size_t i = 0; i < xs.size(); ++i) pop_.push_back(xs[i], fs[i]);
+  rng_state_ = saved.at("rng").get<std::string>();
+  done_gens_ = static_cast<unsigned>(saved_generation);
+  first_gen_here_ = done_gens_;
+  Announce(fmt::format("resuming after generation {}/{}", done_gens_, total_gens_));
+}
+
+void Generations::Begin(OptimizationStart start) {
+  const int last_saved = start == OptimizationStart::kResume ? store_.LastGeneration() : -1;
   if (last_saved >= 0) {
-    const nlohmann::json saved = *store.Generation(last_saved);
-    const auto xs = saved.at("x").get<std::vector<std::vector<double>>>();
-    const auto fs = saved.at("f").get<std::vector<std::vector<double>>>();
-    for (std::size_t i = 0; i < xs.size(); ++i) pop.push_back(xs[i], fs[i]);
-    rng_state = saved.at("rng").get<std::string>();
-    done_gens = static_cast<unsigned>(last_saved);
-    first_gen_here = done_gens;
-    if (hooks.progress) hooks.progress(fmt::format("resuming after generation {}/{}", done_gens, total_gens), true);
+    RestoreGeneration(last_saved);
   } else {
-    if (hooks.progress) hooks.progress(fmt::format("generation 0: {} random parameter sets", settings.population), true);
-    pop = InitialPopulation(problem, settings.population, settings.seed);
-    store.PutGeneration(0, PopulationJson({pop.get_x().begin(), pop.get_x().end()},
-                                          {pop.get_f().begin(), pop.get_f().end()}, ""));
-    if (hooks.progress && total_gens > 0) {
-      const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      hooks.progress(BudgetEstimateLine(settings.population, total_gens, evaluator.stats().evaluated, seconds,
-                                        settings.settling.enabled),
-                     true);
-    }
+    StartFromGenerationZero();
   }
-  current_f.assign(pop.get_f().begin(), pop.get_f().end());
+  current_f_.assign(pop_.get_f().begin(), pop_.get_f().end());
   // The settling rule sees every finished generation, the saved ones replayed on a resume.
-  SettlingRule settling(settings.settling, settings.space);
-  for (unsigned g = 1; g <= done_gens; ++g) {
-    const nlohmann::json saved = *store.Generation(static_cast<int>(g));
-    settling.Update(g, saved.at("x").get<std::vector<std::vector<double>>>(),
-                    saved.at("f").get<std::vector<std::vector<double>>>());
+  for (unsigned g = 1; g <= done_gens_; ++g) {
+    const GenerationSnapshot saved = StoredSnapshot(store_, g);
+    settling_.Update(g, saved.decisions, saved.objectives);
   }
-  RequireAnySuccess(RecordsOf(evaluator, settings.space, {pop.get_x().begin(), pop.get_x().end()}),
-                    done_gens == 0 ? "the initial population" : "the saved population");
-  for (unsigned g : snapshot_gens) {  // figures of generations finished before a resume
-    if (g > done_gens) continue;
-    if (auto saved = store.Generation(static_cast<int>(g))) {
-      result.snapshots.push_back({static_cast<int>(g), saved->at("x").get<std::vector<std::vector<double>>>(),
-                                  saved->at("f").get<std::vector<std::vector<double>>>()});
-    }
+  RequireAnySuccess(RecordsOf(evaluator_, settings_.space, {pop_.get_x().begin(), pop_.get_x().end()}),
+                    done_gens_ == 0 ? "the initial population" : "the saved population");
+  for (unsigned g : snapshot_gens_) {  // figures of generations finished before a resume
+    if (g > done_gens_) continue;
+    if (auto saved = store_.Generation(static_cast<int>(g))) snapshots_.push_back(SnapshotOf(g, *saved));
   }
+}
 
-  if (done_gens < total_gens && !settling.settled()) {
-    nsga3::Nsga3Options options;
-    options.generations = total_gens - done_gens;
-    options.divisions = settings.divisions;
-    options.population_size = settings.population;
-    nsga3::Nsga3 algorithm(options, settings.seed);
-    if (!rng_state.empty()) algorithm.RestoreRngState(rng_state);
-    algorithm.set_bfe(pagmo::bfe(pagmo::member_bfe{}));
-    evaluator.SetProgressCallback(
-        [&](const EvaluationRecord&, const BatchEvaluatorStats&) { report(done_gens + 1, false); });
-    algorithm.set_generation_callback([&](const nsga3::GenerationRecord& record, const std::string& state) {
-      // Saved first: a kill after this line loses nothing of this generation.
-      store.PutGeneration(static_cast<int>(done_gens + 1), PopulationJson(record.x, record.f, state));
-      ++done_gens;
-      current_f = record.f;
-      if (std::find(snapshot_gens.begin(), snapshot_gens.end(), done_gens) != snapshot_gens.end()) {
-        result.snapshots.push_back({static_cast<int>(done_gens), record.x, record.f});
-      }
-      report(done_gens, true);
-      if (!settling.Update(done_gens, record.x, record.f)) return nsga3::CallbackAction::kContinue;
-      if (hooks.progress) hooks.progress(settling.Describe(total_gens), true);
-      return nsga3::CallbackAction::kStop;
-    });
-    pop = algorithm.evolve(pop);
-    evaluator.SetProgressCallback(nullptr);
+nsga3::CallbackAction Generations::Finished(const nsga3::GenerationRecord& record, const std::string& state) {
+  // Saved first: a kill after this line loses nothing of this generation.
+  store_.PutGeneration(static_cast<int>(done_gens_ + 1), PopulationJson(record.x, record.f, state));
+  ++done_gens_;
+  current_f_ = record.f;
+  if (std::find(snapshot_gens_.begin(), snapshot_gens_.end(), done_gens_) != snapshot_gens_.end()) {
+    snapshots_.push_back({static_cast<int>(done_gens_), record.x, record.f});
   }
+  Report(done_gens_, Show::kAlways);
+  if (!settling_.Update(done_gens_, record.x, record.f)) return nsga3::CallbackAction::kContinue;
+  Announce(settling_.Describe(total_gens_));
+  return nsga3::CallbackAction::kStop;
+}
 
-  // A settled run's figures are generations 1, s/2 and s, whether it settled now or before a resume.
-  if (settling.settled()) {
-    const unsigned s = settling.settled_at();
-    std::vector<unsigned> gens{1, std::max(1u, s / 2), s};
-    gens.erase(std::unique(gens.begin(), gens.end()), gens.end());
-    result.snapshots.clear();
-    for (unsigned g : gens) {
-      const nlohmann::json saved = *store.Generation(static_cast<int>(g));
-      result.snapshots.push_back({static_cast<int>(g), saved.at("x").get<std::vector<std::vector<double>>>(),
-                                  saved.at("f").get<std::vector<std::vector<double>>>()});
-    }
+void Generations::Evolve() {
+  if (done_gens_ >= total_gens_ || settling_.settled()) return;
+  nsga3::Nsga3Options options;
+  options.generations = total_gens_ - done_gens_;
+  options.divisions = settings_.divisions;
+  options.population_size = settings_.population;
+  nsga3::Nsga3 algorithm(options, settings_.seed);
+  if (!rng_state_.empty()) algorithm.RestoreRngState(rng_state_);
+  algorithm.set_bfe(pagmo::bfe(pagmo::member_bfe{}));
+  evaluator_.SetProgressCallback(
+      [this](const EvaluationRecord&, const BatchEvaluatorStats&) { Report(done_gens_ + 1, Show::kWhenDue); });
+  algorithm.set_generation_callback(
+      [this](const nsga3::GenerationRecord& record, const std::string& state) { return Finished(record, state); });
+  pop_ = algorithm.evolve(pop_);
+  evaluator_.SetProgressCallback(nullptr);
+}
+
+std::vector<GenerationSnapshot> Generations::Snapshots() const {
+  std::vector<GenerationSnapshot> snapshots;
+  if (settling_.settled()) {
+    // A settled run's figures are generations 1, s/2 and s, whether it settled now or before a resume.
+    for (unsigned g : FigureGenerations(settling_.settled_at())) snapshots.push_back(StoredSnapshot(store_, g));
+  } else {
+    snapshots = snapshots_;
   }
+  std::sort(snapshots.begin(), snapshots.end(),
+            [](const auto& a, const auto& b) { return a.generation < b.generation; });
+  return snapshots;
+}
 
-  // Choosing the answer.
-  const std::vector<pagmo::vector_double> final_x(pop.get_x().begin(), pop.get_x().end());
-  const std::vector<EvaluationRecord> final_records = RecordsOf(evaluator, settings.space, final_x);
-  RequireAnySuccess(final_records, "the final population");
+// The candidates an engineer needs from the final population, the verdict on the
+// recommendation against the base configuration, and the evaluated sets equivalent to it.
+void ChooseAnswer(const OptimizeSettings& settings, const std::vector<EvaluationRecord>& final_records,
+                  BatchEvaluator& evaluator, EvaluationStore& store, OptimizeResult& result) {
   result.evaluations = store.All();
   const Recommendation rec = RecommendByMajority(final_records, settings.objectives);
   result.recommended_share = rec.share;
@@ -308,39 +376,74 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   result.verdict = verdict.text;
   result.verdict_kind = verdict.kind;
   result.base_label = settings.base_label;
-  if (!settings.relations_path.empty()) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& c : result.candidates) {
-      if (c.record.has_gt && c.record.trans_mean_m < best) {
-        best = c.record.trans_mean_m;
-        result.lowest_error_label = c.label;
-      }
+}
+
+// The candidate with the lowest translational error, when there is ground truth.
+void NameLowestError(OptimizeResult& result) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& c : result.candidates) {
+    if (c.record.has_gt && c.record.trans_mean_m < best) {
+      best = c.record.trans_mean_m;
+      result.lowest_error_label = c.label;
     }
   }
-  if (hooks.render_map) {
-    for (auto& c : result.candidates) {
-      CandidateMap rendered = hooks.render_map(c.record.params);
-      c.map = std::move(rendered.map);
-      c.loop_edges = std::move(rendered.loop_edges);
-      c.path = std::move(rendered.path);
-    }
+}
+
+void RenderCandidateMaps(const std::function<CandidateMap(const Assignment&)>& render_map, OptimizeResult& result) {
+  for (auto& c : result.candidates) {
+    CandidateMap rendered = render_map(c.record.params);
+    c.map = std::move(rendered.map);
+    c.loop_edges = std::move(rendered.loop_edges);
+    c.path = std::move(rendered.path);
   }
-  // Every stored generation, the initial population (0) included, for the history figure.
+}
+
+// Every stored generation up to `last`, the initial population (0) included, for the history figure.
+OptimizationHistory StoredHistory(const EvaluationStore& store, unsigned last, const ObjectiveSet& objectives) {
   std::vector<std::vector<std::vector<double>>> populations;
-  for (unsigned g = 0; g <= done_gens; ++g) {
+  for (unsigned g = 0; g <= last; ++g) {
     const std::optional<nlohmann::json> saved = store.Generation(static_cast<int>(g));
     if (!saved) break;
     populations.push_back(saved->at("f").get<std::vector<std::vector<double>>>());
   }
-  result.history = SummarizeGenerations(populations, settings.objectives);
-  std::sort(result.snapshots.begin(), result.snapshots.end(),
-            [](const auto& a, const auto& b) { return a.generation < b.generation; });
+  return SummarizeGenerations(populations, objectives);
+}
+
+}  // namespace
+
+OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
+                               OptimizationStart start, const OptimizeHooks& hooks) {
+  const nlohmann::json settings_json = OpenRun(settings, store, start);
+  if (hooks.started) hooks.started();
+
+  const auto started_at = Clock::now();
+  Generations generations(settings, evaluator, store, hooks, started_at);
+  OptimizeResult result;
+  result.log_path = settings.log_path;
+  result.log_input = settings.log_input;
+  result.relations_path = settings.relations_path;
+  result.space = settings.space;
+  result.objectives = settings.objectives;
+  result.settings = settings_json;
+  generations.Begin(start);
+  generations.Evolve();
+  result.snapshots = generations.Snapshots();
+
+  // Choosing the answer.
+  const std::vector<pagmo::vector_double> final_x(generations.population().get_x().begin(),
+                                                  generations.population().get_x().end());
+  const std::vector<EvaluationRecord> final_records = RecordsOf(evaluator, settings.space, final_x);
+  RequireAnySuccess(final_records, "the final population");
+  ChooseAnswer(settings, final_records, evaluator, store, result);
+  if (!settings.relations_path.empty()) NameLowestError(result);
+  if (hooks.render_map) RenderCandidateMaps(hooks.render_map, result);
+  result.history = StoredHistory(store, generations.done(), settings.objectives);
   const auto st = evaluator.stats();
   result.evaluation_count = store.Count();
-  result.generations_run = done_gens;
-  result.settling = settling.Describe(total_gens);
+  result.generations_run = generations.done();
+  result.settling = generations.settling().Describe(settings.generations);
   result.cache_hits = st.cache_hits;
-  result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  result.wall_s = std::chrono::duration<double>(Clock::now() - started_at).count();
   return result;
 }
 

@@ -56,9 +56,13 @@ struct OptimizeHooks {
   std::function<void()> started;
 };
 
-// Runs (or, with `resume`, continues) an optimisation. `store` must be the run database;
-// with resume its settings must equal `settings` (InputError otherwise, before any work).
+// Whether RunOptimization starts a new run in an empty run database or continues the run
+// stored there (--resume).
+enum class OptimizationStart { kNew, kResume };
+
+// Runs (or, with kResume, continues) an optimisation. `store` must be the run database; a
+// resumed run's stored settings must equal `settings` (InputError otherwise, before any work).
 OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator& evaluator, EvaluationStore& store,
-                               bool resume, const OptimizeHooks& hooks);
+                               OptimizationStart start, const OptimizeHooks& hooks);
 
 }  // namespace slamtune::optim

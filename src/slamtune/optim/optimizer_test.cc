@@ -47,11 +47,11 @@ OptimizeSettings SmallSettings() {
   return s;
 }
 
-OptimizeResult Optimize(const std::string& store_path, bool resume, EvaluateFn fn, int jobs = 2,
+OptimizeResult Optimize(const std::string& store_path, OptimizationStart start, EvaluateFn fn, int jobs = 2,
                         OptimizeSettings settings = SmallSettings()) {
   EvaluationStore store(store_path);
   BatchEvaluator evaluator(std::move(fn), &store, jobs);
-  return RunOptimization(settings, evaluator, store, resume, {});
+  return RunOptimization(settings, evaluator, store, start, {});
 }
 
 std::vector<std::vector<double>> FinalPopulation(const std::string& store_path) {
@@ -75,16 +75,16 @@ TEST(Optimizer, StartsByStoringSettingsAndCommandLineThenCallsStarted) {
     }
     EXPECT_TRUE(store.Settings().has_value());
   };
-  RunOptimization(settings, evaluator, store, false, hooks);
+  RunOptimization(settings, evaluator, store, OptimizationStart::kNew, hooks);
   EXPECT_EQ(started, 1);
   EXPECT_EQ(*store.Meta("invocation"), settings.invocation);
-  RunOptimization(settings, evaluator, store, true, hooks);  // resumed: called again
+  RunOptimization(settings, evaluator, store, OptimizationStart::kResume, hooks);  // resumed: called again
   EXPECT_EQ(started, 2);
 }
 
 TEST(Optimizer, RunsAndPicksTheFourCandidates) {
   const std::string path = FreshStore("basic");
-  const OptimizeResult r = Optimize(path, false, FakeSlam);
+  const OptimizeResult r = Optimize(path, OptimizationStart::kNew, FakeSlam);
   ASSERT_EQ(r.candidates.size(), 4u);
   EXPECT_EQ(r.candidates[0].label, "recommended");
   EXPECT_EQ(r.Find("default")->record.params.at("loop_search_maximum_distance"), 4.0);
@@ -122,13 +122,13 @@ TEST(Optimizer, RunsAndPicksTheFourCandidates) {
   EvaluationStore store(path);
   EXPECT_EQ(store.LastGeneration(), 6);
   // A second run into the same folder without --resume is refused.
-  EXPECT_THROW(Optimize(path, false, FakeSlam), InputError);
+  EXPECT_THROW(Optimize(path, OptimizationStart::kNew, FakeSlam), InputError);
 }
 
 TEST(Optimizer, SameSeedSameResultWhateverTheJobs) {
   const std::string a = FreshStore("det_a"), b = FreshStore("det_b");
-  Optimize(a, false, FakeSlam, 1);
-  Optimize(b, false, FakeSlam, 3);
+  Optimize(a, OptimizationStart::kNew, FakeSlam, 1);
+  Optimize(b, OptimizationStart::kNew, FakeSlam, 3);
   EXPECT_EQ(FinalPopulation(a), FinalPopulation(b));
 }
 
@@ -136,10 +136,11 @@ struct Killed {};  // not a std::exception: escapes the evaluator like a kill wo
 
 TEST(Optimizer, ResumeAfterAKillMidGenerationGivesTheUninterruptedResult) {
   const std::string whole = FreshStore("whole"), cut = FreshStore("cut");
-  const OptimizeResult reference = Optimize(whole, false, FakeSlam, 1);
+  const OptimizeResult reference = Optimize(whole, OptimizationStart::kNew, FakeSlam, 1);
 
   std::atomic<int> calls{0};
-  EXPECT_THROW(Optimize(cut, false,
+  EXPECT_THROW(Optimize(
+                   cut, OptimizationStart::kNew,
                    [&](const Assignment& a) {
                      if (++calls == 40) throw Killed{};  // during generation 3 or so
                      return FakeSlam(a);
@@ -152,12 +153,13 @@ TEST(Optimizer, ResumeAfterAKillMidGenerationGivesTheUninterruptedResult) {
     EXPECT_LT(store.LastGeneration(), 6);
   }
   int resumed_calls = 0;
-  const OptimizeResult resumed = Optimize(cut, true,
-                                     [&](const Assignment& a) {
-                                       ++resumed_calls;
-                                       return FakeSlam(a);
-                                     },
-                                     1);
+  const OptimizeResult resumed = Optimize(
+      cut, OptimizationStart::kResume,
+      [&](const Assignment& a) {
+        ++resumed_calls;
+        return FakeSlam(a);
+      },
+      1);
   EXPECT_EQ(FinalPopulation(whole), FinalPopulation(cut));
   EXPECT_EQ(resumed.candidates[0].record.key, reference.candidates[0].record.key);
   EXPECT_EQ(resumed.candidates[1].record.key, reference.candidates[1].record.key);
@@ -171,20 +173,20 @@ TEST(Optimizer, ResumeAfterAKillMidGenerationGivesTheUninterruptedResult) {
 
 TEST(Optimizer, ResumeRefusesDifferentSettingsAndEmptyFolders) {
   const std::string path = FreshStore("settings");
-  Optimize(path, false, FakeSlam);
+  Optimize(path, OptimizationStart::kNew, FakeSlam);
   EvaluationStore store(path);
   BatchEvaluator evaluator(FakeSlam, &store, 1);
   OptimizeSettings other = SmallSettings();
   other.seed = 99;
   try {
-    RunOptimization(other, evaluator, store, true, {});
+    RunOptimization(other, evaluator, store, OptimizationStart::kResume, {});
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different settings (seed)"), std::string::npos) << e.what();
   }
   EvaluationStore empty(FreshStore("empty"));
   BatchEvaluator ev2(FakeSlam, &empty, 1);
-  EXPECT_THROW(RunOptimization(SmallSettings(), ev2, empty, true, {}), InputError);
+  EXPECT_THROW(RunOptimization(SmallSettings(), ev2, empty, OptimizationStart::kResume, {}), InputError);
 }
 
 TEST(Optimizer, FoldersWrittenBeforeObjectiveSetsResumeOnThePaperObjectives) {
@@ -192,20 +194,20 @@ TEST(Optimizer, FoldersWrittenBeforeObjectiveSetsResumeOnThePaperObjectives) {
   paper.objectives = ObjectiveSet(ObjectiveSetKind::kPaper);
   paper.generations = 2;
   const std::string path = FreshStore("old_folder");
-  const OptimizeResult first = Optimize(path, false, FakeSlam, 1, paper);
+  const OptimizeResult first = Optimize(path, OptimizationStart::kNew, FakeSlam, 1, paper);
   {
     EvaluationStore store(path);
     nlohmann::json settings = *store.Settings();
     settings.erase("objectives");  // as such a folder was written
     store.SetSettings(settings);
   }
-  const OptimizeResult resumed = Optimize(path, true, FakeSlam, 1, paper);
+  const OptimizeResult resumed = Optimize(path, OptimizationStart::kResume, FakeSlam, 1, paper);
   EXPECT_EQ(resumed.candidates[0].record.key, first.candidates[0].record.key);
   EXPECT_EQ(resumed.objectives.kind(), ObjectiveSetKind::kPaper);
   OptimizeSettings consistency = paper;
   consistency.objectives = ObjectiveSet(ObjectiveSetKind::kConsistency);
   try {
-    Optimize(path, true, FakeSlam, 1, consistency);
+    Optimize(path, OptimizationStart::kResume, FakeSlam, 1, consistency);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different settings (objectives)"), std::string::npos) << e.what();
@@ -215,7 +217,8 @@ TEST(Optimizer, FoldersWrittenBeforeObjectiveSetsResumeOnThePaperObjectives) {
 TEST(Optimizer, TheObjectiveSetDecidesWhatIsMinimised) {
   OptimizeSettings settings = SmallSettings();
   settings.generations = 1;
-  const OptimizeResult consistency = Optimize(FreshStore("set_consistency"), false, FakeSlam, 1, settings);
+  const OptimizeResult consistency =
+      Optimize(FreshStore("set_consistency"), OptimizationStart::kNew, FakeSlam, 1, settings);
   EXPECT_EQ(consistency.objectives.kind(), ObjectiveSetKind::kConsistency);
   ASSERT_FALSE(consistency.snapshots.empty());
   const GenerationSnapshot& snapshot = consistency.snapshots.front();
@@ -225,7 +228,7 @@ TEST(Optimizer, TheObjectiveSetDecidesWhatIsMinimised) {
                                                            rec.enclosed_areas}));
   }
   settings.objectives = ObjectiveSet(ObjectiveSetKind::kPaper);
-  const OptimizeResult paper = Optimize(FreshStore("set_paper"), false, FakeSlam, 1, settings);
+  const OptimizeResult paper = Optimize(FreshStore("set_paper"), OptimizationStart::kNew, FakeSlam, 1, settings);
   EXPECT_EQ(paper.snapshots.front().objectives.front()[0],
             FakeSlam(settings.space.Assign(paper.snapshots.front().decisions.front())).occupied_ratio);
 }
@@ -254,7 +257,8 @@ OptimizeSettings SettlingSettings() {
 }
 
 TEST(Optimizer, StopsOnceTheAnswerHasSettledAndAResumeStopsAtTheSameGeneration) {
-  const OptimizeResult whole = Optimize(FreshStore("settle_whole"), false, SettlingSlam, 1, SettlingSettings());
+  const OptimizeResult whole =
+      Optimize(FreshStore("settle_whole"), OptimizationStart::kNew, SettlingSlam, 1, SettlingSettings());
   ASSERT_GT(whole.generations_run, 3u);
   EXPECT_LT(whole.generations_run, 40u);
   EXPECT_THAT(whole.settling, ::testing::HasSubstr("stopped after generation"));
@@ -270,10 +274,10 @@ TEST(Optimizer, StopsOnceTheAnswerHasSettledAndAResumeStopsAtTheSameGeneration) 
     hooks.progress = [](const std::string& line, bool force) {
       if (force && line.rfind("gen 2/", 0) == 0) throw Killed{};
     };
-    EXPECT_THROW(RunOptimization(SettlingSettings(), evaluator, store, false, hooks), Killed);
+    EXPECT_THROW(RunOptimization(SettlingSettings(), evaluator, store, OptimizationStart::kNew, hooks), Killed);
     EXPECT_EQ(store.LastGeneration(), 2);
   }
-  const OptimizeResult resumed = Optimize(cut, true, SettlingSlam, 1, SettlingSettings());
+  const OptimizeResult resumed = Optimize(cut, OptimizationStart::kResume, SettlingSlam, 1, SettlingSettings());
   EXPECT_EQ(resumed.generations_run, whole.generations_run);
   EXPECT_EQ(resumed.settling, whole.settling);
   EXPECT_EQ(resumed.candidates[0].record.key, whole.candidates[0].record.key);
@@ -282,13 +286,13 @@ TEST(Optimizer, StopsOnceTheAnswerHasSettledAndAResumeStopsAtTheSameGeneration) 
     EXPECT_EQ(resumed.snapshots[i].generation, whole.snapshots[i].generation);
   }
   // Resuming a settled run again runs nothing more.
-  const OptimizeResult again = Optimize(cut, true, SettlingSlam, 1, SettlingSettings());
+  const OptimizeResult again = Optimize(cut, OptimizationStart::kResume, SettlingSlam, 1, SettlingSettings());
   EXPECT_EQ(again.generations_run, whole.generations_run);
 
   OptimizeSettings fixed = SettlingSettings();
   fixed.generations = 12;
   fixed.settling.enabled = false;
-  const OptimizeResult full = Optimize(FreshStore("settle_fixed"), false, SettlingSlam, 1, fixed);
+  const OptimizeResult full = Optimize(FreshStore("settle_fixed"), OptimizationStart::kNew, SettlingSlam, 1, fixed);
   EXPECT_EQ(full.generations_run, 12u);
   EXPECT_EQ(full.settling, "ran the fixed budget of 12 generations");
 }
@@ -299,7 +303,7 @@ TEST(Optimizer, StopsWithAReadableErrorWhenEveryRunFails) {
     return EvaluationRecord::Failed("", a, "mapper parameter x = 1 is out of range");
   };
   try {
-    Optimize(path, false, fail);
+    Optimize(path, OptimizationStart::kNew, fail);
     FAIL() << "an optimisation of failed runs returned";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("every SLAM run of the initial population failed"), std::string::npos)

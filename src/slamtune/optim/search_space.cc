@@ -67,13 +67,16 @@ SearchSpace SearchSpace::AroundBase(double base_r, int base_g) {
 
 namespace {
 
+// Whether a dimension is searched by real values or by whole numbers.
+enum class Gene { kReal, kInteger };
+
 // A range on a lattice through the base's value, reaching as close to [low, high] as the
 // lattice allows and always holding the base: the baseline is a point of the space.
-Dimension Around(const char* name, double base, double low, double high, double step, bool integer = false) {
+Dimension Around(const char* name, double base, double low, double high, double step, Gene gene = Gene::kReal) {
   const auto round9 = [](double v) { return std::round(v * 1e9) / 1e9; };
   const double down = base > low ? std::floor((base - low) / step + 1e-9) : 0.0;
   const double up = base < high ? std::floor((high - base) / step + 1e-9) : 0.0;
-  return Dimension{name, round9(base - down * step), round9(base + up * step), integer, step};
+  return Dimension{name, round9(base - down * step), round9(base + up * step), gene == Gene::kInteger, step};
 }
 
 }  // namespace
@@ -85,8 +88,7 @@ SearchSpace SearchSpace::FrontEnd(const slam::MapperParams& base) {
   const double resolution = base.correlation_search_space_resolution;
   SearchSpace s;
   s.dimensions = {
-      Around("correlation_search_space_dimension", base.correlation_search_space_dimension, 0.2, 1.6,
-             2.0 * resolution),
+      Around("correlation_search_space_dimension", base.correlation_search_space_dimension, 0.2, 1.6, 2.0 * resolution),
       // Karto accepts smearing in [0.5, 10] x resolution (§4.1).
       Around("correlation_search_space_smear_deviation", base.correlation_search_space_smear_deviation,
              3.0 * resolution, 10.0 * resolution, resolution / 2.0),
@@ -99,8 +101,8 @@ SearchSpace SearchSpace::FrontEnd(const slam::MapperParams& base) {
       Around("loop_search_maximum_distance", base.loop_search_maximum_distance, 2.0, 6.0, 0.01),
       Around("loop_match_minimum_response_coarse", base.loop_match_minimum_response_coarse, 0.3, 0.9, 0.01),
       Around("loop_match_maximum_variance_coarse", base.loop_match_maximum_variance_coarse, 0.1, 3.0, 0.01),
-      Around("scan_buffer_size", base.scan_buffer_size, 5, 70, 1.0, true),
-      Around("loop_match_minimum_chain_size", base.loop_match_minimum_chain_size, 6, 20, 1.0, true),
+      Around("scan_buffer_size", base.scan_buffer_size, 5, 70, 1.0, Gene::kInteger),
+      Around("loop_match_minimum_chain_size", base.loop_match_minimum_chain_size, 6, 20, 1.0, Gene::kInteger),
   };
   return s;
 }
@@ -109,7 +111,7 @@ SearchSpace SearchSpace::Loop(const slam::MapperParams& base) {
   SearchSpace s;
   s.dimensions = {
       Around("loop_search_maximum_distance", base.loop_search_maximum_distance, 2.0, 6.0, 0.01),
-      Around("loop_match_minimum_chain_size", base.loop_match_minimum_chain_size, 6, 20, 1.0, true),
+      Around("loop_match_minimum_chain_size", base.loop_match_minimum_chain_size, 6, 20, 1.0, Gene::kInteger),
   };
   return s;
 }

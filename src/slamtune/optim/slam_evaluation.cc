@@ -129,9 +129,13 @@ CandidateMap RenderSlamMap(const SlamEvaluationContext& context, const Assignmen
   return out;
 }
 
-void DrawWall(SlamEvaluationContext& context, bool on) {
+WallDrawing WallDrawingFor(const ObjectiveSet& objectives) {
+  return objectives.Uses(Objective::kDrawnWallCells) ? WallDrawing::kDraw : WallDrawing::kSkip;
+}
+
+void DrawWall(SlamEvaluationContext& context, WallDrawing drawing) {
   SLAMTUNE_CHECK(context.log != nullptr);
-  if (!on) {
+  if (drawing == WallDrawing::kSkip) {
     context.trajectory_map = nullptr;
   } else if (context.trajectory_map == nullptr) {
     context.trajectory_map = std::make_shared<const metrics::TrajectoryMap>(context.log, context.base);

@@ -47,10 +47,13 @@ struct SlamEvaluationContext {
 // matches (budget share_mb MB), back-end solves (share_mb / 2), map scores of final states
 // (share_mb / 4) and scan barycentres (share_mb / 8), each at least 1 MB. share_mb > 0.
 void ShareWork(SlamEvaluationContext& context, std::size_t share_mb);
+// Whether the runs of a context draw the fixed scans along their path (the drawn wall n_w).
+enum class WallDrawing { kSkip, kDraw };
+// kDraw when `objectives` read the drawn wall (ObjectiveSet::Uses), else kSkip.
+WallDrawing WallDrawingFor(const ObjectiveSet& objectives);
 // Gives `context` the trajectory map (metrics/trajectory_map.h, drawn with the context's base
-// parameters) when `on` — the objectives use the drawn wall (ObjectiveSet::Uses) — and takes it
-// away when not, so no run pays for a map nothing reads.
-void DrawWall(SlamEvaluationContext& context, bool on);
+// parameters) for kDraw, and takes it away for kSkip, so no run pays for a map nothing reads.
+void DrawWall(SlamEvaluationContext& context, WallDrawing drawing);
 // One line per cache with its counters, or that sharing is off.
 std::string SharedWorkReport(const SlamEvaluationContext& context);
 // The match cache in a few words for progress lines, e.g. "matches: 97.9% of 1.2 M shared,

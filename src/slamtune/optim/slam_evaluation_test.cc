@@ -221,7 +221,7 @@ TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
   const Assignment dense_set = {{"minimum_travel_distance", 0.2}};
   const Assignment sparse_set = {{"minimum_travel_distance", 1.5}, {"minimum_travel_heading", 1.0}};
   EXPECT_EQ(EvaluateSlam(context, dense_set).drawn_wall_cells, 0.0);
-  DrawWall(context, true);
+  DrawWall(context, WallDrawing::kDraw);
   ASSERT_NE(context.trajectory_map, nullptr);
   const EvaluationRecord dense = EvaluateSlam(context, dense_set);
   const EvaluationRecord sparse = EvaluateSlam(context, sparse_set);
@@ -234,7 +234,7 @@ TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
   ASSERT_GT(sparse.trans_mean_m, dense.trans_mean_m * 1.2) << "the sparse run is not worse: the test checks nothing";
   EXPECT_LT(sparse.occupied_cells, dense.occupied_cells);      // the own map calls the worse run cleaner
   EXPECT_GT(sparse.drawn_wall_cells, dense.drawn_wall_cells);  // the drawn wall does not
-  DrawWall(context, false);
+  DrawWall(context, WallDrawing::kSkip);
   EXPECT_EQ(context.trajectory_map, nullptr);
 }
 

@@ -221,9 +221,11 @@ std::string FrontEndEvidence::Summary() const {
     if (s.strong()) strong.push_back(&s);
   std::string lines;
   if (!strong.empty()) lines = BreakSummary(strong);
-  if (!degenerate_stretches.empty()) lines += (lines.empty() ? "" : "\n") + DegenerateSummary(degenerate_stretches);
+  if (!degenerate_stretches.empty()) {
+    if (!lines.empty()) lines += '\n';
+    lines += DegenerateSummary(degenerate_stretches);
+  }
   return lines;
 }
-
 
 }  // namespace slamtune::slam

@@ -79,7 +79,7 @@ std::vector<const LaserScan*> Mapper::ScanPointers(const std::vector<int>& ids) 
 }
 
 MatchResult Mapper::MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
-                              bool penalize, bool refine) {
+                              Penalize penalize, Refine refine) {
   ScanMatcher& matcher = role == MatchRole::kLoop ? *loop_matcher_ : *sequential_matcher_;
   if (shared_.match_cache) return shared_.match_cache->Match(role, matcher, scan, base, penalize, refine);
   return matcher.Match(scan, base, penalize, refine);
@@ -120,7 +120,7 @@ ProcessResult Mapper::Process(LaserScan scan) {
     const std::vector<int> buffer_ids(running_buffer_.begin(), running_buffer_.end());
     const std::vector<const LaserScan*> buffer = ScanPointers(buffer_ids);
     result.sequential_guess = scan.SensorPose();
-    const MatchResult match = MatchWith(MatchRole::kSequential, scan, buffer, true, true);
+    const MatchResult match = MatchWith(MatchRole::kSequential, scan, buffer, Penalize::kYes, Refine::kYes);
     TraceMatch("sequential", static_cast<int>(scans_.size()), scan.log_index, buffer_ids, result.sequential_guess,
                match, "used");
     scan.SetSensorPose(match.mean);
@@ -201,15 +201,16 @@ void Mapper::AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult
 
 MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base,
                                    double threshold) {
-  if (!skip_unlinkable_near_chains_) return MatchWith(MatchRole::kSequential, scan, base, false, true);
+  if (!skip_unlinkable_near_chains_) return MatchWith(MatchRole::kSequential, scan, base, Penalize::kNo, Refine::kYes);
   // A match proven unable to exceed the threshold would be computed only to be discarded
   // (fast_matching/response_bound.h). With a match cache the proof is stored like a result, so a run
   // repeating this call pays for neither.
   const auto may_exceed = [&] { return near_chain_bound_->MayExceed(scan, base, threshold); };
   if (shared_.match_cache) {
-    return shared_.match_cache->MatchAbove(*sequential_matcher_, scan, base, false, true, threshold, may_exceed);
+    return shared_.match_cache->MatchAbove(*sequential_matcher_, scan, base, Penalize::kNo, Refine::kYes, threshold,
+                                           may_exceed);
   }
-  return may_exceed() ? sequential_matcher_->Match(scan, base, false, true) : ProvenBelowThreshold();
+  return may_exceed() ? sequential_matcher_->Match(scan, base, Penalize::kNo, Refine::kYes) : ProvenBelowThreshold();
 }
 
 void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
@@ -253,7 +254,7 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
     attempt.chain_last = chain.back();
     const std::vector<const LaserScan*> base = ScanPointers(chain);
     const Pose2 pose_in = scans_[scan].SensorPose();
-    const MatchResult coarse = MatchWith(MatchRole::kLoop, scans_[scan], base, false, false);
+    const MatchResult coarse = MatchWith(MatchRole::kLoop, scans_[scan], base, Penalize::kNo, Refine::kNo);
     attempt.coarse_response = coarse.response;
     attempt.coarse_covariance = coarse.covariance;
     // §6.3: strict on all three.
@@ -264,7 +265,7 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
     if (attempt.coarse_passed) {
       LaserScan tmp = scans_[scan];
       tmp.SetSensorPose(coarse.mean);
-      const MatchResult fine = MatchWith(MatchRole::kSequential, tmp, base, false, true);
+      const MatchResult fine = MatchWith(MatchRole::kSequential, tmp, base, Penalize::kNo, Refine::kYes);
       attempt.fine_response = fine.response;
       attempt.accepted = fine.response >= params_.loop_match_minimum_response_fine;  // §6.4
       TraceMatch("loop_fine", scan, attempt.log_index, chain, coarse.mean, fine,
@@ -292,7 +293,7 @@ int Mapper::CorrectPoses() {
   std::vector<std::uint64_t> key;
   std::optional<SolveCache::Solved> stored;
   if (shared_.solve_cache) {
-    key = SolveCache::KeyOf(params_.solver, params_.ceres_loss_function, nodes, graph_.edges());
+    key = SolveCache::KeyOf(NameOf(params_.solver), NameOf(params_.ceres_loss_function), nodes, graph_.edges());
     key.push_back(params_.robot_pose_graph ? 1 : 0);  // how the values are written back
     // The stored barycentres also depend on the laser (range threshold, ...): key it too.
     AppendGeometryKey(*geometry_, &key);

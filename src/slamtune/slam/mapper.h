@@ -130,7 +130,7 @@ class Mapper {
   std::vector<const LaserScan*> ScanPointers(const std::vector<int>& ids) const;
   // matcher.Match(...) of the given role, through the match cache when there is one.
   MatchResult MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
-                        bool penalize, bool refine);
+                        Penalize penalize, Refine refine);
   // LinkScans / LinkChainToScan of §5.1-§5.2, counting by kind; return whether an edge was added.
   bool Link(int from, int to, const Pose2& mean, const Eigen::Matrix3d& covariance, EdgeKind kind,
             ProcessResult* result);

@@ -16,7 +16,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 using Member = std::variant<bool MapperParams::*, int MapperParams::*, double MapperParams::*,
-                            std::string MapperParams::*>;
+                            RangeThresholdRule MapperParams::*, SolverKind MapperParams::*, CeresLoss MapperParams::*>;
 
 // Allowed interval of a numeric parameter; open ends are strict.
 struct Bounds {
@@ -30,7 +30,7 @@ struct Row {
   ParamInfo info;
   Member member;
   Bounds bounds;
-  std::vector<std::string> choices;  // string parameters only
+  std::vector<std::string> choices;  // choice parameters only: the names of their values, in enum order
 };
 
 Bounds AtLeast(double lo) { return {lo, false, kInf, false}; }
@@ -38,12 +38,23 @@ Bounds Above(double lo) { return {lo, true, kInf, false}; }
 Bounds Closed(double lo, double hi) { return {lo, false, hi, false}; }
 Bounds Any() { return {}; }
 
+// The names of `values`, which must be every value of their enum in order.
+template <typename Enum>
+std::vector<std::string> ChoiceNames(std::initializer_list<Enum> values) {
+  std::vector<std::string> names;
+  for (const Enum value : values) {
+    SLAMTUNE_CHECK(static_cast<std::size_t>(value) == names.size());
+    names.emplace_back(NameOf(value));
+  }
+  return names;
+}
+
 #define ST_BOOL(name, ros, meaning) \
   Row{{#name, ParamType::kBool, ros, "true or false", meaning}, &MapperParams::name, Any(), {}}
 #define ST_NUM(type, name, ros, bounds, rule, meaning) \
   Row{{#name, type, ros, rule, meaning}, &MapperParams::name, bounds, {}}
-#define ST_STR(name, ros, rule, meaning, ...) \
-  Row{{#name, ParamType::kString, ros, rule, meaning}, &MapperParams::name, Any(), {__VA_ARGS__}}
+#define ST_CHOICE(name, ros, rule, meaning, ...) \
+  Row{{#name, ParamType::kString, ros, rule, meaning}, &MapperParams::name, Any(), ChoiceNames({__VA_ARGS__})}
 
 const std::vector<Row>& Rows() {
   using enum ParamType;
@@ -96,8 +107,9 @@ const std::vector<Row>& Rows() {
       ST_BOOL(use_response_expansion, true, "widen the coarse angle search on a zero response"),
       ST_BOOL(robot_pose_graph, false,
               "pose graph over robot (base) poses as slam_toolbox; false: over sensor poses as slam_karto"),
-      ST_STR(range_threshold_rule, false, "slam_karto or slam_toolbox",
-             "which node's rule sets the laser range threshold", "slam_karto", "slam_toolbox"),
+      ST_CHOICE(range_threshold_rule, false, "slam_karto or slam_toolbox",
+                "which node's rule sets the laser range threshold", RangeThresholdRule::kSlamKarto,
+                RangeThresholdRule::kSlamToolbox),
       ST_NUM(kDouble, max_laser_range, true, Any(), "any finite value (<= 0 means the laser maximum)",
              "m; slam_toolbox's range threshold"),
       ST_NUM(kDouble, min_laser_range, false, AtLeast(0), ">= 0", "m; laser minimum range"),
@@ -109,10 +121,10 @@ const std::vector<Row>& Rows() {
       ST_NUM(kDouble, occupancy_threshold, true, Closed(0, 1), "in [0, 1]",
              "hit/pass ratio above which a map cell is occupied"),
       ST_NUM(kInt, throttle_scans, true, AtLeast(1), "an integer >= 1", "keep every n-th log scan"),
-      ST_STR(solver, false, "spa or ceres", "pose-graph back-end (spa = slam_karto, ceres = slam_toolbox)", "spa",
-             "ceres"),
-      ST_STR(ceres_loss_function, true, "None, HuberLoss or CauchyLoss", "robust loss of the ceres back-end",
-             "None", "HuberLoss", "CauchyLoss"),
+      ST_CHOICE(solver, false, "spa or ceres", "pose-graph back-end (spa = slam_karto, ceres = slam_toolbox)",
+                SolverKind::kSpa, SolverKind::kCeres),
+      ST_CHOICE(ceres_loss_function, true, "None, HuberLoss or CauchyLoss", "robust loss of the ceres back-end",
+                CeresLoss::kNone, CeresLoss::kHuber, CeresLoss::kCauchy),
       ST_NUM(kInt, matcher_threads, false, AtLeast(1), "an integer >= 1",
              "threads of the correlative search (results do not depend on it)"),
   };
@@ -121,7 +133,7 @@ const std::vector<Row>& Rows() {
 
 #undef ST_BOOL
 #undef ST_NUM
-#undef ST_STR
+#undef ST_CHOICE
 
 const Row* FindRow(std::string_view name) {
   for (const Row& row : Rows()) {
@@ -195,7 +207,15 @@ std::string FormatValue(const ParamValue& value) {
 }
 
 ParamValue ReadValue(const MapperParams& params, const Member& member) {
-  return std::visit([&](auto ptr) -> ParamValue { return params.*ptr; }, member);
+  return std::visit(
+      [&](auto ptr) -> ParamValue {
+        if constexpr (std::is_enum_v<std::remove_reference_t<decltype(params.*ptr)>>) {
+          return std::string(NameOf(params.*ptr));
+        } else {
+          return params.*ptr;
+        }
+      },
+      member);
 }
 
 [[noreturn]] void OutOfRange(const Row& row, const std::string& value) {
@@ -255,6 +275,15 @@ std::string_view Trim(std::string_view s) {
 
 }  // namespace
 
+const char* NameOf(RangeThresholdRule rule) {
+  switch (rule) {
+    case RangeThresholdRule::kSlamKarto: return "slam_karto";
+    case RangeThresholdRule::kSlamToolbox: return "slam_toolbox";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
 const char* ParamTypeName(ParamType type) {
   switch (type) {
     case ParamType::kBool: return "bool";
@@ -311,15 +340,22 @@ ScanMatcherOptions MapperParams::LoopMatcherOptions(double range_threshold) cons
 // laser's limits; slam_toolbox uses max_laser_range, capped at (or replaced by) range_max.
 double MapperParams::RangeThreshold(double min_range, double max_range) const {
   double threshold = 12.0;
-  if (range_threshold_rule == "slam_toolbox") {
+  if (range_threshold_rule == RangeThresholdRule::kSlamToolbox) {
     threshold = max_laser_range;
     if (threshold > max_range || threshold <= 0.0) threshold = max_range;
   }
   return std::clamp(threshold, min_range, std::max(min_range, max_range));
 }
 
-void MapperParams::Validate() const {
-  for (const Row& row : Rows()) CheckRow(*this, row);
+void MapperParams::Validate() const { Validate({}); }
+
+void MapperParams::Validate(const UnknownChoices& unknown_choices) const {
+  for (const Row& row : Rows()) {
+    if (const auto unknown = unknown_choices.find(row.info.name); unknown != unknown_choices.end()) {
+      OutOfRange(row, FormatValue(unknown->second));
+    }
+    CheckRow(*this, row);
+  }
   CheckMatcher("correlation_search_space", correlation_search_space_dimension, correlation_search_space_resolution,
                correlation_search_space_smear_deviation);
   CheckMatcher("loop_search_space", loop_search_space_dimension, loop_search_space_resolution,
@@ -358,9 +394,9 @@ MapperParams MapperParams::Preset(std::string_view name) {
     p.minimum_distance_penalty = 0.5;
     p.use_response_expansion = true;
     p.robot_pose_graph = true;
-    p.range_threshold_rule = "slam_toolbox";
+    p.range_threshold_rule = RangeThresholdRule::kSlamToolbox;
     p.max_laser_range = 20.0;
-    p.solver = "ceres";
+    p.solver = SolverKind::kCeres;
     return p;
   }
   throw InputError(fmt::format("unknown preset '{}': must be slam_karto, open_karto or slam_toolbox", name));
@@ -416,14 +452,23 @@ void SetNumerics(MapperParams& params, const std::map<std::string, double>& valu
   params = copy;
 }
 
-void AssignFromString(MapperParams& copy, std::string_view name, std::string_view text) {
+void AssignFromString(MapperParams& copy, std::string_view name, std::string_view text,
+                      UnknownChoices* unknown_choices) {
   const Row& row = RequireRow(name);
   text = Trim(text);
   std::visit(
       [&](auto ptr) {
         using T = std::remove_reference_t<decltype(copy.*ptr)>;
-        if constexpr (std::is_same_v<T, std::string>) {
-          copy.*ptr = std::string(text);
+        if constexpr (std::is_enum_v<T>) {
+          const auto choice = std::find(row.choices.begin(), row.choices.end(), text);
+          if (choice != row.choices.end()) {
+            copy.*ptr = static_cast<T>(choice - row.choices.begin());
+            if (unknown_choices != nullptr) unknown_choices->erase(row.info.name);
+          } else if (unknown_choices != nullptr) {
+            (*unknown_choices)[row.info.name] = std::string(text);
+          } else {
+            OutOfRange(row, FormatValue(std::string(text)));
+          }
         } else if constexpr (std::is_same_v<T, bool>) {
           bool b = false;
           if (!ParseBool(text, &b)) OutOfRange(row, std::string(text));
@@ -442,19 +487,20 @@ void AssignFromString(MapperParams& copy, std::string_view name, std::string_vie
 
 void SetFromString(MapperParams& params, std::string_view name, std::string_view text) {
   MapperParams copy = params;
-  AssignFromString(copy, name, text);
-  copy.Validate();
+  UnknownChoices unknown_choices;
+  AssignFromString(copy, name, text, &unknown_choices);
+  copy.Validate(unknown_choices);
   params = copy;
 }
 
 namespace {
 
-void AssignOverride(MapperParams& copy, std::string_view assignment) {
+void AssignOverride(MapperParams& copy, std::string_view assignment, UnknownChoices* unknown_choices) {
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos) {
     throw InputError(fmt::format("parameter override '{}' must have the form name=value", assignment));
   }
-  AssignFromString(copy, Trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+  AssignFromString(copy, Trim(assignment.substr(0, eq)), assignment.substr(eq + 1), unknown_choices);
 }
 
 }  // namespace
@@ -463,8 +509,9 @@ void ApplyOverride(MapperParams& params, std::string_view assignment) { ApplyOve
 
 void ApplyOverrides(MapperParams& params, const std::vector<std::string>& assignments) {
   MapperParams copy = params;
-  for (const std::string& a : assignments) AssignOverride(copy, a);
-  copy.Validate();
+  UnknownChoices unknown_choices;
+  for (const std::string& a : assignments) AssignOverride(copy, a, &unknown_choices);
+  copy.Validate(unknown_choices);
   params = copy;
 }
 

@@ -12,15 +12,27 @@
 // parameter, the value and the allowed range in its InputError.
 #pragma once
 
+#include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <variant>
-#include <map>
 #include <vector>
 
+#include "slamtune/slam/backend/pose_graph_solver.h"
 #include "slamtune/slam/scan_matcher.h"
 
 namespace slamtune::slam {
+
+// Which node's rule sets the laser range threshold (§9.2), named after the node.
+enum class RangeThresholdRule { kSlamKarto, kSlamToolbox };
+// "slam_karto" or "slam_toolbox", as parameter files name it.
+const char* NameOf(RangeThresholdRule rule);
+
+// Texts read for choice parameters that name none of their choices, by parameter name. A reader
+// that assigns many values keeps them here instead of stopping at the first, so that
+// Validate(unknown_choices) reports every value out of range in one order, the table's.
+using UnknownChoices = std::map<std::string, std::string, std::less<>>;
 
 struct MapperParams {
   // --- Mapper parameters of §9.1 (ROS names, ROS units; slam_karto YAML defaults) ---
@@ -60,9 +72,9 @@ struct MapperParams {
   bool robot_pose_graph = false;
 
   // --- Laser and map items of §9.2 ---
-  // "slam_karto": rangeThreshold = clip(12, min_range, maxRange). "slam_toolbox":
+  // slam_karto: rangeThreshold = clip(12, min_range, maxRange). slam_toolbox:
   // clip(min(max_laser_range, maxRange), ...), with max_laser_range <= 0 meaning maxRange.
-  std::string range_threshold_rule = "slam_karto";
+  RangeThresholdRule range_threshold_rule = RangeThresholdRule::kSlamKarto;
   double max_laser_range = 20.0;        // m; slam_toolbox's rangeThreshold (only for that rule)
   double min_laser_range = 0.0;         // m; minRange (LaserScan range_min; CARMEN logs have none)
   double laser_max_range_cap = 80.0;    // m; maxRange = min(this, the log's no-return value) (§2.3)
@@ -72,8 +84,8 @@ struct MapperParams {
   int throttle_scans = 1;               // node level: keep every n-th log scan (§3.4)
 
   // --- Back-end (§7) ---
-  std::string solver = "spa";                // "spa" (slam_karto, SPA LM) or "ceres" (slam_toolbox)
-  std::string ceres_loss_function = "None";  // "None", "HuberLoss" or "CauchyLoss" (scale 0.7)
+  SolverKind solver = SolverKind::kSpa;              // kSpa (slam_karto, SPA LM) or kCeres (slam_toolbox)
+  CeresLoss ceres_loss_function = CeresLoss::kNone;  // scale 0.7
 
   // --- Engine only ---
   int matcher_threads = 1;  // threads of the correlative search; results do not depend on it
@@ -95,6 +107,9 @@ struct MapperParams {
 
   // Throws InputError "NAME = VALUE is out of range: RULE" for the first violated rule.
   void Validate() const;
+  // Validate(), with texts a reader found for choice parameters that name none of their
+  // choices reported as out of range where their parameter comes (UnknownChoices).
+  void Validate(const UnknownChoices& unknown_choices) const;
 
   // Presets: "slam_karto" (the defaults above), "open_karto" (Karto's internal defaults,
   // in ROS units) and "slam_toolbox" (its shipped YAML, Ceres back-end). Throws InputError
@@ -124,6 +139,8 @@ const ParamInfo* FindParam(std::string_view name);
 // "unknown mapper parameter 'NAME'", with the closest known name when it looks like a typo.
 std::string UnknownParamMessage(std::string_view name);
 
+// Choice parameters (range_threshold_rule, solver, ceres_loss_function) read and write as text:
+// the name of their value, as parameter files have it.
 using ParamValue = std::variant<bool, int, double, std::string>;
 
 struct NamedParam {
@@ -144,9 +161,12 @@ void SetNumeric(MapperParams& params, std::string_view name, double value);
 // resolution and smear changed together) is taken whatever the order.
 void SetNumerics(MapperParams& params, const std::map<std::string, double>& values);
 // SetNumeric / SetFromString without validating the whole set: for readers that assign many
-// values and call Validate() after the last. Type and format are still checked.
+// values and call Validate() after the last. Type and format are still checked; a text that
+// names no choice of a choice parameter goes to `unknown_choices`, or without one throws the
+// InputError Validate() gives for a value out of range.
 void AssignNumeric(MapperParams& params, std::string_view name, double value);
-void AssignFromString(MapperParams& params, std::string_view name, std::string_view text);
+void AssignFromString(MapperParams& params, std::string_view name, std::string_view text,
+                      UnknownChoices* unknown_choices = nullptr);
 // Sets any parameter from text ("true"/"false"/"1"/"0" for bools); validates; on error
 // `params` is unchanged.
 void SetFromString(MapperParams& params, std::string_view name, std::string_view text);

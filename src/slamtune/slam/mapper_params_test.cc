@@ -38,7 +38,7 @@ TEST(MapperParams, DefaultsAreSlamKartoYaml) {
   EXPECT_EQ(p.resolution, 0.05);
   EXPECT_EQ(p.min_pass_through, 2);
   EXPECT_EQ(p.occupancy_threshold, 0.1);
-  EXPECT_EQ(p.solver, "spa");
+  EXPECT_EQ(p.solver, SolverKind::kSpa);
   EXPECT_NO_THROW(p.Validate());
 }
 
@@ -50,7 +50,7 @@ TEST(MapperParams, SlamToolboxPresetUsesItsYaml) {
   EXPECT_EQ(p.link_scan_maximum_distance, 1.5);
   EXPECT_EQ(p.scan_buffer_size, 10);
   EXPECT_TRUE(p.use_response_expansion);
-  EXPECT_EQ(p.solver, "ceres");
+  EXPECT_EQ(p.solver, SolverKind::kCeres);
   EXPECT_EQ(p.minimum_time_interval, 3600);  // not passed to the toolbox Mapper (§3.4)
   EXPECT_NO_THROW(p.Validate());
   EXPECT_NE(p, MapperParams{});
@@ -62,7 +62,7 @@ TEST(MapperParams, RangeThresholdRules) {
   EXPECT_EQ(p.RangeThreshold(0.0, 80.0), 12.0);
   EXPECT_EQ(p.RangeThreshold(0.0, 8.0), 8.0);
   EXPECT_EQ(p.RangeThreshold(15.0, 80.0), 15.0);
-  p.range_threshold_rule = "slam_toolbox";
+  p.range_threshold_rule = RangeThresholdRule::kSlamToolbox;
   p.max_laser_range = 20.0;
   EXPECT_EQ(p.RangeThreshold(0.0, 80.0), 20.0);
   EXPECT_EQ(p.RangeThreshold(0.0, 15.0), 15.0);
@@ -106,8 +106,10 @@ TEST(MapperParams, ValidationNamesParameterValueAndRule) {
   p.correlation_search_space_smear_deviation = 0.2;  // > 10 rho
   EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("correlation_search_space_smear_deviation = 0.2"));
   p = {};
-  p.solver = "g2o";
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("solver = 'g2o' is out of range: must be spa or ceres"));
+  EXPECT_THAT(ErrorOf([&] { SetFromString(p, "solver", "g2o"); }),
+              HasSubstr("solver = 'g2o' is out of range: must be spa or ceres"));
+  EXPECT_THAT(ErrorOf([&] { p.Validate({{"ceres_loss_function", "SoftL1"}}); }),
+              HasSubstr("ceres_loss_function = 'SoftL1' is out of range: must be None, HuberLoss or CauchyLoss"));
   p = {};
   p.minimum_travel_distance = std::nan("");
   EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("minimum_travel_distance = nan"));
@@ -141,7 +143,7 @@ TEST(MapperParams, OverridesFromText) {
   ApplyOverride(p, "solver=ceres");
   EXPECT_EQ(p.loop_match_minimum_response_coarse, 0.55);
   EXPECT_TRUE(p.use_response_expansion);
-  EXPECT_EQ(p.solver, "ceres");
+  EXPECT_EQ(p.solver, SolverKind::kCeres);
   EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "scan_buffer_size"); }), HasSubstr("form name=value"));
   EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "scan_buffer_size=ten"); }),
               HasSubstr("scan_buffer_size = 'ten' is not a number (int expected"));

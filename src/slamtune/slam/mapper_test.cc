@@ -271,7 +271,7 @@ TEST_F(MapperOnCorridor, LoopAcceptedWithoutEdgeStillSolves) {
 TEST_F(MapperOnCorridor, CeresBackEndClosesTheSameLoop) {
   LogRunner r = *before_loop_;
   MapperParams p = FastParams();
-  p.solver = "ceres";
+  p.solver = SolverKind::kCeres;
   r.SetParams(p);
   const ProcessResult result = r.Step();
   ASSERT_GE(result.loops_closed, 1);

@@ -26,9 +26,9 @@ bool IsNodeOnlyKey(const std::string& key) {
   return false;
 }
 
-std::string SolverFromPlugin(const std::string& plugin, const std::string& source) {
-  if (plugin.find("Ceres") != std::string::npos) return "ceres";
-  if (plugin.find("Spa") != std::string::npos) return "spa";
+SolverKind SolverFromPlugin(const std::string& plugin, const std::string& source) {
+  if (plugin.find("Ceres") != std::string::npos) return SolverKind::kCeres;
+  if (plugin.find("Spa") != std::string::npos) return SolverKind::kSpa;
   throw InputError(source, 0,
                    fmt::format("solver_plugin '{}' is not supported: must be solver_plugins::CeresSolver or "
                                "solver_plugins::SpaSolver",
@@ -51,6 +51,7 @@ ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_t
   const bool ros2 = section.ros2;
 
   MapperParams copy = params;
+  UnknownChoices unknown_choices;  // reported with the values out of range, after the last key
   ParamsYamlReport report;
   const bool have_resolution = map["resolution"].IsDefined();
   for (const auto& entry : map) {
@@ -75,11 +76,11 @@ ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_t
         if (have_resolution) {
           report.ignored.push_back(key);
         } else {
-          AssignFromString(copy, "resolution", text);
+          AssignFromString(copy, "resolution", text, &unknown_choices);
           report.applied.push_back("resolution");
         }
       } else if (FindParam(key) != nullptr) {
-        AssignFromString(copy, key, text);
+        AssignFromString(copy, key, text, &unknown_choices);
         report.applied.push_back(key);
       } else if (IsNodeOnlyKey(key)) {
         report.ignored.push_back(key);
@@ -91,7 +92,7 @@ ParamsYamlReport ApplyParamsYaml(MapperParams& params, const std::string& yaml_t
     }
   }
   try {
-    copy.Validate();
+    copy.Validate(unknown_choices);
   } catch (const InputError& e) {
     throw InputError(source, 0, e.message());
   }

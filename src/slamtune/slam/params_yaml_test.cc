@@ -34,7 +34,7 @@ TEST(ParamsYaml, ReadsRos2Nesting) {
                                       "    use_response_expansion: true\n"
                                       "    map_start_pose: [0.0, 0.0, 0.0]\n",
                                       "test.yaml");
-  EXPECT_EQ(p.solver, "ceres");
+  EXPECT_EQ(p.solver, SolverKind::kCeres);
   EXPECT_EQ(p.loop_search_maximum_distance, 3.0);
   EXPECT_EQ(p.loop_match_minimum_chain_size, 6);
   EXPECT_TRUE(p.use_response_expansion);
@@ -75,6 +75,12 @@ TEST(ParamsYaml, RejectsUnknownWrongTypeAndOutOfRange) {
               HasSubstr("loop_match_minimum_response_coarse = 1.5 is out of range: must be in [0, 1]"));
   EXPECT_THAT(ErrorOf(p, "loop_search_maximum_distance: [1, 2]\n"), HasSubstr("must be a scalar"));
   EXPECT_THAT(ErrorOf(p, "solver_plugin: solver_plugins::G2oSolver\n"), HasSubstr("is not supported"));
+  // A choice that names none is reported after the last key, as the first value out of range in table order.
+  EXPECT_EQ(ErrorOf(p, "ceres_loss_function: SoftL1\nresolution: -1\n"),
+            "test.yaml: mapper parameter resolution = -1 is out of range: must be > 0");
+  EXPECT_EQ(ErrorOf(p, "ceres_loss_function: SoftL1\n"),
+            "test.yaml: mapper parameter ceres_loss_function = 'SoftL1' is out of range: must be None, HuberLoss or "
+            "CauchyLoss");
   EXPECT_THAT(ErrorOf(p, "a: [\n"), HasSubstr("test.yaml:"));
   EXPECT_EQ(p, before);  // nothing applied on error
 }

@@ -25,12 +25,12 @@ double ReferenceScanMatcher::Response(int angle_index, std::int32_t cell_index) 
   return response;
 }
 
-double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy,
-                                           double step_xy, double angle_offset, double angle_step, bool penalize,
-                                           bool fine, Pose2* mean, Eigen::Matrix3d* cov) {
+double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy, double step_xy,
+                                           double angle_offset, double angle_step, Penalize penalize, Pass pass,
+                                           Pose2* mean, Eigen::Matrix3d* cov) {
   table_.Compute(scan, center.theta, angle_offset, angle_step, grid_.roi_origin(), grid_.scale(),
                  grid_.geometry().stride);
-  if (!fine) probabilities_.Reset({center.x - offset_xy, center.y - offset_xy});
+  if (pass == Pass::kCoarse) probabilities_.Reset({center.x - offset_xy, center.y - offset_xy});
   const int n = static_cast<int>(KartoRound(offset_xy * 2.0 / step_xy) + 1);
   const int num_angles = KartoRoundToInt(angle_offset * 2.0 / angle_step) + 1;
   std::vector<Candidate> candidates;
@@ -45,7 +45,7 @@ double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& c
       for (int k = 0; k < num_angles; ++k) {
         const double angle = start_angle + k * angle_step;
         double response = Response(k, cell);
-        if (penalize && !KartoEqual(response, 0.0)) {
+        if (penalize == Penalize::kYes && !KartoEqual(response, 0.0)) {
           const double squared_distance = x * x + y * y;
           double distance_penalty = 1.0 - (0.2 * squared_distance / options_.distance_variance_penalty);
           if (!(distance_penalty > options_.minimum_distance_penalty)) {
@@ -63,7 +63,7 @@ double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& c
   double best = -1;
   for (const Candidate& c : candidates) {
     if (c.response > best) best = c.response;
-    if (!fine) {
+    if (pass == Pass::kCoarse) {
       double& p = probabilities_.at(probabilities_.IndexOf(c.pose.x, c.pose.y));
       if (c.response > p) p = c.response;
     }
@@ -80,7 +80,7 @@ double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& c
   }
   SLAMTUNE_CHECK(count > 0);
   const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin / count, sum_cos / count)};
-  if (!fine) {
+  if (pass == Pass::kCoarse) {
     *cov = PositionalCovariance(average, best, center, offset_xy, step_xy, angle_step, probabilities_);
   } else {
     const std::int32_t cell = grid_.GridIndex(grid_.WorldToGrid({average.x, average.y}));
@@ -96,7 +96,7 @@ double ReferenceScanMatcher::CorrelateScan(const LaserScan& scan, const Pose2& c
 }
 
 MatchResult ReferenceScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans,
-                                        bool penalize, bool refine) {
+                                        Penalize penalize, Refine refine) {
   scan.EnsureReadout();
   for (const LaserScan* base : base_scans) base->EnsureReadout();
   MatchResult result;
@@ -114,21 +114,22 @@ MatchResult ReferenceScanMatcher::Match(const LaserScan& scan, std::span<const L
   grid_.AddScans(base_scans, {center.x, center.y});
   const double coarse_offset = 0.5 * (grid_.geometry().search_side - 1) * resolution;
   const double coarse_step = 2 * resolution;
-  double best = CorrelateScan(scan, center, coarse_offset, coarse_step, options_.coarse_angle_offset,
-                              options_.coarse_angle_resolution, penalize, false, &result.mean, &result.covariance);
+  double best =
+      CorrelateScan(scan, center, coarse_offset, coarse_step, options_.coarse_angle_offset,
+                    options_.coarse_angle_resolution, penalize, Pass::kCoarse, &result.mean, &result.covariance);
   if (options_.use_response_expansion && KartoEqual(best, 0.0)) {
     double angle_offset = options_.coarse_angle_offset;
     for (int i = 0; i < 3; ++i) {
       angle_offset += 20 * 0.01745329251994329577;
       best = CorrelateScan(scan, center, coarse_offset, coarse_step, angle_offset, options_.coarse_angle_resolution,
-                           penalize, false, &result.mean, &result.covariance);
+                           penalize, Pass::kCoarse, &result.mean, &result.covariance);
       if (!KartoEqual(best, 0.0)) break;
     }
   }
-  if (refine) {
+  if (refine == Refine::kYes) {
     const Pose2 coarse_mean = result.mean;
     best = CorrelateScan(scan, coarse_mean, coarse_step * 0.5, resolution, 0.5 * options_.coarse_angle_resolution,
-                         options_.fine_angle_step, penalize, true, &result.mean, &result.covariance);
+                         options_.fine_angle_step, penalize, Pass::kFine, &result.mean, &result.covariance);
   }
   result.response = best;
   return result;

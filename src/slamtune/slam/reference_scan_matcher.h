@@ -24,15 +24,19 @@ class ReferenceScanMatcher {
   // Options are validated as for ScanMatcher; `threads` is ignored.
   explicit ReferenceScanMatcher(const ScanMatcherOptions& options);
 
-  MatchResult Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+  MatchResult Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, Penalize penalize,
+                    Refine refine);
 
  private:
   struct Candidate {
     double response;
     Pose2 pose;
   };
+  // The coarse pass fills the probability grid and the positional covariance, the fine pass
+  // gives the angular variance.
+  enum class Pass { kCoarse, kFine };
   double CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy, double step_xy,
-                       double angle_offset, double angle_step, bool penalize, bool fine, Pose2* mean,
+                       double angle_offset, double angle_step, Penalize penalize, Pass pass, Pose2* mean,
                        Eigen::Matrix3d* cov);
   // Karto's GetResponse: sum of bytes over valid, in-range entries / (100 * all entries).
   double Response(int angle_index, std::int32_t cell_index) const;

@@ -87,11 +87,41 @@ struct ScanMatcher::Impl {
         grid(o.search_dimension, o.search_resolution, o.smear_deviation, o.range_threshold),
         probabilities(grid.geometry().search_side, o.search_resolution) {}
 
-  // CorrelateScan of §4.5; returns min(best, 1) and writes the mean and the covariance
+  // The coarse pass samples every second cell of the window and fills the probability grid
+  // and the positional covariance; the fine pass samples the cells around the coarse mean and
+  // gives the angular variance (§4.2 items 4 and 6).
+  enum class Pass { kCoarse, kFine };
+  // What one CorrelateScan call searches: the lattice x_j = -offset_xy + j step_xy on both
+  // axes around `center`, the headings center.theta +- angle_offset by angle_step.
+  struct PassWindow {
+    Pose2 center;
+    double offset_xy = 0, step_xy = 0;
+    double angle_offset = 0, angle_step = 0;
+    Penalize penalize = Penalize::kNo;
+    Pass pass = Pass::kCoarse;
+  };
+  // The best response of a pass and, for unpenalised passes, the smallest sum that ties with it.
+  struct Best {
+    double response = -1.0;  // Karto's start value
+    std::int32_t tie_min_sum = 0;
+  };
+
+  // CorrelateScan of §4.5; returns min(best, 1) and writes result->mean and the covariance
   // (positional part in the coarse pass, cov(2,2) in the fine pass).
-  double CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy, double step_xy,
-                       double angle_offset, double angle_step, bool penalize, bool fine, Pose2* mean,
-                       Eigen::Matrix3d* cov);
+  double CorrelateScan(const LaserScan& scan, const PassWindow& window, MatchResult* result);
+  // Steps of CorrelateScan, in order. The lookup table of the pass's headings, the lattice's
+  // grid cells and the sum -> response table; returns the lattice side n.
+  int SetUpLattice(const LaserScan& scan, const PassWindow& window, ScanLookupTable& table);
+  // The byte sum of every candidate (sums), or of those branch and bound cannot skip (then
+  // max_sum_at too); returns whether it pruned.
+  bool SumCandidates(const PassWindow& window, const ScanLookupTable& table);
+  Best PenalizedBest(const PassWindow& window, const ScanLookupTable& table, int n);
+  Best UnpenalizedBest(const PassWindow& window, int num_angles, int n, bool pruned);
+  // Coarse pass: the probability grid keeps each position's best response over headings.
+  void KeepCellMaxima(const Pose2& center, int n);
+  Pose2 MeanOfTies(const PassWindow& window, const ScanLookupTable& table, int n, const Best& best);
+  // Angular variance from the unpenalised responses at the cell of the mean (§4.6).
+  double AngularVarianceAt(const Pose2& average, double best, const PassWindow& window, const ScanLookupTable& table);
 
   ScanMatcherOptions options;
   CorrelationGrid grid;
@@ -112,21 +142,18 @@ struct ScanMatcher::Impl {
   std::vector<double> raw_at_best, angles;       // angular covariance inputs
 };
 
-double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& center, double offset_xy,
-                                        double step_xy, double angle_offset, double angle_step, bool penalize,
-                                        bool fine, Pose2* mean, Eigen::Matrix3d* cov) {
+int ScanMatcher::Impl::SetUpLattice(const LaserScan& scan, const PassWindow& window, ScanLookupTable& table) {
+  const Pose2& center = window.center;
   // §4.4: lookup tables for the headings of this pass.
-  ScanLookupTable& table = tables[fine ? 1 : 0];
-  table.Compute(scan, center.theta, angle_offset, angle_step, grid.roi_origin(), grid.scale(),
+  table.Compute(scan, center.theta, window.angle_offset, window.angle_step, grid.roi_origin(), grid.scale(),
                 grid.geometry().stride);
-  const int num_angles = table.num_angles();
   const int num_beams = table.num_beams();
-  if (!fine) probabilities.Reset({center.x - offset_xy, center.y - offset_xy});
+  if (window.pass == Pass::kCoarse) probabilities.Reset({center.x - window.offset_xy, center.y - window.offset_xy});
 
   // Lattice x_j = -offset + j step, j = 0 .. Round(2 offset / step) (§4.5).
-  const int n = static_cast<int>(KartoRound(offset_xy * 2.0 / step_xy) + 1);
+  const int n = static_cast<int>(KartoRound(window.offset_xy * 2.0 / window.step_xy) + 1);
   offsets.resize(static_cast<std::size_t>(n));
-  for (int j = 0; j < n; ++j) offsets[static_cast<std::size_t>(j)] = -offset_xy + j * step_xy;
+  for (int j = 0; j < n; ++j) offsets[static_cast<std::size_t>(j)] = -window.offset_xy + j * window.step_xy;
   cells.nx = cells.ny = n;
   cells.index.resize(static_cast<std::size_t>(n) * n);
   for (int yi = 0; yi < n; ++yi) {
@@ -147,11 +174,14 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     response_of_sum.resize(max_sum + 1);
     for (std::size_t s = 0; s <= max_sum; ++s) response_of_sum[s] = static_cast<double>(s) / divisor;
   }
+  return n;
+}
 
+bool ScanMatcher::Impl::SumCandidates(const PassWindow& window, const ScanLookupTable& table) {
   // Branch and bound pays when the grid is small next to the work (the loop matcher); the
   // pooled copy of a 6 MB sequential grid would cost more than its 16 x 16 search.
-  const std::int64_t reads = static_cast<std::int64_t>(cells.index.size()) * num_angles * num_beams;
-  const bool prune = !penalize && !fine && options.branch_and_bound &&
+  const std::int64_t reads = static_cast<std::int64_t>(cells.index.size()) * table.num_angles() * table.num_beams();
+  const bool prune = window.penalize == Penalize::kNo && window.pass == Pass::kCoarse && options.branch_and_bound &&
                      static_cast<std::int64_t>(grid.data_size()) * 8 < reads &&
                      IsStepTwoLattice(cells, grid.geometry().stride);
   if (prune) {
@@ -164,88 +194,104 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     SumCandidatesPruned(grid.data(), grid.data_size(), grid.geometry().stride, table, cells, prunable, &pruned_scratch,
                         &sums, &max_sum_at);
   } else {
-    SumAllCandidates(grid.data(), grid.data_size(), table, cells, fine ? 1 : options.threads, &sums);
+    SumAllCandidates(grid.data(), grid.data_size(), table, cells, window.pass == Pass::kFine ? 1 : options.threads,
+                     &sums);
   }
+  return prune;
+}
 
-  const std::size_t num_cells = static_cast<std::size_t>(n) * n;
-  double best = -1.0;  // Karto's start value
-  std::int32_t tie_min_sum = 0;
-  if (penalize) {
-    // Responses in Karto's order y, x, heading, with the penalties of §4.5 (offsets from the
-    // search centre; not applied to zero responses).
-    responses.resize(sums.size());
-    for (int yi = 0; yi < n; ++yi) {
-      const double y = offsets[static_cast<std::size_t>(yi)];
-      for (int xi = 0; xi < n; ++xi) {
-        const double x = offsets[static_cast<std::size_t>(xi)];
-        const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
-        for (int k = 0; k < num_angles; ++k) {
-          double response = response_of_sum[static_cast<std::size_t>(sums[base + k])];
-          if (!KartoEqual(response, 0.0)) {
-            const double squared_distance = x * x + y * y;
-            const double distance_penalty =
-                std::max(1.0 - (kDistancePenaltyGain * squared_distance / options.distance_variance_penalty),
-                         options.minimum_distance_penalty);
-            const double da = table.angle(k) - center.theta;
-            const double angle_penalty =
-                std::max(1.0 - (kAnglePenaltyGain * (da * da) / options.angle_variance_penalty),
-                         options.minimum_angle_penalty);
-            response *= (distance_penalty * angle_penalty);
-          }
-          responses[base + k] = response;
+ScanMatcher::Impl::Best ScanMatcher::Impl::PenalizedBest(const PassWindow& window, const ScanLookupTable& table,
+                                                         int n) {
+  const int num_angles = table.num_angles();
+  const double center_theta = window.center.theta;
+  // Responses in Karto's order y, x, heading, with the penalties of §4.5 (offsets from the
+  // search centre; not applied to zero responses).
+  responses.resize(sums.size());
+  for (int yi = 0; yi < n; ++yi) {
+    const double y = offsets[static_cast<std::size_t>(yi)];
+    for (int xi = 0; xi < n; ++xi) {
+      const double x = offsets[static_cast<std::size_t>(xi)];
+      const std::size_t base = (static_cast<std::size_t>(yi) * n + xi) * num_angles;
+      for (int k = 0; k < num_angles; ++k) {
+        double response = response_of_sum[static_cast<std::size_t>(sums[base + k])];
+        if (!KartoEqual(response, 0.0)) {
+          const double squared_distance = x * x + y * y;
+          const double distance_penalty =
+              std::max(1.0 - (kDistancePenaltyGain * squared_distance / options.distance_variance_penalty),
+                       options.minimum_distance_penalty);
+          const double da = table.angle(k) - center_theta;
+          const double angle_penalty = std::max(1.0 - (kAnglePenaltyGain * (da * da) / options.angle_variance_penalty),
+                                                options.minimum_angle_penalty);
+          response *= (distance_penalty * angle_penalty);
         }
-      }
-    }
-    for (const double r : responses) best = std::max(best, r);
-    if (!fine) {
-      cell_maximum.resize(num_cells);
-      for (std::size_t c = 0; c < num_cells; ++c) {
-        cell_maximum[c] = *std::max_element(responses.begin() + static_cast<std::ptrdiff_t>(c * num_angles),
-                                            responses.begin() + static_cast<std::ptrdiff_t>((c + 1) * num_angles));
-      }
-    }
-  } else {
-    // Without penalties the response is an increasing function of the integer sum, so the
-    // best response, each position's maximum over headings and the ties (§4.5) are found on
-    // the sums: ties are exactly the sums s with |table[s] - best| <= 1e-6, an interval
-    // [tie_min_sum, best_sum].
-    // (After branch and bound, max_sum_at is already filled, -1 for skipped positions.)
-    if (!prune) {
-      max_sum_at.resize(num_cells);
-      for (std::size_t c = 0; c < num_cells; ++c) {
-        const auto first = sums.begin() + static_cast<std::ptrdiff_t>(c * num_angles);
-        max_sum_at[c] = *std::max_element(first, first + num_angles);
-      }
-    }
-    std::int32_t best_sum = 0;
-    for (const std::int32_t m : max_sum_at) best_sum = std::max(best_sum, m);
-    best = std::max(best, response_of_sum[static_cast<std::size_t>(best_sum)]);
-    tie_min_sum = best_sum;
-    while (tie_min_sum > 0 && KartoEqual(response_of_sum[static_cast<std::size_t>(tie_min_sum - 1)], best)) {
-      --tie_min_sum;
-    }
-    if (!fine) {
-      cell_maximum.resize(num_cells);
-      // A skipped position is below best - 0.1 > 0, so 0 keeps it out of the covariance
-      // window exactly as its true value would.
-      for (std::size_t c = 0; c < num_cells; ++c) {
-        cell_maximum[c] = max_sum_at[c] < 0 ? 0.0 : response_of_sum[static_cast<std::size_t>(max_sum_at[c])];
+        responses[base + k] = response;
       }
     }
   }
-  // Coarse pass: the probability grid keeps each position's best response over headings.
-  if (!fine) {
-    for (int yi = 0; yi < n; ++yi) {
-      for (int xi = 0; xi < n; ++xi) {
-        double& cell = probabilities.at(probabilities.IndexOf(center.x + offsets[static_cast<std::size_t>(xi)],
-                                                              center.y + offsets[static_cast<std::size_t>(yi)]));
-        cell = std::max(cell_maximum[static_cast<std::size_t>(yi) * n + xi], cell);
-      }
+  Best best;
+  for (const double r : responses) best.response = std::max(best.response, r);
+  if (window.pass == Pass::kCoarse) {
+    const std::size_t num_cells = static_cast<std::size_t>(n) * n;
+    cell_maximum.resize(num_cells);
+    for (std::size_t c = 0; c < num_cells; ++c) {
+      cell_maximum[c] = *std::max_element(responses.begin() + static_cast<std::ptrdiff_t>(c * num_angles),
+                                          responses.begin() + static_cast<std::ptrdiff_t>((c + 1) * num_angles));
     }
   }
+  return best;
+}
 
+ScanMatcher::Impl::Best ScanMatcher::Impl::UnpenalizedBest(const PassWindow& window, int num_angles, int n,
+                                                           bool pruned) {
+  // Without penalties the response is an increasing function of the integer sum, so the
+  // best response, each position's maximum over headings and the ties (§4.5) are found on
+  // the sums: ties are exactly the sums s with |table[s] - best| <= 1e-6, an interval
+  // [tie_min_sum, best_sum].
+  // (After branch and bound, max_sum_at is already filled, -1 for skipped positions.)
+  const std::size_t num_cells = static_cast<std::size_t>(n) * n;
+  if (!pruned) {
+    max_sum_at.resize(num_cells);
+    for (std::size_t c = 0; c < num_cells; ++c) {
+      const auto first = sums.begin() + static_cast<std::ptrdiff_t>(c * num_angles);
+      max_sum_at[c] = *std::max_element(first, first + num_angles);
+    }
+  }
+  std::int32_t best_sum = 0;
+  for (const std::int32_t m : max_sum_at) best_sum = std::max(best_sum, m);
+  Best best;
+  best.response = std::max(best.response, response_of_sum[static_cast<std::size_t>(best_sum)]);
+  best.tie_min_sum = best_sum;
+  while (best.tie_min_sum > 0 &&
+         KartoEqual(response_of_sum[static_cast<std::size_t>(best.tie_min_sum - 1)], best.response)) {
+    --best.tie_min_sum;
+  }
+  if (window.pass == Pass::kCoarse) {
+    cell_maximum.resize(num_cells);
+    // A skipped position is below best - 0.1 > 0, so 0 keeps it out of the covariance
+    // window exactly as its true value would.
+    for (std::size_t c = 0; c < num_cells; ++c) {
+      cell_maximum[c] = max_sum_at[c] < 0 ? 0.0 : response_of_sum[static_cast<std::size_t>(max_sum_at[c])];
+    }
+  }
+  return best;
+}
+
+void ScanMatcher::Impl::KeepCellMaxima(const Pose2& center, int n) {
+  for (int yi = 0; yi < n; ++yi) {
+    for (int xi = 0; xi < n; ++xi) {
+      double& cell = probabilities.at(probabilities.IndexOf(center.x + offsets[static_cast<std::size_t>(xi)],
+                                                            center.y + offsets[static_cast<std::size_t>(yi)]));
+      cell = std::max(cell_maximum[static_cast<std::size_t>(yi) * n + xi], cell);
+    }
+  }
+}
+
+Pose2 ScanMatcher::Impl::MeanOfTies(const PassWindow& window, const ScanLookupTable& table, int n, const Best& best) {
   // Mean of every pose whose response equals the best within 1e-6, in loop order:
   // arithmetic mean of positions, circular mean of the normalised headings (§4.5).
+  const int num_angles = table.num_angles();
+  const bool penalize = window.penalize == Penalize::kYes;
+  const Pose2& center = window.center;
   heading_cos.resize(static_cast<std::size_t>(num_angles));
   heading_sin.resize(static_cast<std::size_t>(num_angles));
   for (int k = 0; k < num_angles; ++k) {
@@ -260,10 +306,10 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
     for (int xi = 0; xi < n; ++xi) {
       const double position_x = center.x + offsets[static_cast<std::size_t>(xi)];
       const std::size_t cell = static_cast<std::size_t>(yi) * n + xi;
-      if (!penalize && max_sum_at[cell] < tie_min_sum) continue;
+      if (!penalize && max_sum_at[cell] < best.tie_min_sum) continue;
       const std::size_t base = cell * num_angles;
       for (int k = 0; k < num_angles; ++k) {
-        const bool tie = penalize ? KartoEqual(responses[base + k], best) : sums[base + k] >= tie_min_sum;
+        const bool tie = penalize ? KartoEqual(responses[base + k], best.response) : sums[base + k] >= best.tie_min_sum;
         if (!tie) continue;
         sum_x += position_x;
         sum_y += position_y;
@@ -275,25 +321,40 @@ double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const Pose2& cent
   }
   SLAMTUNE_CHECK(count > 0);
   // Karto divides the cosine and sine sums by the count before atan2, as it does the positions.
-  const Pose2 average{sum_x / count, sum_y / count, std::atan2(sum_sin / count, sum_cos / count)};
+  return {sum_x / count, sum_y / count, std::atan2(sum_sin / count, sum_cos / count)};
+}
 
-  if (!fine) {
-    *cov = PositionalCovariance(average, best, center, offset_xy, step_xy, angle_step, probabilities);
-  } else {
-    // Angular variance from the unpenalised responses at the cell of the mean (§4.6).
-    const std::int32_t cell = grid.GridIndex(grid.WorldToGrid({average.x, average.y}));
-    raw_at_best.resize(static_cast<std::size_t>(num_angles));
-    angles.resize(static_cast<std::size_t>(num_angles));
-    for (int k = 0; k < num_angles; ++k) {
-      const std::int64_t sum = SumCandidate(grid.data(), grid.data_size(), table.offsets(k), cell);
-      raw_at_best[static_cast<std::size_t>(k)] = response_of_sum[static_cast<std::size_t>(sum)];
-      angles[static_cast<std::size_t>(k)] = table.angle(k);
-    }
-    (*cov)(2, 2) = AngularVariance(average.theta, best, center.theta, angle_step, angles, raw_at_best);
+double ScanMatcher::Impl::AngularVarianceAt(const Pose2& average, double best, const PassWindow& window,
+                                            const ScanLookupTable& table) {
+  const int num_angles = table.num_angles();
+  const std::int32_t cell = grid.GridIndex(grid.WorldToGrid({average.x, average.y}));
+  raw_at_best.resize(static_cast<std::size_t>(num_angles));
+  angles.resize(static_cast<std::size_t>(num_angles));
+  for (int k = 0; k < num_angles; ++k) {
+    const std::int64_t sum = SumCandidate(grid.data(), grid.data_size(), table.offsets(k), cell);
+    raw_at_best[static_cast<std::size_t>(k)] = response_of_sum[static_cast<std::size_t>(sum)];
+    angles[static_cast<std::size_t>(k)] = table.angle(k);
   }
-  *mean = average;
+  return AngularVariance(average.theta, best, window.center.theta, window.angle_step, angles, raw_at_best);
+}
+
+double ScanMatcher::Impl::CorrelateScan(const LaserScan& scan, const PassWindow& window, MatchResult* result) {
+  ScanLookupTable& table = tables[window.pass == Pass::kFine ? 1 : 0];
+  const int n = SetUpLattice(scan, window, table);
+  const bool pruned = SumCandidates(window, table);
+  const Best best = window.penalize == Penalize::kYes ? PenalizedBest(window, table, n)
+                                                      : UnpenalizedBest(window, table.num_angles(), n, pruned);
+  if (window.pass == Pass::kCoarse) KeepCellMaxima(window.center, n);
+  const Pose2 average = MeanOfTies(window, table, n, best);
+  if (window.pass == Pass::kCoarse) {
+    result->covariance = PositionalCovariance(average, best.response, window.center, window.offset_xy, window.step_xy,
+                                              window.angle_step, probabilities);
+  } else {
+    result->covariance(2, 2) = AngularVarianceAt(average, best.response, window, table);
+  }
+  result->mean = average;
   // The covariance above used the unclipped best; the caller sees at most 1 (§4.5).
-  return std::min(best, 1.0);
+  return std::min(best.response, 1.0);
 }
 
 ScanMatcher::ScanMatcher(const ScanMatcherOptions& options) {
@@ -311,8 +372,8 @@ ScanMatcher::~ScanMatcher() = default;
 
 const ScanMatcherOptions& ScanMatcher::options() const { return impl_->options; }
 
-MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, bool penalize,
-                               bool refine) {
+MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, Penalize penalize,
+                               Refine refine) {
   SLAMTUNE_CHECK_MSG(impl_ != nullptr, "ScanMatcher used after move");
   // Point readouts are lazy (laser_scan.h): compute them here, before any work is threaded.
   scan.EnsureReadout();
@@ -341,26 +402,33 @@ MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan*
   // §4.2 item 4: coarse pass over every second cell of the window, starting at its edge. With
   // D/rho = 30 (slam_karto's sequential matcher) the centre cell is therefore *not* sampled
   // (only odd offsets -0.15, -0.13, ..., 0.15); with D/rho = 160 (loop) it is. Karto's lattice.
-  const double coarse_offset = 0.5 * (g.search_side - 1) * resolution;
-  const double coarse_step = 2 * resolution;
-  double best = m.CorrelateScan(scan, center, coarse_offset, coarse_step, o.coarse_angle_offset,
-                                o.coarse_angle_resolution, penalize, false, &result.mean, &result.covariance);
+  Impl::PassWindow coarse{.center = center,
+                          .offset_xy = 0.5 * (g.search_side - 1) * resolution,
+                          .step_xy = 2 * resolution,
+                          .angle_offset = o.coarse_angle_offset,
+                          .angle_step = o.coarse_angle_resolution,
+                          .penalize = penalize,
+                          .pass = Impl::Pass::kCoarse};
+  double best = m.CorrelateScan(scan, coarse, &result);
   // §4.2 item 5: widen the heading range by 20 degrees at a time, at most 3 times.
   if (o.use_response_expansion && KartoEqual(best, 0.0)) {
-    double angle_offset = o.coarse_angle_offset;
     for (int i = 0; i < 3; ++i) {
-      angle_offset += 20 * kRadiansPerDegree;
-      best = m.CorrelateScan(scan, center, coarse_offset, coarse_step, angle_offset, o.coarse_angle_resolution,
-                             penalize, false, &result.mean, &result.covariance);
+      coarse.angle_offset += 20 * kRadiansPerDegree;
+      best = m.CorrelateScan(scan, coarse, &result);
       if (!KartoEqual(best, 0.0)) break;
     }
   }
   // §4.2 item 6: fine pass, 3x3 cells around the coarse mean, headings within half a coarse
   // step, FineSearchAngleOffset used as the step.
-  if (refine) {
-    const Pose2 coarse_mean = result.mean;
-    best = m.CorrelateScan(scan, coarse_mean, coarse_step * 0.5, resolution, 0.5 * o.coarse_angle_resolution,
-                           o.fine_angle_step, penalize, true, &result.mean, &result.covariance);
+  if (refine == Refine::kYes) {
+    const Impl::PassWindow fine{.center = result.mean,
+                                .offset_xy = coarse.step_xy * 0.5,
+                                .step_xy = resolution,
+                                .angle_offset = 0.5 * o.coarse_angle_resolution,
+                                .angle_step = o.fine_angle_step,
+                                .penalize = penalize,
+                                .pass = Impl::Pass::kFine};
+    best = m.CorrelateScan(scan, fine, &result);
   }
   result.response = best;
   return result;

@@ -68,6 +68,13 @@ inline bool IsProvenBelowThreshold(const MatchResult& r) {
   return r.response == -std::numeric_limits<double>::infinity();
 }
 
+// MatchScan's doPenalize (§4.5): whether each candidate's response is scaled down by its
+// distance and heading from the scan's pose.
+enum class Penalize : bool { kNo, kYes };
+// MatchScan's doRefine (§4.2 item 6): whether a fine pass around the coarse mean follows the
+// coarse one.
+enum class Refine : bool { kNo, kYes };
+
 class ScanMatcher {
  public:
   explicit ScanMatcher(const ScanMatcherOptions& options);
@@ -81,8 +88,8 @@ class ScanMatcher {
   // sensor pose) against `base_scans` (in the given order: running buffer oldest -> newest,
   // chains in increasing state id). Returns the mean sensor pose, the covariance (positional
   // part from the coarse pass, angular from the fine pass when refining) and the response.
-  MatchResult Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, bool penalize,
-                    bool refine);
+  MatchResult Match(const LaserScan& scan, std::span<const LaserScan* const> base_scans, Penalize penalize,
+                    Refine refine);
 
   const ScanMatcherOptions& options() const;
 

@@ -117,7 +117,7 @@ TEST(ScanMatcher, SequentialRecoversAKnownOffset) {
   const Pose2 truth{4.5, 3.7, 0.4};
   Scene scene = MakeScene(truth, {0.05, -0.03, 0.05});
   ScanMatcher matcher(SequentialOptions());
-  const MatchResult r = matcher.Match(scene.scan, scene.base_ptrs(), true, true);
+  const MatchResult r = matcher.Match(scene.scan, scene.base_ptrs(), Penalize::kYes, Refine::kYes);
   EXPECT_NEAR(r.mean.x, truth.x, 0.01);
   EXPECT_NEAR(r.mean.y, truth.y, 0.01);
   EXPECT_NEAR(r.mean.theta, truth.theta, 0.0035);
@@ -137,7 +137,7 @@ TEST(ScanMatcher, LoopMatcherRecoversOffsetsWithinACell) {
   for (const Pose2& d : perturbations) {
     SCOPED_TRACE(ToString(d));
     Scene scene = MakeScene(truth, d, 10);
-    const MatchResult r = matcher.Match(scene.scan, scene.base_ptrs(), false, false);
+    const MatchResult r = matcher.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kNo);
     EXPECT_LE(std::fabs(r.mean.x - truth.x), 0.05 + 1e-9);
     EXPECT_LE(std::fabs(r.mean.y - truth.y), 0.05 + 1e-9);
     EXPECT_LE(std::fabs(r.mean.theta - truth.theta), 0.0349066 / 2 + 1e-9);
@@ -156,7 +156,7 @@ TEST(ScanMatcher, ResponseDividesByAllBeamsIncludingInvalidOnes) {
   Scene scene = MakeScene(truth, {0, 0, 0});
   const LaserScan* self[] = {&scene.scan};
   ScanMatcher matcher(LoopOptions());
-  const MatchResult full = matcher.Match(scene.scan, self, false, false);
+  const MatchResult full = matcher.Match(scene.scan, self, Penalize::kNo, Refine::kNo);
   EXPECT_NEAR(full.mean.x, truth.x, 1e-9);
   EXPECT_NEAR(full.mean.y, truth.y, 1e-9);
   EXPECT_GT(full.response, 0.95);
@@ -165,7 +165,7 @@ TEST(ScanMatcher, ResponseDividesByAllBeamsIncludingInvalidOnes) {
   std::vector<double> ranges = scene.scan.ranges();
   for (std::size_t i = ranges.size() / 2; i < ranges.size(); ++i) ranges[i] = std::nan("");
   LaserScan half(scene.scan.geometry_ptr(), std::make_shared<const std::vector<double>>(ranges), truth, 0.0);
-  const MatchResult r = matcher.Match(half, self, false, false);
+  const MatchResult r = matcher.Match(half, self, Penalize::kNo, Refine::kNo);
   EXPECT_NEAR(r.mean.x, truth.x, 1e-9);
   EXPECT_LE(r.response, 0.5);
   EXPECT_GT(r.response, 0.45);
@@ -181,14 +181,14 @@ TEST(ScanMatcher, PenaltiesAreMeasuredFromTheSearchCentre) {
   const LaserScan* base[] = {&base_copy};
   scene.scan.SetSensorPose({truth.x + 0.1, truth.y, truth.theta});
   ScanMatcher matcher(LoopOptions());
-  const MatchResult plain = matcher.Match(scene.scan, base, false, false);
-  const MatchResult penalised = matcher.Match(scene.scan, base, true, false);
+  const MatchResult plain = matcher.Match(scene.scan, base, Penalize::kNo, Refine::kNo);
+  const MatchResult penalised = matcher.Match(scene.scan, base, Penalize::kYes, Refine::kNo);
   EXPECT_NEAR(plain.mean.x, truth.x, 1e-9);
   EXPECT_NEAR(penalised.mean.x, truth.x, 1e-9);
   EXPECT_GT(plain.response, 0.95);
   EXPECT_NEAR(penalised.response, plain.response * (1.0 - 0.2 * 0.1 * 0.1 / 0.09), 1e-9);
   // Refining centres the fine pass on the coarse result: no offset there, no penalty.
-  const MatchResult refined = matcher.Match(scene.scan, base, true, true);
+  const MatchResult refined = matcher.Match(scene.scan, base, Penalize::kYes, Refine::kYes);
   EXPECT_NEAR(refined.mean.x, truth.x, 1e-9);
   EXPECT_NEAR(refined.response, plain.response, 1e-9);
 }
@@ -202,7 +202,7 @@ TEST(ScanMatcher, NoOverlapKeepsTheGuessWithMaxVariance) {
     s.SetSensorPose({p.x + 100.0, p.y, p.theta});  // base scans moved far away
   }
   ScanMatcher matcher(SequentialOptions());
-  const MatchResult r = matcher.Match(scene.scan, far.base_ptrs(), true, true);
+  const MatchResult r = matcher.Match(scene.scan, far.base_ptrs(), Penalize::kYes, Refine::kYes);
   EXPECT_EQ(r.response, 0.0);
   EXPECT_NEAR(r.mean.x, truth.x, 1e-12);
   EXPECT_NEAR(r.mean.y, truth.y, 1e-12);
@@ -212,7 +212,7 @@ TEST(ScanMatcher, NoOverlapKeepsTheGuessWithMaxVariance) {
   EXPECT_EQ(r.covariance(0, 0), 500.0);
   EXPECT_EQ(r.covariance(1, 1), 500.0);
   EXPECT_DOUBLE_EQ(r.covariance(2, 2), 1000 * 0.0034907 * 0.0034907);
-  const MatchResult coarse = matcher.Match(scene.scan, far.base_ptrs(), true, false);
+  const MatchResult coarse = matcher.Match(scene.scan, far.base_ptrs(), Penalize::kYes, Refine::kNo);
   EXPECT_DOUBLE_EQ(coarse.covariance(2, 2), 4 * 0.0349066 * 0.0349066);
 }
 
@@ -222,7 +222,7 @@ TEST(ScanMatcher, ScanWithoutReadingsReturnsItsPose) {
   const LaserScan empty(laser, std::make_shared<const std::vector<double>>(), Pose2{1, 2, 0.3}, 0.0);
   Scene scene = MakeScene({4.0, 5.0, 0.1}, {0, 0, 0});
   ScanMatcher matcher(SequentialOptions());
-  const MatchResult r = matcher.Match(empty, scene.base_ptrs(), true, true);
+  const MatchResult r = matcher.Match(empty, scene.base_ptrs(), Penalize::kYes, Refine::kYes);
   EXPECT_EQ(r.mean, (Pose2{1, 2, 0.3}));
   EXPECT_EQ(r.response, 0.0);
   EXPECT_EQ(r.covariance(0, 0), 500.0);
@@ -250,42 +250,42 @@ TEST(ScanMatcher, ResponseExpansionWidensTheHeadingSearch) {
   ScanMatcherOptions o = ToolboxOptions();
   o.use_response_expansion = false;
   ScanMatcher without(o);
-  const MatchResult r0 = without.Match(scene.scan, scene.base_ptrs(), false, true);
+  const MatchResult r0 = without.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kYes);
   EXPECT_EQ(r0.response, 0.0) << ToString(r0.mean);
   o.use_response_expansion = true;
   ScanMatcher with(o);
-  const MatchResult r1 = with.Match(scene.scan, scene.base_ptrs(), false, true);
+  const MatchResult r1 = with.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kYes);
   EXPECT_GT(r1.response, 0.01);
   EXPECT_NEAR(r1.mean.theta, truth.theta, 0.01);
   ReferenceScanMatcher reference(o);
-  ExpectIdentical(r1, reference.Match(scene.scan, scene.base_ptrs(), false, true));
+  ExpectIdentical(r1, reference.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kYes));
 }
 
 TEST(ScanMatcher, CopyThenMatchGivesIdenticalResults) {
   Scene first = MakeScene({4.5, 3.7, 0.4}, {0.05, -0.03, 0.05});
   Scene second = MakeScene({7.0, 2.0, 2.0}, {-0.04, 0.06, -0.1});
   ScanMatcher a(SequentialOptions());
-  a.Match(first.scan, first.base_ptrs(), true, true);
+  a.Match(first.scan, first.base_ptrs(), Penalize::kYes, Refine::kYes);
   ScanMatcher b = a;
   ScanMatcher c(LoopOptions());
   c = a;
-  const MatchResult ra = a.Match(second.scan, second.base_ptrs(), true, true);
-  const MatchResult rb = b.Match(second.scan, second.base_ptrs(), true, true);
-  const MatchResult rc = c.Match(second.scan, second.base_ptrs(), true, true);
+  const MatchResult ra = a.Match(second.scan, second.base_ptrs(), Penalize::kYes, Refine::kYes);
+  const MatchResult rb = b.Match(second.scan, second.base_ptrs(), Penalize::kYes, Refine::kYes);
+  const MatchResult rc = c.Match(second.scan, second.base_ptrs(), Penalize::kYes, Refine::kYes);
   ExpectIdentical(ra, rb);
   ExpectIdentical(ra, rc);
   ScanMatcher moved = std::move(b);
-  ExpectIdentical(ra, moved.Match(second.scan, second.base_ptrs(), true, true));
+  ExpectIdentical(ra, moved.Match(second.scan, second.base_ptrs(), Penalize::kYes, Refine::kYes));
 }
 
 TEST(ScanMatcher, ReusedGridsGiveTheResultsOfAFreshMatcher) {
   Scene first = MakeScene({4.5, 3.7, 0.4}, {0.05, -0.03, 0.05});
   Scene second = MakeScene({7.0, 2.0, 2.0}, {-0.04, 0.06, -0.1});
   ScanMatcher used(LoopOptions());
-  used.Match(first.scan, first.base_ptrs(), false, false);
+  used.Match(first.scan, first.base_ptrs(), Penalize::kNo, Refine::kNo);
   ScanMatcher fresh(LoopOptions());
-  ExpectIdentical(used.Match(second.scan, second.base_ptrs(), false, false),
-                  fresh.Match(second.scan, second.base_ptrs(), false, false));
+  ExpectIdentical(used.Match(second.scan, second.base_ptrs(), Penalize::kNo, Refine::kNo),
+                  fresh.Match(second.scan, second.base_ptrs(), Penalize::kNo, Refine::kNo));
 }
 
 TEST(ScanMatcher, ThreadCountDoesNotChangeResults) {
@@ -295,10 +295,10 @@ TEST(ScanMatcher, ThreadCountDoesNotChangeResults) {
   ScanMatcherOptions two = one;
   two.threads = 2;
   ScanMatcher a(one), b(two);
-  ExpectIdentical(a.Match(scene.scan, scene.base_ptrs(), false, false),
-                  b.Match(scene.scan, scene.base_ptrs(), false, false));
-  ExpectIdentical(a.Match(scene.scan, scene.base_ptrs(), true, true),
-                  b.Match(scene.scan, scene.base_ptrs(), true, true));
+  ExpectIdentical(a.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kNo),
+                  b.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kNo));
+  ExpectIdentical(a.Match(scene.scan, scene.base_ptrs(), Penalize::kYes, Refine::kYes),
+                  b.Match(scene.scan, scene.base_ptrs(), Penalize::kYes, Refine::kYes));
 }
 
 TEST(ScanMatcher, BranchAndBoundDoesNotChangeResults) {
@@ -309,10 +309,10 @@ TEST(ScanMatcher, BranchAndBoundDoesNotChangeResults) {
   for (const Pose2& d : perturbations) {
     SCOPED_TRACE(ToString(d));
     Scene scene = MakeScene({3.0, 4.0, -0.6}, d, 10);
-    ExpectIdentical(pruned.Match(scene.scan, scene.base_ptrs(), false, false),
-                    full.Match(scene.scan, scene.base_ptrs(), false, false));
-    ExpectIdentical(pruned.Match(scene.scan, scene.base_ptrs(), false, true),
-                    full.Match(scene.scan, scene.base_ptrs(), false, true));
+    ExpectIdentical(pruned.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kNo),
+                    full.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kNo));
+    ExpectIdentical(pruned.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kYes),
+                    full.Match(scene.scan, scene.base_ptrs(), Penalize::kNo, Refine::kYes));
   }
 }
 
@@ -321,12 +321,13 @@ TEST(ScanMatcher, MatchesReferenceMatcherOnSyntheticScenes) {
   struct Config {
     const char* name;
     ScanMatcherOptions options;
-    bool penalize, refine;
+    Penalize penalize;
+    Refine refine;
   };
-  const Config configs[] = {{"sequential", SequentialOptions(), true, true},
-                            {"near chain", SequentialOptions(), false, true},
-                            {"loop coarse", LoopOptions(), false, false},
-                            {"toolbox", ToolboxOptions(), true, true}};
+  const Config configs[] = {{"sequential", SequentialOptions(), Penalize::kYes, Refine::kYes},
+                            {"near chain", SequentialOptions(), Penalize::kNo, Refine::kYes},
+                            {"loop coarse", LoopOptions(), Penalize::kNo, Refine::kNo},
+                            {"toolbox", ToolboxOptions(), Penalize::kYes, Refine::kYes}};
   const Pose2 perturbations[] = {{0.0, 0.0, 0.0}, {0.05, -0.03, 0.05}, {-0.11, 0.07, -0.2}, {0.6, 0.9, 0.3}};
   for (const Config& c : configs) {
     ScanMatcher fast(c.options);
@@ -360,9 +361,10 @@ TEST(ScanMatcher, MatchesReferenceMatcherOnIntelSlice) {
     std::vector<const LaserScan*> base;
     for (std::size_t j = i - 20; j < i; j += 2) base.push_back(&scans[j]);
     SCOPED_TRACE("scan " + std::to_string(i));
-    ExpectIdentical(sequential.Match(scans[i], base, true, true),
-                    sequential_reference.Match(scans[i], base, true, true));
-    ExpectIdentical(loop.Match(scans[i], base, false, false), loop_reference.Match(scans[i], base, false, false));
+    ExpectIdentical(sequential.Match(scans[i], base, Penalize::kYes, Refine::kYes),
+                    sequential_reference.Match(scans[i], base, Penalize::kYes, Refine::kYes));
+    ExpectIdentical(loop.Match(scans[i], base, Penalize::kNo, Refine::kNo),
+                    loop_reference.Match(scans[i], base, Penalize::kNo, Refine::kNo));
   }
 }
 

@@ -1,12 +1,10 @@
 #include "slamtune/slam/backend/ceres_solver.h"
 
 #include <ceres/ceres.h>
-#include <fmt/format.h>
 
 #include <Eigen/Cholesky>
 #include <cmath>
 
-#include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 
 namespace slamtune::slam {
@@ -56,22 +54,18 @@ struct AngleManifoldFunctor {
   }
 };
 
-ceres::LossFunction* MakeLoss(const std::string& name) {
-  if (name == "HuberLoss") return new ceres::HuberLoss(0.7);
-  if (name == "CauchyLoss") return new ceres::CauchyLoss(0.7);
+ceres::LossFunction* MakeLoss(CeresLoss loss) {
+  switch (loss) {
+    case CeresLoss::kNone: return nullptr;
+    case CeresLoss::kHuber: return new ceres::HuberLoss(0.7);
+    case CeresLoss::kCauchy: return new ceres::CauchyLoss(0.7);
+  }
   return nullptr;
 }
 
 }  // namespace
 
-void CeresOptions::Validate() const {
-  if (loss != "None" && loss != "HuberLoss" && loss != "CauchyLoss") {
-    throw InputError(fmt::format("ceres_loss_function = '{}' is not supported: must be None, HuberLoss or CauchyLoss",
-                                 loss));
-  }
-}
-
-CeresSolver::CeresSolver(const CeresOptions& options) : options_(options) { options_.Validate(); }
+CeresSolver::CeresSolver(const CeresOptions& options) : options_(options) {}
 
 SolveSummary CeresSolver::Solve(std::vector<Pose2>& nodes, std::span<const Edge> edges) const {
   SolveSummary summary;

@@ -12,7 +12,7 @@
 namespace slamtune::slam {
 
 struct CeresOptions {
-  std::string loss = "None";   // "None", "HuberLoss" or "CauchyLoss" (scale 0.7)
+  CeresLoss loss = CeresLoss::kNone;  // scale 0.7
   int max_iterations = 50;     // Ceres default
   double function_tolerance = 1e-3;
   double gradient_tolerance = 1e-6;
@@ -24,8 +24,6 @@ struct CeresOptions {
   double min_lm_diagonal = 1e-6;
   double max_lm_diagonal = 1e32;
   int max_consecutive_nonmonotonic_steps = 3;
-
-  void Validate() const;  // throws InputError for an unknown loss
 };
 
 class CeresSolver final : public PoseGraphSolver {

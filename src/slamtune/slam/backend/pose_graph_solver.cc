@@ -1,7 +1,5 @@
 #include "slamtune/slam/backend/pose_graph_solver.h"
 
-#include <fmt/format.h>
-
 #include <cmath>
 
 #include "slamtune/common/error.h"
@@ -23,14 +21,30 @@ double GraphCost(std::span<const Pose2> nodes, std::span<const Edge> edges) {
   return SpaGraphCost(frames, edges);
 }
 
-std::shared_ptr<const PoseGraphSolver> MakeSolver(const std::string& name, const std::string& ceres_loss) {
-  if (name == "spa") return std::make_shared<const SpaSolver>();
-  if (name == "ceres") {
-    CeresOptions options;
-    options.loss = ceres_loss;
-    return std::make_shared<const CeresSolver>(options);
+const char* NameOf(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::kSpa: return "spa";
+    case SolverKind::kCeres: return "ceres";
   }
-  throw InputError(fmt::format("solver '{}' is not supported: must be spa or ceres", name));
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+const char* NameOf(CeresLoss loss) {
+  switch (loss) {
+    case CeresLoss::kNone: return "None";
+    case CeresLoss::kHuber: return "HuberLoss";
+    case CeresLoss::kCauchy: return "CauchyLoss";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, CeresLoss ceres_loss) {
+  if (kind == SolverKind::kSpa) return std::make_shared<const SpaSolver>();
+  CeresOptions options;
+  options.loss = ceres_loss;
+  return std::make_shared<const CeresSolver>(options);
 }
 
 }  // namespace slamtune::slam

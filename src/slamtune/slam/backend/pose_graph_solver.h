@@ -54,7 +54,17 @@ class PoseGraphSolver {
   virtual SolveSummary Solve(std::vector<Pose2>& nodes, std::span<const Edge> edges) const = 0;
 };
 
-// "spa" or "ceres" (with its loss: "None", "HuberLoss", "CauchyLoss"). Throws InputError otherwise.
-std::shared_ptr<const PoseGraphSolver> MakeSolver(const std::string& name, const std::string& ceres_loss = "None");
+// The back-ends: slam_karto's SPA (§7.3) and slam_toolbox's Ceres (§7.4).
+enum class SolverKind { kSpa, kCeres };
+// The robust loss of the Ceres back-end on every edge (scale 0.7), slam_toolbox's
+// ceres_loss_function.
+enum class CeresLoss { kNone, kHuber, kCauchy };
+
+// Their names in parameter files: "spa", "ceres"; "None", "HuberLoss", "CauchyLoss".
+const char* NameOf(SolverKind kind);
+const char* NameOf(CeresLoss loss);
+
+// The back-end of `kind`; `ceres_loss` applies to kCeres.
+std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, CeresLoss ceres_loss = CeresLoss::kNone);
 
 }  // namespace slamtune::slam

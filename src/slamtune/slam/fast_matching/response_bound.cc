@@ -167,7 +167,7 @@ bool ResponseBound::AnyPointIn(const Eigen::Vector2d& lo, const Eigen::Vector2d&
   return false;
 }
 
-int ResponseBound::MaxCount(const LaserScan& scan, int stop_at, bool exact_max) {
+int ResponseBound::MaxCount(const LaserScan& scan, int stop_at, Count goal) {
   const Pose2 sensor = scan.SensorPose();
   const std::vector<Eigen::Vector2d>& points = scan.unfiltered_points();
   const std::vector<double>& ranges = scan.ranges();
@@ -199,7 +199,7 @@ int ResponseBound::MaxCount(const LaserScan& scan, int stop_at, bool exact_max) 
     for (int b = 0; b < valid; ++b) {
       // This bucket can no longer reach stop_at (nor, for the exact maximum, beat the best).
       const int possible = count + (valid - b);
-      if (possible < stop_at && (!exact_max || possible <= best)) break;
+      if (possible < stop_at && (goal != Count::kExactMax || possible <= best)) break;
       const Eigen::Vector2d& l = local_[static_cast<std::size_t>(b)];
       const Eigen::Vector2d q(sensor.x + (c * l.x() - s * l.y()), sensor.y + (s * l.x() + c * l.y()));
       // Stored cells this beam may read at the bucket's poses (§4.5 adds cell and offset).
@@ -244,7 +244,7 @@ bool ResponseBound::MayExceed(const LaserScan& scan, std::span<const LaserScan* 
   while (needed <= static_cast<int>(beams) && !(static_cast<double>(needed) * 100.0 / divisor > threshold)) ++needed;
   if (needed > static_cast<int>(beams)) return false;  // even every beam at 100 stays <= threshold
   MarkChain(scan, base_scans);
-  return MaxCount(scan, needed, false) >= needed;
+  return MaxCount(scan, needed, Count::kUntilStopAt) >= needed;
 }
 
 std::int64_t ResponseBound::MaxSumBound(const LaserScan& scan, std::span<const LaserScan* const> base_scans) {
@@ -252,7 +252,7 @@ std::int64_t ResponseBound::MaxSumBound(const LaserScan& scan, std::span<const L
   if (beams == 0) return 0;
   if (num_buckets_ == 0) return static_cast<std::int64_t>(beams) * 100;
   MarkChain(scan, base_scans);
-  return static_cast<std::int64_t>(MaxCount(scan, static_cast<int>(beams) + 1, true)) * 100;
+  return static_cast<std::int64_t>(MaxCount(scan, static_cast<int>(beams) + 1, Count::kExactMax)) * 100;
 }
 
 }  // namespace slamtune::slam

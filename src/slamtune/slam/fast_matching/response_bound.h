@@ -59,9 +59,11 @@ class ResponseBound {
   void MarkChain(const LaserScan& scan, std::span<const LaserScan* const> base_scans);
   // Whether the bitmap holds a point in the metric box [lo, hi] (bitmap cells rounded outwards).
   bool AnyPointIn(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) const;
-  // With exact_max, the largest bucket count. Otherwise a count >= stop_at if some bucket
-  // reaches stop_at (returned as soon as one does) and a smaller one if none does.
-  int MaxCount(const LaserScan& scan, int stop_at, bool exact_max);
+  // What MaxCount must find: the largest bucket count (kExactMax), or only whether some bucket
+  // reaches stop_at (kUntilStopAt: a count >= stop_at, returned as soon as one does, and a
+  // smaller one if none does).
+  enum class Count { kUntilStopAt, kExactMax };
+  int MaxCount(const LaserScan& scan, int stop_at, Count goal);
 
   CorrelationGridGeometry geometry_;
   double resolution_;          // rho, as the grid reads it back (1 / scale)

@@ -35,7 +35,7 @@ double BoundOf(ResponseBound& bound, const LaserScan& scan, const std::vector<co
 double CheckCase(ScanMatcher& matcher, ResponseBound& bound, const LaserScan& scan,
                  const std::vector<const LaserScan*>& base) {
   const double limit = BoundOf(bound, scan, base);
-  const MatchResult m = matcher.Match(scan, base, false, true);
+  const MatchResult m = matcher.Match(scan, base, Penalize::kNo, Refine::kYes);
   EXPECT_LE(m.response, limit) << "the bound is below the matcher's best response";
   for (const double t : {0.05, 0.3, 0.5, 0.8 - 1e-6, 0.95, limit - 1e-9, limit}) {
     EXPECT_EQ(bound.MayExceed(scan, base, t), limit > t) << "threshold " << t << ", bound " << limit;
@@ -109,12 +109,12 @@ TEST(ResponseBound, AChainOutOfReachProvesRejection) {
   ResponseBound bound(KartoSequential());
   const std::vector<const LaserScan*> base{&far};
   EXPECT_FALSE(bound.MayExceed(scan, base, 0.1));
-  EXPECT_EQ(matcher.Match(scan, base, false, true).response, 0.0);
+  EXPECT_EQ(matcher.Match(scan, base, Penalize::kNo, Refine::kYes).response, 0.0);
   // Seen from its own pose, the chain matches perfectly and the bound cannot rule it out.
   const LaserScan same = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
   const std::vector<const LaserScan*> near{&same};
   EXPECT_TRUE(bound.MayExceed(scan, near, 0.8 - 1e-6));
-  EXPECT_GT(matcher.Match(scan, near, false, true).response, 0.8);
+  EXPECT_GT(matcher.Match(scan, near, Penalize::kNo, Refine::kYes).response, 0.8);
 }
 
 // Karto's linear index wraps: a beam reading past the grid's right edge reads the next row's
@@ -133,7 +133,7 @@ TEST(ResponseBound, CountsBeamsWhoseReadsWrapOntoAnotherRow) {
   const std::vector<const LaserScan*> base{&chain};
   ScanMatcher matcher(KartoSequential());
   ResponseBound bound(KartoSequential());
-  const double response = matcher.Match(scan, base, false, true).response;
+  const double response = matcher.Match(scan, base, Penalize::kNo, Refine::kYes).response;
   ASSERT_GT(response, 0.0) << "the wrapped read scored nothing; the test does not exercise the wrap";
   EXPECT_LE(response, BoundOf(bound, scan, base));
   EXPECT_TRUE(bound.MayExceed(scan, base, 0.5 * response));

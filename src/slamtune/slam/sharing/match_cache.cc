@@ -53,8 +53,8 @@ std::string MatchCacheCounters::ToString() const {
 MatchCache::MatchCache(const MatchCacheOptions& options) : options_(options) { options_.Validate(); }
 
 std::vector<std::uint64_t> MatchCache::KeyOf(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                                             std::span<const LaserScan* const> base_scans, bool penalize,
-                                             bool refine) {
+                                             std::span<const LaserScan* const> base_scans, Penalize penalize,
+                                             Refine refine) {
   std::lock_guard lock(mutex_);
   return KeyLocked(role, options, scan, base_scans, penalize, refine);
 }
@@ -93,8 +93,8 @@ std::uint32_t MatchCache::InternLocked(const LaserScan& scan) {
 }
 
 std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatcherOptions& o, const LaserScan& scan,
-                                                 std::span<const LaserScan* const> base_scans, bool penalize,
-                                                 bool refine, std::span<const std::uint64_t> extra) {
+                                                 std::span<const LaserScan* const> base_scans, Penalize penalize,
+                                                 Refine refine, std::span<const std::uint64_t> extra) {
   std::vector<std::uint64_t> key;
   if (!scan.geometry_ptr() || !scan.ranges_ptr()) return key;
   for (const LaserScan* b : base_scans) {
@@ -110,7 +110,8 @@ std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatch
                    o.angle_variance_penalty, o.minimum_distance_penalty, o.minimum_angle_penalty}) {
     header.push_back(Bits(v));
   }
-  header.push_back((o.use_response_expansion ? 1u : 0u) | (penalize ? 2u : 0u) | (refine ? 4u : 0u));
+  header.push_back((o.use_response_expansion ? 1u : 0u) | (penalize == Penalize::kYes ? 2u : 0u) |
+                   (refine == Refine::kYes ? 4u : 0u));
   AppendGeometryKey(scan.geometry(), &header);
   header.insert(header.end(), extra.begin(), extra.end());
   auto h = headers_.find(header);
@@ -159,14 +160,14 @@ void MatchCache::EraseLocked(std::unordered_map<std::vector<std::uint64_t>, Entr
 }
 
 MatchResult MatchCache::Match(MatchRole role, ScanMatcher& matcher, const LaserScan& scan,
-                              std::span<const LaserScan* const> base_scans, bool penalize, bool refine) {
+                              std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine) {
   SLAMTUNE_CHECK_MSG(role != MatchRole::kNearChain, "match cache: near-chain matches go through MatchAbove");
   return Find(role, matcher.options(), scan, base_scans, penalize, refine, {},
               [&] { return matcher.Match(scan, base_scans, penalize, refine); });
 }
 
 MatchResult MatchCache::MatchAbove(ScanMatcher& matcher, const LaserScan& scan,
-                                   std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                                   std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine,
                                    double threshold, const std::function<bool()>& may_exceed) {
   const std::uint64_t extra[] = {Bits(threshold)};
   return Find(MatchRole::kNearChain, matcher.options(), scan, base_scans, penalize, refine, extra, [&] {
@@ -175,7 +176,7 @@ MatchResult MatchCache::MatchAbove(ScanMatcher& matcher, const LaserScan& scan,
 }
 
 MatchResult MatchCache::Find(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                             std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                             std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine,
                              std::span<const std::uint64_t> extra, const std::function<MatchResult()>& compute) {
   std::unique_lock lock(mutex_);
   std::vector<std::uint64_t> key;

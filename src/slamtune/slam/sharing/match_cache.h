@@ -86,7 +86,7 @@ class MatchCache {
   // `role`: from the cache when the same call was made before, otherwise computed with
   // `matcher` on the calling thread and stored. The matcher itself is not shared.
   MatchResult Match(MatchRole role, ScanMatcher& matcher, const LaserScan& scan,
-                    std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+                    std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine);
 
   // A near-chain match (role kNearChain; §5.3 step 3), which the caller keeps only when its
   // response exceeds `threshold`. On a miss `may_exceed()` is asked first; when it says the
@@ -94,7 +94,7 @@ class MatchCache {
   // computed and ProvenBelowThreshold() is stored and returned instead. The threshold's bits
   // are part of the key, so a stored proof is only served to calls with the same threshold.
   MatchResult MatchAbove(ScanMatcher& matcher, const LaserScan& scan, std::span<const LaserScan* const> base_scans,
-                         bool penalize, bool refine, double threshold, const std::function<bool()>& may_exceed);
+                         Penalize penalize, Refine refine, double threshold, const std::function<bool()>& may_exceed);
 
   MatchCacheCounters counters() const;
   const MatchCacheOptions& options() const { return options_; }
@@ -103,7 +103,7 @@ class MatchCache {
   // cache's, so keys of two caches do not compare); empty when the call cannot be keyed
   // exactly. Base scans it interns for the first time stay interned until the cache is destroyed.
   std::vector<std::uint64_t> KeyOf(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                                   std::span<const LaserScan* const> base_scans, bool penalize, bool refine);
+                                   std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine);
 
  private:
   // (log index, readings address, corrected pose x, y, theta bits) of a base scan.
@@ -118,11 +118,11 @@ class MatchCache {
 
   // `extra` words (e.g. a threshold's bits) join the header.
   std::vector<std::uint64_t> KeyLocked(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                                       std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                                       std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine,
                                        std::span<const std::uint64_t> extra = {});
   // The lookup of Match and MatchAbove: a stored result, or `compute()` run once and stored.
   MatchResult Find(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
-                   std::span<const LaserScan* const> base_scans, bool penalize, bool refine,
+                   std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine,
                    std::span<const std::uint64_t> extra, const std::function<MatchResult()>& compute);
   std::uint32_t InternLocked(const LaserScan& scan);
   void HoldReadingsLocked(const LaserScan& scan);

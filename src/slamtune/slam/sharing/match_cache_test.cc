@@ -78,17 +78,20 @@ TEST(MatchCache, MatchAboveStoresProofsAndMatchesPerThreshold) {
   int asked = 0;
   const auto cannot = [&] { return ++asked, false; };
   const auto can = [&] { return ++asked, true; };
-  EXPECT_TRUE(IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.8, cannot)));
-  EXPECT_TRUE(IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.8, can)));
+  EXPECT_TRUE(
+      IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes, 0.8, cannot)));
+  EXPECT_TRUE(
+      IsProvenBelowThreshold(cache.MatchAbove(matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes, 0.8, can)));
   EXPECT_EQ(asked, 1);  // the second call was served the stored proof
-  const MatchResult real = cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.5, can);
+  const MatchResult real = cache.MatchAbove(matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes, 0.5, can);
   EXPECT_EQ(asked, 2);  // another threshold: another entry
   ScanMatcher fresh(f.options);
-  EXPECT_TRUE(SameBits(real, fresh.Match(f.scan, f.base_ptrs, false, true)));
-  EXPECT_TRUE(SameBits(real, cache.MatchAbove(matcher, f.scan, f.base_ptrs, false, true, 0.5, cannot)));
+  EXPECT_TRUE(SameBits(real, fresh.Match(f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes)));
+  EXPECT_TRUE(SameBits(real, cache.MatchAbove(matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes, 0.5, cannot)));
   EXPECT_EQ(asked, 2);
   // Near-chain entries are apart from plain sequential ones with the same inputs.
-  const MatchResult plain = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, true);
+  const MatchResult plain =
+      cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes);
   EXPECT_TRUE(SameBits(plain, real));
   EXPECT_EQ(cache.counters().misses, 3u);
   EXPECT_EQ(cache.counters().hits, 2u);
@@ -98,14 +101,14 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   Fixture f;
   MatchCache cache;
   const auto key = [&](MatchRole role, const ScanMatcherOptions& o, const LaserScan& s,
-                       const std::vector<const LaserScan*>& b, bool penalize, bool refine) {
+                       const std::vector<const LaserScan*>& b, Penalize penalize, Refine refine) {
     return cache.KeyOf(role, o, s, b, penalize, refine);
   };
-  const auto base = key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, true, true);
+  const auto base = key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
   ASSERT_FALSE(base.empty());
-  EXPECT_NE(base, key(MatchRole::kLoop, f.options, f.scan, f.base_ptrs, true, true));
-  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, false, true));
-  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, true, false));
+  EXPECT_NE(base, key(MatchRole::kLoop, f.options, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo));
   // Each result-affecting option changes the key; threads and branch_and_bound do not.
   std::vector<ScanMatcherOptions> changed(12, f.options);
   changed[0].search_dimension = 0.5;
@@ -121,12 +124,12 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   changed[10].minimum_angle_penalty = 0.8;
   changed[11].use_response_expansion = true;
   for (const ScanMatcherOptions& o : changed) {
-    EXPECT_NE(base, key(MatchRole::kSequential, o, f.scan, f.base_ptrs, true, true));
+    EXPECT_NE(base, key(MatchRole::kSequential, o, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes));
   }
   ScanMatcherOptions speed = f.options;
   speed.threads = 3;
   speed.branch_and_bound = !speed.branch_and_bound;
-  EXPECT_EQ(base, key(MatchRole::kSequential, speed, f.scan, f.base_ptrs, true, true));
+  EXPECT_EQ(base, key(MatchRole::kSequential, speed, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes));
   // The laser geometry counts.
   LaserGeometry wider = f.scan.geometry();
   wider.max_range = 81.0;
@@ -139,24 +142,25 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
     other_bases.emplace_back(wider_ptr, b.ranges_ptr(), b.odometric_pose(), b.time());
     other_bases.back().log_index = b.log_index;
   }
-  EXPECT_NE(base, key(MatchRole::kSequential, f.options, other_laser, {&other_bases[0], &other_bases[1], &other_bases[2]},
-                      true, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, other_laser,
+                      {&other_bases[0], &other_bases[1], &other_bases[2]}, Penalize::kYes, Refine::kYes));
   // One ulp of the scan's pose, of a base pose, the base order and the log index all count.
   // (The copied bases carry the interning hint of the originals: a stale hint must not count.)
   LaserScan moved = f.scan;
   moved.SetSensorPose({std::nextafter(f.scan.SensorPose().x, 1.0), f.scan.SensorPose().y, f.scan.SensorPose().theta});
-  EXPECT_NE(base, key(MatchRole::kSequential, f.options, moved, f.base_ptrs, true, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, moved, f.base_ptrs, Penalize::kYes, Refine::kYes));
   std::vector<LaserScan> bases = f.bases;
   bases[1].SetSensorPose({0.2, 0, std::nextafter(0.0, 1.0)});
-  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, {&bases[0], &bases[1], &bases[2]}, true, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, {&bases[0], &bases[1], &bases[2]}, Penalize::kYes,
+                      Refine::kYes));
   EXPECT_NE(base, key(MatchRole::kSequential, f.options, f.scan, {f.base_ptrs[1], f.base_ptrs[0], f.base_ptrs[2]},
-                      true, true));
+                      Penalize::kYes, Refine::kYes));
   LaserScan renumbered = f.scan;
   renumbered.log_index = 4;
-  EXPECT_NE(base, key(MatchRole::kSequential, f.options, renumbered, f.base_ptrs, true, true));
+  EXPECT_NE(base, key(MatchRole::kSequential, f.options, renumbered, f.base_ptrs, Penalize::kYes, Refine::kYes));
   // Same readings data, a copied scan: same key.
   const LaserScan copy = f.scan;
-  EXPECT_EQ(base, key(MatchRole::kSequential, f.options, copy, f.base_ptrs, true, true));
+  EXPECT_EQ(base, key(MatchRole::kSequential, f.options, copy, f.base_ptrs, Penalize::kYes, Refine::kYes));
 }
 
 // Base scans are named by interned ids: half a word each, not five.
@@ -167,14 +171,15 @@ TEST(MatchCache, KeysAreCompact) {
   for (const LaserScan& b : bases) ptrs.push_back(&b);
   const LaserScan scan = RoomScan({0.7, 0, 0}, 70);
   MatchCache cache;
-  const auto key = cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, ptrs, true, true);
+  const auto key = cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, ptrs, Penalize::kYes, Refine::kYes);
   EXPECT_EQ(key.size(), 10u + 35u);
   EXPECT_EQ(cache.counters().interned, 70u);
   // The same call again, and through copies of the scans: the same key, no new ids.
   std::vector<LaserScan> copies = bases;
   std::vector<const LaserScan*> copy_ptrs;
   for (const LaserScan& b : copies) copy_ptrs.push_back(&b);
-  EXPECT_EQ(key, cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, copy_ptrs, true, true));
+  EXPECT_EQ(key,
+            cache.KeyOf(MatchRole::kSequential, ScanMatcherOptions{}, scan, copy_ptrs, Penalize::kYes, Refine::kYes));
   EXPECT_EQ(cache.counters().interned, 70u);
 }
 
@@ -194,8 +199,9 @@ TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
       b.SetCorrectedPose({p.x + 0.01 * round, p.y, p.theta});
     }
     const std::vector<const LaserScan*> ptrs = {&bases[0], &bases[1], &bases[2]};
-    const MatchResult expected = reference.Match(f.scan, ptrs, true, true);
-    EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, ptrs, true, true), expected));
+    const MatchResult expected = reference.Match(f.scan, ptrs, Penalize::kYes, Refine::kYes);
+    EXPECT_TRUE(
+        SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, ptrs, Penalize::kYes, Refine::kYes), expected));
   }
   const MatchCacheCounters c = cache.counters();
   EXPECT_EQ(c.misses, 3u);
@@ -206,15 +212,18 @@ TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
 TEST(MatchCache, HitReturnsTheMatchersResult) {
   Fixture f;
   ScanMatcher reference(f.options);
-  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, true, true);
+  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
   MatchCache cache;
   ScanMatcher a(f.options);
   ScanMatcher b(f.options);
-  EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, a, f.scan, f.base_ptrs, true, true), expected));
-  EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, true, true), expected));
+  EXPECT_TRUE(
+      SameBits(cache.Match(MatchRole::kSequential, a, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes), expected));
+  EXPECT_TRUE(
+      SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes), expected));
   // Another flag combination is another entry.
-  const MatchResult coarse = reference.Match(f.scan, f.base_ptrs, false, false);
-  EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, false, false), coarse));
+  const MatchResult coarse = reference.Match(f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);
+  EXPECT_TRUE(
+      SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo), coarse));
   const MatchCacheCounters c = cache.counters();
   EXPECT_EQ(c.misses, 2u);
   EXPECT_EQ(c.hits, 1u);
@@ -226,7 +235,7 @@ TEST(MatchCache, HitReturnsTheMatchersResult) {
 TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
   Fixture f;
   ScanMatcher reference(f.options);
-  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, true, true);
+  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
   MatchCache cache;
   constexpr int kThreads = 4;
   std::vector<MatchResult> results(kThreads);
@@ -234,7 +243,7 @@ TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
   for (int t = 0; t < kThreads; ++t) {
     threads.emplace_back([&, t] {
       ScanMatcher matcher(f.options);
-      results[t] = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, true);
+      results[t] = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
     });
   }
   for (std::thread& t : threads) t.join();
@@ -252,9 +261,10 @@ TEST(MatchCache, EvictionNeverChangesResults) {
   ScanMatcher reference(f.options);
   ScanMatcher matcher(f.options);
   for (int round = 0; round < 2; ++round) {
-    for (bool penalize : {false, true}) {
-      const MatchResult expected = reference.Match(f.scan, f.base_ptrs, penalize, true);
-      EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, penalize, true), expected));
+    for (Penalize penalize : {Penalize::kNo, Penalize::kYes}) {
+      const MatchResult expected = reference.Match(f.scan, f.base_ptrs, penalize, Refine::kYes);
+      EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, penalize, Refine::kYes),
+                           expected));
     }
   }
   const MatchCacheCounters c = cache.counters();
@@ -272,24 +282,24 @@ TEST(MatchCache, EvictionKeepsRecentlyUsedEntries) {
   std::size_t two_entries = 0;
   {
     MatchCache probe;
-    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);
-    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);
+    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);
+    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo);
     two_entries = probe.counters().bytes;
   }
   MatchCacheOptions o;
   o.byte_budget = two_entries + 8;  // a third entry evicts
   MatchCache cache(o);
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);   // B
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A used again
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, true);   // C: evicts B
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);   // A
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo);  // B
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);   // A used again
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes);  // C: evicts B
   MatchCacheCounters c = cache.counters();
   EXPECT_EQ(c.misses, 3u);
   EXPECT_EQ(c.hits, 1u);
   EXPECT_GE(c.evictions, 1u);
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, false, false);  // A: still there
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);  // A: still there
   EXPECT_EQ(cache.counters().hits, 2u);
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, true, false);  // B: gone
+  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo);  // B: gone
   EXPECT_EQ(cache.counters().misses, 4u);
 }
 

@@ -39,7 +39,7 @@ bool SameBits(const std::vector<Pose2>& a, const std::vector<Pose2>& b) {
 }
 
 TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
-  const auto solver = MakeSolver("spa");
+  const auto solver = MakeSolver(SolverKind::kSpa);
   Graph g;
   std::vector<Pose2> direct = g.nodes;
   const SolveSummary expected = solver->Solve(direct, g.edges);
@@ -104,7 +104,7 @@ TEST(SolveCache, EvictionKeepsRecentlyUsedSolves) {
 }
 
 TEST(SolveCache, BudgetEvictsButResultsStayExact) {
-  const auto solver = MakeSolver("spa");
+  const auto solver = MakeSolver(SolverKind::kSpa);
   Graph g;
   const std::size_t one_entry = SolveCache::KeyOf("spa", "None", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
   SolveCache cache(one_entry + one_entry / 2);  // room for one
