@@ -73,42 +73,30 @@ std::string SimulationSummary::Report() const {
       revisit_relations, longest_revisit_gap_s, faults);
 }
 
-Simulation Simulate(const SimulationOptions& options) {
-  options.Validate();
-  Simulation sim;
-  sim.world = MakeWorld(options.world);
-  const Route route(sim.world.waypoints, sim.world.turn_radius);
-  const double duration = route.length() / options.speed_mps;
-  const std::size_t num_scans = static_cast<std::size_t>(std::floor(duration * options.scan_rate_hz + 1e-9)) + 1;
-  const std::size_t num_odometry = static_cast<std::size_t>(std::floor(route.length() / options.step_length_m + 1e-9)) + 1;
-  if (num_scans > options.max_scans) {
-    throw InputError(fmt::format("scan_rate_hz = {}, speed_mps = {}: world '{}' would give {} scans, above max_scans = {}",
-                                 options.scan_rate_hz, options.speed_mps, options.world, num_scans, options.max_scans));
-  }
-  const RayCaster caster(sim.world.walls);
-  const LaserOptions& laser = options.laser;
-  // FLASER when the beams follow its convention (carmen_reader.h), taking the reader's exact
-  // values so the log reads back identical; ROBOTLASER1, which states its geometry, otherwise.
+namespace {
+
+// The beam geometry the records state: FLASER when the beams follow its convention
+// (carmen_reader.h), with the reader's exact values so the log reads back identical;
+// ROBOTLASER1, which states its geometry, otherwise.
+struct RecordGeometry {
   io::RecordKind kind = io::RecordKind::kRobotLaser1;
-  double angle_min = laser.angle_min(), angle_increment = laser.angle_increment();
+  double angle_min = 0.0;
+  double angle_increment = 0.0;
+};
+
+RecordGeometry RecordGeometryOf(const LaserOptions& laser) {
+  RecordGeometry g{io::RecordKind::kRobotLaser1, laser.angle_min(), laser.angle_increment()};
   double flaser_min = 0.0, flaser_increment = 0.0;
   io::FlaserBeamGeometry(laser.beams, &flaser_min, &flaser_increment);
-  if (std::fabs(flaser_min - angle_min) < 1e-12 && std::fabs(flaser_increment - angle_increment) < 1e-12) {
-    kind = io::RecordKind::kFlaser;
-    angle_min = flaser_min;
-    angle_increment = flaser_increment;
+  if (std::fabs(flaser_min - g.angle_min) < 1e-12 && std::fabs(flaser_increment - g.angle_increment) < 1e-12) {
+    g = {io::RecordKind::kFlaser, flaser_min, flaser_increment};
   }
-  Random laser_random(StreamSeed(options.seed, kLaserStream));
-  sim.odometry = options.odometry;
-  if (options.plant_world_faults) {
-    for (const OdometryFault& fault : sim.world.odometry_faults) sim.odometry.faults.push_back(fault);
-  }
-  sim.odometry.Validate();
-  OdometryModel odometry(route.PoseAt(0.0), sim.odometry, StreamSeed(options.seed, kOdometryStream));
+  return g;
+}
 
-  io::LaserLog& log = sim.log;
+// The PARAM records and the no-return rule of the log, as a CARMEN logger writes them.
+void WriteLogHeader(const LaserOptions& laser, const Pose2& offset, io::LaserLog& log) {
   log.path = "<memory>";
-  const Pose2& offset = options.laser_offset;
   const bool has_offset = !IsZero(offset);
   log.params = {{kMaxRangeParam, fmt::format("{}", laser.max_range())},
                 {"laser_front_laser_fov", fmt::format("{}", laser.fov_deg)},
@@ -120,55 +108,102 @@ Simulation Simulate(const SimulationOptions& options) {
   }
   log.no_return_value = laser.max_range();
   log.no_return_rule = std::string("PARAM ") + kMaxRangeParam;
-  log.scans.reserve(num_scans);
-  log.odometry.reserve(num_odometry);
-  sim.truth.reserve(num_scans);
+}
 
-  // Walk the merged sequence of ODOM and laser instants (ODOM first at equal times).
-  std::size_t next_scan = 0, next_odometry = 0;
-  double previous_s = 0.0;
-  Pose2 previous_true = route.PoseAt(0.0);
-  while (next_scan < num_scans || next_odometry < num_odometry) {
-    const double scan_time = Round6(options.start_time_s + next_scan / options.scan_rate_hz);
-    const double odometry_time =
-        Round6(options.start_time_s + next_odometry * options.step_length_m / options.speed_mps);
-    const bool is_odometry = next_odometry < num_odometry && (next_scan >= num_scans || odometry_time <= scan_time);
-    const double time = is_odometry ? odometry_time : scan_time;
-    const double s = std::min((time - options.start_time_s) * options.speed_mps, route.length());
-    const Pose2 true_pose = route.PoseAt(s);
-    if (s > previous_s) odometry.Advance(Between(previous_true, true_pose));
-    previous_s = s;
-    previous_true = true_pose;
-    const double logger_time = Round6(time - options.start_time_s);
-    if (is_odometry) {
-      io::OdomRecord record;
-      record.pose = Round6(odometry.pose());
-      record.tv = Round6(options.speed_mps);
-      record.rv = Round6(options.speed_mps * route.CurvatureAt(s));
-      record.ipc_time = time;
-      record.logger_time = logger_time;
-      log.odometry.push_back(record);
-      ++next_odometry;
-      continue;
+// Drives the robot along the route and records, in time order, its odometry every
+// step_length_m and a scan at scan_rate_hz (ODOM first at equal times).
+class Recorder {
+ public:
+  Recorder(const SimulationOptions& options, const Route& route, const World& world, const OdometryNoiseOptions& odometry,
+           Simulation& sim)
+      : options_(options),
+        route_(route),
+        caster_(world.walls),
+        geometry_(RecordGeometryOf(options.laser)),
+        laser_random_(StreamSeed(options.seed, kLaserStream)),
+        odometry_(route.PoseAt(0.0), odometry, StreamSeed(options.seed, kOdometryStream)),
+        previous_true_(route.PoseAt(0.0)),
+        sim_(sim) {}
+
+  void Record(std::size_t num_scans, std::size_t num_odometry) {
+    sim_.log.scans.reserve(num_scans);
+    sim_.log.odometry.reserve(num_odometry);
+    sim_.truth.reserve(num_scans);
+    std::size_t next_scan = 0, next_odometry = 0;
+    while (next_scan < num_scans || next_odometry < num_odometry) {
+      const double scan_time = Round6(options_.start_time_s + next_scan / options_.scan_rate_hz);
+      const double odometry_time =
+          Round6(options_.start_time_s + next_odometry * options_.step_length_m / options_.speed_mps);
+      const bool is_odometry = next_odometry < num_odometry && (next_scan >= num_scans || odometry_time <= scan_time);
+      const double time = is_odometry ? odometry_time : scan_time;
+      const double s = std::min((time - options_.start_time_s) * options_.speed_mps, route_.length());
+      const Pose2 true_pose = MoveTo(s);
+      if (is_odometry) {
+        RecordOdometry(time, s);
+        ++next_odometry;
+      } else {
+        RecordScan(time, true_pose);
+        ++next_scan;
+      }
     }
+  }
+
+  io::RecordKind kind() const { return geometry_.kind; }
+
+ private:
+  // The true pose at route position s; the odometry model follows the motion since the last call.
+  Pose2 MoveTo(double s) {
+    const Pose2 true_pose = route_.PoseAt(s);
+    if (s > previous_s_) odometry_.Advance(Between(previous_true_, true_pose));
+    previous_s_ = s;
+    previous_true_ = true_pose;
+    return true_pose;
+  }
+
+  void RecordOdometry(double time, double s) {
+    io::OdomRecord record;
+    record.pose = Round6(odometry_.pose());
+    record.tv = Round6(options_.speed_mps);
+    record.rv = Round6(options_.speed_mps * route_.CurvatureAt(s));
+    record.ipc_time = time;
+    record.logger_time = Round6(time - options_.start_time_s);
+    sim_.log.odometry.push_back(record);
+  }
+
+  void RecordScan(double time, const Pose2& true_pose) {
+    const Pose2& offset = options_.laser_offset;
+    const bool has_offset = !IsZero(offset);
     const Pose2 true_laser = has_offset ? Compose(true_pose, offset) : true_pose;
-    SimulatedScan scan = SimulateScan(caster, true_laser, laser, laser_random);
+    SimulatedScan scan = SimulateScan(caster_, true_laser, options_.laser, laser_random_);
     io::LaserScanRecord record;
-    record.kind = kind;
-    record.angle_min = angle_min;
-    record.angle_increment = angle_increment;
-    record.max_range = laser.max_range();
+    record.kind = geometry_.kind;
+    record.angle_min = geometry_.angle_min;
+    record.angle_increment = geometry_.angle_increment;
+    record.max_range = options_.laser.max_range();
     record.ranges = std::move(scan.ranges);
     record.no_returns = scan.no_returns;
-    record.robot_pose = Round6(odometry.pose());
+    record.robot_pose = Round6(odometry_.pose());
     record.laser_pose = has_offset ? Round12(Compose(record.robot_pose, offset)) : record.robot_pose;
     record.laser_offset = Between(record.robot_pose, record.laser_pose);  // as the reader derives it
     record.ipc_time = time;
-    record.logger_time = logger_time;
-    log.scans.push_back(std::move(record));
-    sim.truth.push_back(io::TimedPose{time, true_laser});
-    ++next_scan;
+    record.logger_time = Round6(time - options_.start_time_s);
+    sim_.log.scans.push_back(std::move(record));
+    sim_.truth.push_back(io::TimedPose{time, true_laser});
   }
+
+  const SimulationOptions& options_;
+  const Route& route_;
+  const RayCaster caster_;
+  const RecordGeometry geometry_;
+  Random laser_random_;
+  OdometryModel odometry_;
+  double previous_s_ = 0.0;
+  Pose2 previous_true_;
+  Simulation& sim_;
+};
+
+// The record counts and reading totals a reader of the written log would count.
+void CountRecords(io::RecordKind kind, io::LaserLog& log) {
   log.record_counts = {{kind == io::RecordKind::kFlaser ? "FLASER" : "ROBOTLASER1", log.scans.size()},
                        {"ODOM", log.odometry.size()},
                        {"PARAM", log.params.size()}};
@@ -176,11 +211,12 @@ Simulation Simulate(const SimulationOptions& options) {
     log.total_readings += scan.ranges.size();
     log.total_no_returns += scan.no_returns;
   }
+}
 
-  RelationSample relations = SampleRelations(sim.truth, options.relations);
-  sim.relations = std::move(relations.relations);
-
-  SimulationSummary& summary = sim.summary;
+SimulationSummary Summarize(const Simulation& sim, const SimulationOptions& options, const Route& route,
+                            const RelationSample& relations) {
+  SimulationSummary summary;
+  const io::LaserLog& log = sim.log;
   summary.world = sim.world.name;
   summary.seed = options.seed;
   summary.scans = log.scans.size();
@@ -203,6 +239,37 @@ Simulation Simulate(const SimulationOptions& options) {
   summary.revisit_relations = relations.revisit_pairs;
   summary.longest_revisit_gap_s = relations.longest_revisit_gap_s;
   for (const OdometryFault& fault : sim.odometry.faults) summary.odometry_faults.push_back(fault.Describe());
+  return summary;
+}
+
+}  // namespace
+
+Simulation Simulate(const SimulationOptions& options) {
+  options.Validate();
+  Simulation sim;
+  sim.world = MakeWorld(options.world);
+  const Route route(sim.world.waypoints, sim.world.turn_radius);
+  const double duration = route.length() / options.speed_mps;
+  const std::size_t num_scans = static_cast<std::size_t>(std::floor(duration * options.scan_rate_hz + 1e-9)) + 1;
+  const std::size_t num_odometry = static_cast<std::size_t>(std::floor(route.length() / options.step_length_m + 1e-9)) + 1;
+  if (num_scans > options.max_scans) {
+    throw InputError(fmt::format("scan_rate_hz = {}, speed_mps = {}: world '{}' would give {} scans, above max_scans = {}",
+                                 options.scan_rate_hz, options.speed_mps, options.world, num_scans, options.max_scans));
+  }
+  sim.odometry = options.odometry;
+  if (options.plant_world_faults) {
+    for (const OdometryFault& fault : sim.world.odometry_faults) sim.odometry.faults.push_back(fault);
+  }
+  sim.odometry.Validate();
+
+  WriteLogHeader(options.laser, options.laser_offset, sim.log);
+  Recorder recorder(options, route, sim.world, sim.odometry, sim);
+  recorder.Record(num_scans, num_odometry);
+  CountRecords(recorder.kind(), sim.log);
+
+  RelationSample relations = SampleRelations(sim.truth, options.relations);
+  sim.summary = Summarize(sim, options, route, relations);
+  sim.relations = std::move(relations.relations);
   return sim;
 }
 
