@@ -26,7 +26,7 @@ run_one() {  # LOG MODE
   [[ -f $dir/results.json ]] && return 0
   local n; n=$(ls "$dir"/time-*.txt 2>/dev/null | wc -l || true)
   local cmd=("$bin" optimize --quiet)
-  if [[ -f $dir/evaluations.db ]]; then
+  if [[ -f $dir/run.sqlite ]]; then
     cmd+=(--resume "$dir")
   else
     cmd+=("$data/$log.clf.gz" --relations "$data/$log.relations" --out "$dir")
