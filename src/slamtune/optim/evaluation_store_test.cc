@@ -8,10 +8,13 @@
 #include <thread>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::optim {
 namespace {
+
+using slamtune::testing::ErrorMessageOf;
 
 std::string FreshPath(const std::string& name) {
   return (slamtune::testing::UniqueTempDir("store_" + name) / "run.sqlite").string();
@@ -108,18 +111,9 @@ void Overwrite(const std::string& path, std::streamoff offset, const std::string
   file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
-std::string CheckMessage(const std::string& path) {
-  try {
-    CheckRunDatabase(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(CheckRunDatabase, IntactDatabasePasses) {
   const std::string path = FilledDatabase("intact");
-  EXPECT_EQ(CheckMessage(path), "");
+  EXPECT_NO_THROW(CheckRunDatabase(path));
   EXPECT_EQ(EvaluationStore(path).Count(), 200u);
 }
 
@@ -127,7 +121,7 @@ TEST(CheckRunDatabase, CorruptPageIsRefusedNamingTheFile) {
   const std::string path = FilledDatabase("page");
   ASSERT_GT(std::filesystem::file_size(path), 5u * 4096);
   Overwrite(path, 4 * 4096, std::string(4096, '\x5a'));
-  const std::string message = CheckMessage(path);
+  const std::string message = ErrorMessageOf([&] { CheckRunDatabase(path); });
   EXPECT_EQ(message.rfind(path + ": the run database is damaged (", 0), 0u) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
@@ -135,9 +129,10 @@ TEST(CheckRunDatabase, CorruptPageIsRefusedNamingTheFile) {
 TEST(CheckRunDatabase, OverwrittenHeaderIsRefused) {
   const std::string path = FilledDatabase("header");
   Overwrite(path, 0, "not a database header, really");
-  EXPECT_EQ(CheckMessage(path),
-            path + ": the run database is damaged (file is not a database); it cannot be resumed: start again with "
-                   "a new --out (the report files beside it stay readable)");
+  EXPECT_EQ(ErrorMessageOf([&] { CheckRunDatabase(path); }),
+            path +
+                ": the run database is damaged (file is not a database); it cannot be resumed: start again with "
+                "a new --out (the report files beside it stay readable)");
 }
 
 }  // namespace

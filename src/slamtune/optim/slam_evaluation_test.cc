@@ -13,12 +13,15 @@
 #include <string>
 #include <thread>
 
+#include "slamtune/common/testing/same_bits.h"
 #include "slamtune/io/carmen_reader.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/sim/simulation.h"
 
 namespace slamtune::optim {
 namespace {
+
+using slamtune::testing::SameBits;
 
 std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
@@ -89,9 +92,7 @@ void ExpectIdentical(const Evaluated& a, const Evaluated& b, const std::string& 
   ASSERT_EQ(a.run.trajectory.size(), b.run.trajectory.size());
   std::size_t differing = 0;
   for (std::size_t i = 0; i < a.run.trajectory.size(); ++i) {
-    const Pose2& p = a.run.trajectory[i].pose;
-    const Pose2& q = b.run.trajectory[i].pose;
-    if (Bits(p.x) != Bits(q.x) || Bits(p.y) != Bits(q.y) || Bits(p.theta) != Bits(q.theta)) ++differing;
+    if (!SameBits(a.run.trajectory[i].pose, b.run.trajectory[i].pose)) ++differing;
   }
   EXPECT_EQ(differing, 0u) << "poses differing";
   // The map, pixel for pixel.
