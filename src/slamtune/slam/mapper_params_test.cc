@@ -78,6 +78,23 @@ TEST(MapperParams, MatcherOptionsUseInternalUnits) {
   EXPECT_EQ(loop.smear_deviation, 0.03);
 }
 
+TEST(MapperParams, GridOptionsTakeTheMapParameters) {
+  MapperParams p;
+  p.resolution = 0.1;
+  p.min_pass_through = 5;
+  p.occupancy_threshold = 0.25;
+  const OccupancyGridOptions grid = GridOptionsOf(p);
+  EXPECT_EQ(grid.resolution, 0.1);
+  EXPECT_EQ(grid.min_pass_through, 5);
+  EXPECT_EQ(grid.occupancy_threshold, 0.25);
+  EXPECT_EQ(grid.max_cells, OccupancyGridOptions{}.max_cells);
+  // The defaults of both agree: slam_karto's map parameters.
+  const OccupancyGridOptions defaults = GridOptionsOf(MapperParams{});
+  EXPECT_EQ(defaults.resolution, OccupancyGridOptions{}.resolution);
+  EXPECT_EQ(defaults.min_pass_through, OccupancyGridOptions{}.min_pass_through);
+  EXPECT_EQ(defaults.occupancy_threshold, OccupancyGridOptions{}.occupancy_threshold);
+}
+
 TEST(MapperParams, ValidationNamesParameterValueAndRule) {
   MapperParams p;
   p.loop_match_minimum_chain_size = 0;
