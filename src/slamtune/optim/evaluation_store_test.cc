@@ -1,7 +1,10 @@
 #include "slamtune/optim/evaluation_store.h"
 #include "slamtune/optim/objective_set.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sqlite3.h>
 
 #include <filesystem>
 #include <fstream>
@@ -56,6 +59,48 @@ TEST(EvaluationStore, RecordsSurviveReopening) {
   EXPECT_FALSE(store.Get("missing").has_value());
   EXPECT_EQ(store.LastGeneration(), 0);
   EXPECT_EQ(store.All().front().key, "r=0");
+}
+
+// Runs `sql` on the database at `path` and returns the first column of each row as text.
+std::vector<std::string> Column(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  sqlite3_stmt* stmt = nullptr;
+  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+  std::vector<std::string> out;
+  while (sqlite3_step(stmt) == SQLITE_ROW) {
+    const unsigned char* text = sqlite3_column_text(stmt, 0);
+    out.emplace_back(text == nullptr ? "" : reinterpret_cast<const char*>(text));
+  }
+  sqlite3_finalize(stmt);
+  sqlite3_close(db);
+  return out;
+}
+
+TEST(EvaluationStore, StatusIsStoredAsOkOrFailedText) {
+  const std::string path = FreshPath("status");
+  {
+    EvaluationStore store(path);
+    store.Put(Sample(0));
+    store.Put(EvaluationRecord::Failed("f", {}, "solver diverged"));
+  }
+  EXPECT_EQ(Column(path, "SELECT status FROM evaluations ORDER BY seq"), (std::vector<std::string>{"ok", "failed"}));
+  std::vector<std::string> statuses;
+  for (const std::string& record : Column(path, "SELECT record FROM evaluations ORDER BY seq")) {
+    statuses.push_back(nlohmann::json::parse(record).at("status").get<std::string>());
+  }
+  EXPECT_EQ(statuses, (std::vector<std::string>{"ok", "failed"}));
+  EvaluationStore store(path);
+  EXPECT_EQ(store.Get("r=0")->status, RunStatus::kOk);
+  EXPECT_EQ(store.Get("f")->status, RunStatus::kFailed);
+}
+
+TEST(EvaluationStore, AnUnknownStoredStatusIsAnInputError) {
+  const std::string path = FreshPath("unknown_status");
+  EvaluationStore(path).Put(EvaluationRecord::Failed("f", {}, "solver diverged"));
+  Column(path, "UPDATE evaluations SET record = replace(record, '\"status\":\"failed\"', '\"status\":\"passed\"')");
+  EXPECT_THAT([&] { EvaluationStore(path).Get("f"); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("unknown evaluation status 'passed'")));
 }
 
 TEST(EvaluationStore, FailedRecordsScoreWorst) {

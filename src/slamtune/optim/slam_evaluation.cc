@@ -93,7 +93,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   }
   if (quality.occupied_cells == 0) {
     // Nothing to score: an empty map would win every objective.
-    record.status = "failed";
+    record.status = RunStatus::kFailed;
     record.reason = "the map has no occupied cell (no reading reached it: min_laser_range at or above the range "
                     "threshold?)";
   }
