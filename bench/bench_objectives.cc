@@ -172,7 +172,7 @@ int Run(int argc, char** argv) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<EvaluationRecord> ok;
   for (const auto& r : all)
-    if (r.status == "ok" && r.has_gt) ok.push_back(r);
+    if (r.status == slamtune::optim::RunStatus::kOk && r.has_gt) ok.push_back(r);
   if (ok.size() < 5) throw slamtune::InputError(fmt::format("only {} runs succeeded with ground truth", ok.size()));
   if (!csv.empty()) WriteCsv(csv, ok);
 

@@ -61,7 +61,8 @@ struct Digest {
 std::uint64_t DigestOf(const slamtune::optim::EvaluationRecord& r, const slamtune::optim::SlamRun& run) {
   Digest d;
   for (slamtune::optim::Objective o : slamtune::optim::AllObjectives()) {
-    d.Add(r.status == "ok" ? slamtune::optim::ValueOf(r, o) : slamtune::optim::InfoOf(o).failure_score);
+    d.Add(r.status == slamtune::optim::RunStatus::kOk ? slamtune::optim::ValueOf(r, o)
+                                                      : slamtune::optim::InfoOf(o).failure_score);
   }
   d.Add(r.occupied_ratio_known);
   d.Add(static_cast<std::uint64_t>(r.nodes));

@@ -36,6 +36,7 @@
 #include "slamtune/report/png_encoding.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
+#include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/occupancy_grid.h"
 #include "slamtune/slam/params_yaml.h"
 #include "slamtune/slam/run_trace.h"
@@ -178,12 +179,9 @@ struct RunMap {
 RunMap WriteMap(const slam::LogRunner& runner, const slam::MapperParams& params, const std::string& log_label,
                 const std::string& out) {
   const auto map_start = std::chrono::steady_clock::now();
-  slam::OccupancyGridOptions grid_options;
-  grid_options.resolution = params.resolution;
-  grid_options.min_pass_through = params.min_pass_through;
-  grid_options.occupancy_threshold = params.occupancy_threshold;
   RunMap map;
-  map.image = slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()), grid_options)
+  map.image = slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()),
+                                             slam::GridOptionsOf(params))
                   .ToMapImage();
   if (map.image.width <= 0 || map.image.height <= 0) {
     throw InputError(log_label, 0,

@@ -89,7 +89,7 @@ void PrintSweepTable(const std::string& name, const std::vector<report::SweepPoi
     std::printf("%-10.4g %6d %10.5f %10.0f %9.0f", p.value, p.record.loop_closures, p.record.occupied_ratio,
                 p.record.corner_pixels, p.record.enclosed_areas);
     if (p.record.has_gt) std::printf(" %9.4f %8.3f", p.record.trans_mean_m, p.record.rot_mean_deg);
-    std::printf("%s\n", p.record.status == "ok" ? "" : ("  FAILED: " + p.record.reason).c_str());
+    std::printf("%s\n", p.record.status == optim::RunStatus::kOk ? "" : ("  FAILED: " + p.record.reason).c_str());
   }
 }
 

@@ -6,24 +6,17 @@
 #include <fstream>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune {
 namespace {
 
 namespace fs = std::filesystem;
+using slamtune::testing::ErrorMessageOf;
 
-std::string TempPath(const std::string& name) { return (fs::path(testing::TempDir()) / name).string(); }
+std::string TempPath(const std::string& name) { return (fs::path(::testing::TempDir()) / name).string(); }
 
 void Write(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-std::string ErrorOf(const std::string& path) {
-  try {
-    ReadTextFile(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 TEST(ReadTextFile, ReadsTheWholeFileAndStripsAByteOrderMark) {
   const std::string plain = TempPath("text_file_plain.yaml");
@@ -38,9 +31,10 @@ TEST(ReadTextFile, ReadsTheWholeFileAndStripsAByteOrderMark) {
 TEST(ReadTextFile, RefusesDirectoriesMissingAndEmptyPaths) {
   const std::string dir = TempPath("text_file_dir");
   fs::create_directories(dir);
-  EXPECT_EQ(ErrorOf(dir), dir + ": cannot open: is a directory");
-  EXPECT_EQ(ErrorOf(dir + "/absent.yaml"), dir + "/absent.yaml: cannot open: no such file");
-  EXPECT_EQ(ErrorOf(""), "empty file name: a file to read is required");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTextFile(dir); }), dir + ": cannot open: is a directory");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTextFile(dir + "/absent.yaml"); }),
+            dir + "/absent.yaml: cannot open: no such file");
+  EXPECT_EQ(ErrorMessageOf([] { ReadTextFile(""); }), "empty file name: a file to read is required");
 }
 
 TEST(StripUtf8Bom, RemovesOnlyALeadingMark) {

@@ -4,23 +4,17 @@
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using testing::Bytes;
 using testing::ByteWriter;
 using ::testing::HasSubstr;
-
-std::string ErrorOf(const std::function<void()>& read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using ::testing::ThrowsMessage;
 
 TEST(ByteCursorTest, ReadsLittleEndianIntegersStringsAndBytes) {
   const Bytes bytes = ByteWriter()
@@ -51,7 +45,7 @@ TEST(ByteCursorTest, ReadingPastTheEndNamesTheAbsoluteOffsetAndTheField) {
   const Bytes bytes = {1, 2, 3, 4, 5, 6};
   ByteCursor cursor(bytes, "f.mcap", /*first_offset=*/100, "byte 90 (chunk), uncompressed ");
   cursor.U32("Message sequence");
-  EXPECT_EQ(ErrorOf([&] { cursor.U64("Message log_time"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { cursor.U64("Message log_time"); }),
             "f.mcap: byte 90 (chunk), uncompressed byte 104 (Message log_time): needs 8 bytes, 2 left");
   EXPECT_EQ(cursor.offset(), 104u);  // a failed read moves nothing
 }
@@ -60,11 +54,12 @@ TEST(ByteCursorTest, ALengthPrefixRunningPastTheEndIsReportedAtThePrefix) {
   const Bytes bytes = ByteWriter().U8(0).U32(1000).Raw("abc").Take();
   ByteCursor cursor(bytes, "x.bag");
   cursor.U8("op");
-  EXPECT_EQ(ErrorOf([&] { cursor.StringU32("Channel topic"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { cursor.StringU32("Channel topic"); }),
             "x.bag: byte 1 (Channel topic): length 1000 runs past the end (3 bytes left)");
   const Bytes huge_length = ByteWriter().U64(~std::uint64_t{0}).Take();
   ByteCursor huge(huge_length, "y");
-  EXPECT_THAT(ErrorOf([&] { huge.BytesU64("records"); }), HasSubstr("byte 0 (records): length 18446744073709551615"));
+  EXPECT_THAT([&] { huge.BytesU64("records"); },
+              ThrowsMessage<InputError>(HasSubstr("byte 0 (records): length 18446744073709551615")));
 }
 
 }  // namespace

@@ -12,12 +12,15 @@
 #include <unistd.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 // "FLASER n r..r x y theta ox oy otheta ipc host logger" with all readings equal to `reading`.
 std::string Flaser(int n, double reading, const Pose2& laser, const Pose2& robot, double t) {
@@ -36,13 +39,9 @@ LaserLog ReadText(const std::string& text, const LogReadOptions& options = {}) {
   return ReadCarmenLog(in, "mem.clf", options);
 }
 
+// The message of the InputError reading `text` as a log throws.
 std::string ErrorOf(const std::string& text, const LogReadOptions& options = {}) {
-  try {
-    ReadText(text, options);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return ErrorMessageOf([&] { ReadText(text, options); });
 }
 
 std::string TempPath(const std::string& name) {
@@ -374,7 +373,9 @@ TEST(CarmenReaderTest, NonNumberAndNonFiniteFields) {
 TEST(CarmenReaderTest, TruncatedLastLineIsNamed) {
   std::string text = Flaser(1.0) + Flaser(2.0);
   text.resize(text.size() - 40);  // cut inside the readings, no final newline
-  EXPECT_THAT(ErrorOf(text), HasSubstr("mem.clf:2: truncated last line (no newline at the end): FLASER declares 180"));
+  EXPECT_THAT([&] { ReadText(text); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("mem.clf:2: truncated last line (no newline at the end): FLASER declares 180")));
   // A complete last line without a newline is fine.
   std::string unterminated = Flaser(1.0);
   unterminated.pop_back();
@@ -383,7 +384,7 @@ TEST(CarmenReaderTest, TruncatedLastLineIsNamed) {
 
 TEST(CarmenReaderTest, LenientSkipsAndCountsMalformedRecords) {
   const std::string text = Flaser(1.0) + "FLASER 2 1.0 abc 0 0 0 0 0 0 1 h 1\n" + Flaser(2.0) + "ODOM 1 2\n";
-  EXPECT_THAT(ErrorOf(text), HasSubstr("mem.clf:2:"));
+  EXPECT_THAT([&] { ReadText(text); }, ThrowsMessage<InputError>(HasSubstr("mem.clf:2:")));
   LogReadOptions options;
   options.lenient = true;
   const LaserLog log = ReadText(text, options);
@@ -403,7 +404,7 @@ TEST(CarmenReaderTest, EmptyOrScanlessInputIsAnError) {
   lenient.lenient = true;
   EXPECT_EQ(ErrorOf("FLASER 1 x 0 0 0 0 0 0 1 h 1\n", lenient),
             "mem.clf: no laser scans (FLASER, ROBOTLASER1 or RAWLASER1..4) in 1 lines (1 skipped as malformed)");
-  EXPECT_THAT(ErrorOf("x"), HasSubstr("no laser scans"));
+  EXPECT_THAT([] { ReadText("x"); }, ThrowsMessage<InputError>(HasSubstr("no laser scans")));
 }
 
 TEST(CarmenReaderTest, UnreadablePathIsAnError) {
@@ -471,16 +472,8 @@ TEST(CarmenReaderTest, TruncatedAndCorruptGzipAreErrors) {
       InputError);
   const std::string trailing = TempPath("trailing.gz");
   std::ofstream(trailing, std::ios::binary) << bytes << "garbage";
-  EXPECT_THAT(
-      [&] {
-        try {
-          ReadCarmenLog(trailing);
-        } catch (const InputError& e) {
-          return std::string(e.what());
-        }
-        return std::string("no error");
-      }(),
-      HasSubstr("unexpected data after the end of the gzip stream"));
+  EXPECT_THAT([&] { ReadCarmenLog(trailing); },
+              ThrowsMessage<InputError>(HasSubstr("unexpected data after the end of the gzip stream")));
 }
 
 TEST(CarmenReaderTest, ReadingIsDeterministic) {

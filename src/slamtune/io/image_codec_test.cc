@@ -7,22 +7,20 @@
 #include <vector>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 // Error text of decoding `bytes`, and what was printed on stderr meanwhile.
 std::string ErrorOf(const std::string& bytes, std::string* printed = nullptr) {
-  std::string what = "no error";
-  testing::internal::CaptureStderr();
-  try {
-    DecodeGreyImage(bytes, "m.img", "");
-  } catch (const InputError& e) {
-    what = e.what();
-  }
-  const std::string err = testing::internal::GetCapturedStderr();
+  ::testing::internal::CaptureStderr();
+  const std::string what = ErrorMessageOf([&] { DecodeGreyImage(bytes, "m.img", ""); });
+  const std::string err = ::testing::internal::GetCapturedStderr();
   if (printed != nullptr) *printed = err;
   return what;
 }
@@ -111,7 +109,8 @@ TEST(ImageCodec, SizeBeyondWhatTheFileCanHoldIsRefusedBeforeAllocating) {
 
 TEST(ImageCodec, OtherFormatsAreNamed) {
   EXPECT_EQ(ErrorOf("hello"), "m.img: not an image: no known image format signature (PGM or PNG expected)");
-  EXPECT_THAT(ErrorOf("P6\n1 1\n255\nabc"), HasSubstr("m.img: is a 3-channel 8-bit image (PPM); maps must be"));
+  EXPECT_THAT([] { DecodeGreyImage("P6\n1 1\n255\nabc", "m.img", ""); },
+              ThrowsMessage<InputError>(HasSubstr("m.img: is a 3-channel 8-bit image (PPM); maps must be")));
 }
 
 }  // namespace

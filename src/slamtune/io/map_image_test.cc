@@ -14,12 +14,15 @@
 #include <string>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
 namespace fs = std::filesystem;
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 // A 6 x 4 trinary map with every class present and an asymmetric layout (catches flips).
 MapImage SmallMap() {
@@ -50,15 +53,6 @@ class MapImageFileTest : public ::testing::Test {
   std::string WriteText(const std::string& name, const std::string& text) const {
     std::ofstream(Path(name), std::ios::binary) << text;
     return Path(name);
-  }
-  // Error text of ReadMap(path), or "" if it did not throw.
-  static std::string ReadError(const std::string& path) {
-    try {
-      ReadMap(path);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
   }
 
   fs::path dir_;
@@ -147,47 +141,59 @@ TEST_F(MapImageFileTest, NegatedYamlGivesTheSameMap) {
 }
 
 TEST_F(MapImageFileTest, BadInputsNameTheFileAndTheProblem) {
-  EXPECT_THAT(ReadError(Path("nope.pgm")), HasSubstr("nope.pgm: cannot open map image: no such file"));
-  EXPECT_THAT(ReadError(dir_.string()), HasSubstr("is a directory"));
-  EXPECT_THAT(ReadError(WriteText("notes.pgm", "hello, I am text\n")),
-              HasSubstr("notes.pgm: not an image"));
-  EXPECT_THAT(ReadError(WriteText("zero.pgm", std::string("P5\n0 0\n255\n"))),
-              HasSubstr("zero.pgm: cannot decode the image: truncated, corrupt or empty (0 x 0)"));
+  EXPECT_THAT([&] { ReadMap(Path("nope.pgm")); },
+              ThrowsMessage<InputError>(HasSubstr("nope.pgm: cannot open map image: no such file")));
+  EXPECT_THAT([&] { ReadMap(dir_.string()); }, ThrowsMessage<InputError>(HasSubstr("is a directory")));
+  EXPECT_THAT([&] { ReadMap(WriteText("notes.pgm", "hello, I am text\n")); },
+              ThrowsMessage<InputError>(HasSubstr("notes.pgm: not an image")));
+  EXPECT_THAT(
+      [&] { ReadMap(WriteText("zero.pgm", std::string("P5\n0 0\n255\n"))); },
+      ThrowsMessage<InputError>(HasSubstr("zero.pgm: cannot decode the image: truncated, corrupt or empty (0 x 0)")));
 
   ASSERT_TRUE(cv::imwrite(Path("colour.png"), cv::Mat(4, 4, CV_8UC3, cv::Scalar(10, 200, 30))));
-  EXPECT_THAT(ReadError(Path("colour.png")),
-              HasSubstr("colour.png: is a 3-channel 8-bit image; maps must be 8-bit greyscale"));
+  EXPECT_THAT(
+      [&] { ReadMap(Path("colour.png")); },
+      ThrowsMessage<InputError>(HasSubstr("colour.png: is a 3-channel 8-bit image; maps must be 8-bit greyscale")));
   ASSERT_TRUE(cv::imwrite(Path("deep.png"), cv::Mat(4, 4, CV_16UC1, cv::Scalar(1000))));
-  EXPECT_THAT(ReadError(Path("deep.png")), HasSubstr("deep.png: is a 1-channel 16-bit image"));
+  EXPECT_THAT([&] { ReadMap(Path("deep.png")); },
+              ThrowsMessage<InputError>(HasSubstr("deep.png: is a 1-channel 16-bit image")));
 }
 
 TEST_F(MapImageFileTest, BadYamlNamesTheKey) {
   ASSERT_TRUE(cv::imwrite(Path("ok.pgm"), cv::Mat(3, 3, CV_8UC1, cv::Scalar(254))));
   const std::string tail = "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  EXPECT_THAT(ReadError(WriteText("a.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n" + tail)),
-              HasSubstr("a.yaml: missing required key 'image'"));
-  EXPECT_THAT(ReadError(WriteText("b.yaml", "image: ok.pgm\norigin: [0, 0, 0]\n" + tail)),
-              HasSubstr("b.yaml: missing required key 'resolution'"));
-  EXPECT_THAT(ReadError(WriteText("c.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n")),
-              HasSubstr("c.yaml: missing required key 'occupied_thresh'"));
-  EXPECT_THAT(ReadError(WriteText("d.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0]\n" + tail)),
-              HasSubstr("d.yaml:3: key 'origin' must be a list of 3 numbers"));
-  EXPECT_THAT(ReadError(WriteText("e.yaml", "image: ok.pgm\nresolution: fine\norigin: [0, 0, 0]\n" + tail)),
-              HasSubstr("e.yaml:2: key 'resolution' must be a number"));
-  EXPECT_THAT(ReadError(WriteText("f.yaml", "image: ok.pgm\nresolution: -1\norigin: [0, 0, 0]\n" + tail)),
-              HasSubstr("f.yaml: resolution = -1 m/cell; must be finite and > 0"));
-  EXPECT_THAT(ReadError(WriteText("g.yaml", "image: gone.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + tail)),
-              HasSubstr("gone.pgm: cannot open map image (named by " + Path("g.yaml") + "): no such file"));
-  EXPECT_THAT(ReadError(WriteText("h.yaml", "image: ok.pgm\nresolution: [0.05\n")),
-              HasSubstr("h.yaml:3: invalid YAML"));
-  EXPECT_THAT(ReadError(WriteText("i.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 2\n" + tail)),
-              HasSubstr("i.yaml:4: key 'negate' must be 0 or 1"));
-  EXPECT_THAT(ReadError(WriteText("j.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nmode: raw\n" + tail)),
-              HasSubstr("only 'trinary' and 'scale'"));
-  EXPECT_THAT(ReadError(WriteText("k.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
-                                            "occupied_thresh: 0.2\nfree_thresh: 0.5\n")),
-              HasSubstr("k.yaml: free_thresh = 0.5 > occupied_thresh = 0.2"));
-  EXPECT_THAT(ReadError(WriteText("l.yaml", "- just\n- a list\n")), HasSubstr("l.yaml: not a map_server YAML"));
+  EXPECT_THAT([&] { ReadMap(WriteText("a.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n" + tail)); },
+              ThrowsMessage<InputError>(HasSubstr("a.yaml: missing required key 'image'")));
+  EXPECT_THAT([&] { ReadMap(WriteText("b.yaml", "image: ok.pgm\norigin: [0, 0, 0]\n" + tail)); },
+              ThrowsMessage<InputError>(HasSubstr("b.yaml: missing required key 'resolution'")));
+  EXPECT_THAT([&] { ReadMap(WriteText("c.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n")); },
+              ThrowsMessage<InputError>(HasSubstr("c.yaml: missing required key 'occupied_thresh'")));
+  EXPECT_THAT([&] { ReadMap(WriteText("d.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0]\n" + tail)); },
+              ThrowsMessage<InputError>(HasSubstr("d.yaml:3: key 'origin' must be a list of 3 numbers")));
+  EXPECT_THAT([&] { ReadMap(WriteText("e.yaml", "image: ok.pgm\nresolution: fine\norigin: [0, 0, 0]\n" + tail)); },
+              ThrowsMessage<InputError>(HasSubstr("e.yaml:2: key 'resolution' must be a number")));
+  EXPECT_THAT([&] { ReadMap(WriteText("f.yaml", "image: ok.pgm\nresolution: -1\norigin: [0, 0, 0]\n" + tail)); },
+              ThrowsMessage<InputError>(HasSubstr("f.yaml: resolution = -1 m/cell; must be finite and > 0")));
+  EXPECT_THAT([&] { ReadMap(WriteText("g.yaml", "image: gone.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + tail)); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("gone.pgm: cannot open map image (named by " + Path("g.yaml") + "): no such file")));
+  EXPECT_THAT([&] { ReadMap(WriteText("h.yaml", "image: ok.pgm\nresolution: [0.05\n")); },
+              ThrowsMessage<InputError>(HasSubstr("h.yaml:3: invalid YAML")));
+  EXPECT_THAT(
+      [&] { ReadMap(WriteText("i.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 2\n" + tail)); },
+      ThrowsMessage<InputError>(HasSubstr("i.yaml:4: key 'negate' must be 0 or 1")));
+  EXPECT_THAT(
+      [&] { ReadMap(WriteText("j.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nmode: raw\n" + tail)); },
+      ThrowsMessage<InputError>(HasSubstr("only 'trinary' and 'scale'")));
+  EXPECT_THAT(
+      [&] {
+        ReadMap(WriteText("k.yaml",
+                          "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+                          "occupied_thresh: 0.2\nfree_thresh: 0.5\n"));
+      },
+      ThrowsMessage<InputError>(HasSubstr("k.yaml: free_thresh = 0.5 > occupied_thresh = 0.2")));
+  EXPECT_THAT([&] { ReadMap(WriteText("l.yaml", "- just\n- a list\n")); },
+              ThrowsMessage<InputError>(HasSubstr("l.yaml: not a map_server YAML")));
   // The good file does read.
   EXPECT_EQ(ReadMap(WriteText("ok.yaml", "image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + tail)).width, 3);
 }
@@ -270,12 +276,12 @@ TEST_F(MapImageFileTest, TruncatedImagesAreOneErrorWithNothingPrinted) {
     std::ifstream in(Path(name), std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), {});
     WriteText("cut_" + name, bytes.substr(0, bytes.size() - 10));
-    testing::internal::CaptureStderr();
-    const std::string error = ReadError(Path("cut_" + name));
-    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << name;
+    ::testing::internal::CaptureStderr();
+    const std::string error = ErrorMessageOf([&] { ReadMap(Path("cut_" + name)); });
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << name;
     EXPECT_THAT(error, HasSubstr(Path("cut_" + name) + ": ")) << name;
   }
-  EXPECT_EQ(ReadError(WriteText("huge.pgm", "P5\n70000 70000\n255\n\x01")),
+  EXPECT_EQ(ErrorMessageOf([&] { ReadMap(WriteText("huge.pgm", "P5\n70000 70000\n255\n\x01")); }),
             Path("huge.pgm") + ": declares 70000 x 70000 pixels, more than the 1073741824 an image may have");
 }
 
@@ -285,7 +291,8 @@ TEST_F(MapImageFileTest, MapYamlWithAByteOrderMarkAndADirectoryAsImage) {
   const std::string yaml((std::istreambuf_iterator<char>(in)), {});
   EXPECT_EQ(ReadMap(WriteText("bom.yaml", "\xEF\xBB\xBF" + yaml)).pixels, SmallMap().pixels);
   fs::create_directories(Path("d.yaml"));
-  EXPECT_THAT(ReadError(Path("d.yaml")), HasSubstr("d.yaml: cannot open map YAML: is a directory"));
+  EXPECT_THAT([&] { ReadMap(Path("d.yaml")); },
+              ThrowsMessage<InputError>(HasSubstr("d.yaml: cannot open map YAML: is a directory")));
 }
 
 }  // namespace

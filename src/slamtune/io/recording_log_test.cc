@@ -8,11 +8,14 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/common/testing/error_message.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
 namespace {
+
+using slamtune::testing::ErrorMessageOf;
 
 constexpr std::int64_t kMs = 1000000;
 const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/recordings/";
@@ -187,15 +190,6 @@ TEST(RecordingToLog, A360LaserWhoseLastAngleClosesTheCircleIsAccepted) {
   EXPECT_EQ(log.scans.front().ranges.size(), 360u);
 }
 
-std::string GeometryErrorOf(const RecordingContents& c) {
-  try {
-    RecordingToLog(c, {});
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(RecordingToLog, AnglesInDegreesAreAnErrorNamingTheMessage) {
   RecordingContents c = Drive();
   LaserScanMessage& m = c.scans["/scan"][2].message;  // 181 beams from -90 to 90 "rad", step 1
@@ -204,7 +198,7 @@ TEST(RecordingToLog, AnglesInDegreesAreAnErrorNamingTheMessage) {
   m.angle_max = 90.0f;
   m.angle_increment = 1.0f;
   c.scans["/scan"][2].location = "byte 4096";
-  EXPECT_EQ(GeometryErrorOf(c),
+  EXPECT_EQ(ErrorMessageOf([&] { RecordingToLog(c, {}); }),
             "drive.mcap: byte 4096: /scan: LaserScan angles -90 .. 90 rad (step 1) go beyond a full turn: angles "
             "must be radians (written in degrees?)");
 }
@@ -215,7 +209,7 @@ TEST(RecordingToLog, AFieldOfViewOfMoreThanAFullTurnIsAnError) {
   m.angle_min = -3.0f;
   m.angle_max = 97.0f;
   m.angle_increment = 25.0f;
-  EXPECT_EQ(GeometryErrorOf(c),
+  EXPECT_EQ(ErrorMessageOf([&] { RecordingToLog(c, {}); }),
             "drive.mcap: byte 0: /scan: LaserScan angles -3 .. 97 rad (step 25) go beyond a full turn: angles must "
             "be radians (written in degrees?)");
 }

@@ -9,11 +9,14 @@
 #include <unistd.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 std::string TempPath(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("slamtune_relations_test_" + std::to_string(::getpid()) + "_" + name)).string();
@@ -23,15 +26,6 @@ std::string WriteText(const std::string& name, const std::string& text) {
   const std::string path = TempPath(name);
   std::ofstream(path) << text;
   return path;
-}
-
-std::string ErrorOf(const std::string& path) {
-  try {
-    ReadRelations(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
@@ -75,29 +69,32 @@ TEST(RelationsTest, EmptyFileGivesEmptyList) {
 
 TEST(RelationsTest, WrongColumnCountNamesFileAndLine) {
   const std::string path = WriteText("cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
-  EXPECT_EQ(ErrorOf(path), path + ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }),
+            path + ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
 }
 
 TEST(RelationsTest, NonNumberIsRejected) {
   const std::string path = WriteText("nonnum", "1 2 abc 0 0 0 0 0\n");
-  EXPECT_EQ(ErrorOf(path), path + ":1: column 3 (x) is not a number: 'abc'");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }), path + ":1: column 3 (x) is not a number: 'abc'");
 }
 
 TEST(RelationsTest, NanAndInfAreRejected) {
   const std::string nan_path = WriteText("nan", "1 2 0 0 0 0 0 nan\n");
-  EXPECT_EQ(ErrorOf(nan_path), nan_path + ":1: column 8 (yaw) is not finite: nan");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(nan_path); }), nan_path + ":1: column 8 (yaw) is not finite: nan");
   const std::string inf_path = WriteText("inf", "# c\ninf 2 0 0 0 0 0 0\n");
-  EXPECT_EQ(ErrorOf(inf_path), inf_path + ":2: column 1 (t1) is not finite: inf");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(inf_path); }), inf_path + ":2: column 1 (t1) is not finite: inf");
 }
 
 TEST(RelationsTest, TruncatedLastLineIsReported) {
   const std::string path = WriteText("trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
-  EXPECT_THAT(ErrorOf(path), HasSubstr(":2: expected 8 columns"));
-  EXPECT_THAT(ErrorOf(path), HasSubstr("truncated last line"));
+  const std::string error = ErrorMessageOf([&] { ReadRelations(path); });
+  EXPECT_THAT(error, HasSubstr(":2: expected 8 columns"));
+  EXPECT_THAT(error, HasSubstr("truncated last line"));
 }
 
 TEST(RelationsTest, UnreadableAndUnwritablePathsThrow) {
-  EXPECT_THAT(ErrorOf("/nonexistent/dir/x.relations"), HasSubstr("/nonexistent/dir/x.relations: cannot open"));
+  EXPECT_THAT([] { ReadRelations("/nonexistent/dir/x.relations"); },
+              ThrowsMessage<InputError>(HasSubstr("/nonexistent/dir/x.relations: cannot open")));
   EXPECT_THROW(WriteRelations("/nonexistent/dir/x.relations", {}), InputError);
 }
 

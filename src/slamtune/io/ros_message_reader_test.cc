@@ -10,11 +10,14 @@
 #include <vector>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 // Payload bytes written by hand, in the order given: no alignment is added, so each test spells
 // out the padding it expects (docs/recordings.md §1.4 for CDR, 1.6 for ROS 1).
@@ -48,18 +51,6 @@ constexpr const char* kType = "sensor_msgs/LaserScan";
 RosMessageReader Cdr(const Bytes& b) { return RosMessageReader(b.data, MessageSerialization::kCdr, kType); }
 RosMessageReader Ros1(const Bytes& b) { return RosMessageReader(b.data, MessageSerialization::kRos1, kType); }
 
-// what() of the InputError `f` throws ("" and a failure when it throws none).
-template <typename F>
-std::string ErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
 TEST(CdrEncapsulationTest, LittleAndBigEndianKindsWithOptionsIgnored) {
   const Bytes le = std::move(Bytes().U8(0x00).U8(0x01).U8(0xff).U8(0xee).U32(7));
   RosMessageReader a(le.data, MessageSerialization::kCdr, kType);
@@ -83,13 +74,13 @@ TEST(CdrEncapsulationTest, OtherKindsAreRefusedByName) {
                 {0x00, 0x11, "unknown"}};
   for (const auto& c : kCases) {
     const Bytes b = std::move(Bytes().U8(c.b0).U8(c.b1).Zeros(2).U32(1));
-    const std::string error = ErrorOf([&] { Cdr(b); });
+    const std::string error = ErrorMessageOf([&] { Cdr(b); });
     EXPECT_THAT(error, HasSubstr("sensor_msgs/LaserScan: encapsulation header: representation")) << error;
     EXPECT_THAT(error, HasSubstr(c.name)) << error;
     EXPECT_THAT(error, HasSubstr("at byte 0, the message has 8")) << error;
   }
   const Bytes xcdr2 = std::move(Bytes().U8(0x00).U8(0x07).Zeros(6));
-  EXPECT_EQ(ErrorOf([&] { Cdr(xcdr2); }),
+  EXPECT_EQ(ErrorMessageOf([&] { Cdr(xcdr2); }),
             "sensor_msgs/LaserScan: encapsulation header: representation 00 07 (CDR2_LE, XCDR2 plain "
             "little-endian) is not supported, only XCDR1 plain CDR (00 01 little-endian, 00 00 big-endian) at byte "
             "0, the message has 8");
@@ -98,7 +89,7 @@ TEST(CdrEncapsulationTest, OtherKindsAreRefusedByName) {
 TEST(CdrEncapsulationTest, PayloadShorterThanTheHeaderIsRefused) {
   for (std::size_t size = 0; size < 4; ++size) {
     const std::vector<std::uint8_t> data(size, 0x01);
-    const std::string error = ErrorOf([&] { RosMessageReader(data, MessageSerialization::kCdr, kType); });
+    const std::string error = ErrorMessageOf([&] { RosMessageReader(data, MessageSerialization::kCdr, kType); });
     EXPECT_EQ(error, "sensor_msgs/LaserScan: encapsulation header: a CDR payload of " + std::to_string(size) +
                          " bytes cannot hold the 4-byte encapsulation header at byte 0, the message has " +
                          std::to_string(size));
@@ -106,7 +97,7 @@ TEST(CdrEncapsulationTest, PayloadShorterThanTheHeaderIsRefused) {
   // ROS 1 has no header: an empty payload fails only at its first field.
   const std::vector<std::uint8_t> empty;
   RosMessageReader in(empty, MessageSerialization::kRos1, kType);
-  EXPECT_EQ(ErrorOf([&] { in.ReadUint32("header.seq"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { in.ReadUint32("header.seq"); }),
             "sensor_msgs/LaserScan: header.seq: a uint32 needs 4 bytes at byte 0, the message has 0");
 }
 
@@ -153,23 +144,25 @@ TEST(RosMessageReaderTest, CdrStrings) {
   EXPECT_EQ(in.ReadString("b"), "odom");
 
   const Bytes no_nul = std::move(CdrLe().U32(4).Text("odom"));
-  EXPECT_EQ(ErrorOf([&] { Cdr(no_nul).ReadString("header.frame_id"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { Cdr(no_nul).ReadString("header.frame_id"); }),
             "sensor_msgs/LaserScan: header.frame_id: a CDR string of length 4 does not end with a NUL at byte 8, "
             "the message has 12");
   const Bytes zero = std::move(CdrLe().U32(0).Zeros(4));
-  EXPECT_THAT(ErrorOf([&] { Cdr(zero).ReadString("header.frame_id"); }),
-              HasSubstr("header.frame_id: a CDR string length of 0 leaves no room for the terminating NUL at byte 8"));
+  EXPECT_THAT([&] { Cdr(zero).ReadString("header.frame_id"); },
+              ThrowsMessage<InputError>(HasSubstr(
+                  "header.frame_id: a CDR string length of 0 leaves no room for the terminating NUL at byte 8")));
   const Bytes past = std::move(CdrLe().U32(100).Text("odom").U8(0));
-  EXPECT_EQ(ErrorOf([&] { Cdr(past).ReadString("header.frame_id"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { Cdr(past).ReadString("header.frame_id"); }),
             "sensor_msgs/LaserScan: header.frame_id: a string of length 100 needs 100 bytes at byte 8, the message "
             "has 13");
   const Bytes huge = std::move(CdrLe().U32(0xffffffff).Text("odom").U8(0));
-  EXPECT_THAT(ErrorOf([&] { Cdr(huge).ReadString("s"); }), HasSubstr("length 4294967295 needs 4294967295 bytes"));
+  EXPECT_THAT([&] { Cdr(huge).ReadString("s"); },
+              ThrowsMessage<InputError>(HasSubstr("length 4294967295 needs 4294967295 bytes")));
 }
 
 TEST(RosMessageReaderTest, Ros1StringPastTheEnd) {
   const Bytes b = std::move(Bytes().U32(5).Text("odom"));
-  EXPECT_EQ(ErrorOf([&] { Ros1(b).ReadString("child_frame_id"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { Ros1(b).ReadString("child_frame_id"); }),
             "sensor_msgs/LaserScan: child_frame_id: a string of length 5 needs 5 bytes at byte 4, the message has 8");
 }
 
@@ -193,13 +186,14 @@ TEST(RosMessageReaderTest, SequencesAlignTheirFirstElementUnlessEmpty) {
 
 TEST(RosMessageReaderTest, ImpossibleSequenceCountsThrowBeforeAllocating) {
   const Bytes b = std::move(CdrLe().U32(0xffffffff).Zeros(16));
-  EXPECT_EQ(ErrorOf([&] { Cdr(b).ReadFloat32Sequence("ranges"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { Cdr(b).ReadFloat32Sequence("ranges"); }),
             "sensor_msgs/LaserScan: ranges: 4294967295 float32 values need 17179869180 bytes at byte 8, the message "
             "has 24");
-  EXPECT_THAT(ErrorOf([&] { Cdr(b).ReadFloat64Sequence("values"); }),
-              HasSubstr("values: 4294967295 float64 values need 34359738360 bytes at byte 12"));
+  EXPECT_THAT(
+      [&] { Cdr(b).ReadFloat64Sequence("values"); },
+      ThrowsMessage<InputError>(HasSubstr("values: 4294967295 float64 values need 34359738360 bytes at byte 12")));
   RosMessageReader in = Cdr(b);
-  EXPECT_EQ(ErrorOf([&] { in.ReadSequenceCount("transforms", 72); }),
+  EXPECT_EQ(ErrorMessageOf([&] { in.ReadSequenceCount("transforms", 72); }),
             "sensor_msgs/LaserScan: transforms: 4294967295 elements of at least 72 bytes need 309237645240 bytes at "
             "byte 8, the message has 24");
   // A count that fits passes.
@@ -215,7 +209,7 @@ TEST(RosMessageReaderTest, FixedArraysHaveNoCount) {
   in.ReadFloat64Array("pose.pose.position", v);
   EXPECT_EQ(v, (std::array<double, 3>{1, 2, 3}));
   std::array<double, 36> covariance{};
-  EXPECT_EQ(ErrorOf([&] { in.ReadFloat64Array("pose.covariance", covariance); }),
+  EXPECT_EQ(ErrorMessageOf([&] { in.ReadFloat64Array("pose.covariance", covariance); }),
             "sensor_msgs/LaserScan: pose.covariance: 36 float64 values need 288 bytes at byte 36, the message has 36");
 }
 
@@ -242,14 +236,14 @@ TEST(RosMessageReaderTest, ErrorsNameTypeContextFieldAndByte) {
   const Bytes b = std::move(CdrLe().U32(1).U8(0).U8(0));  // a stamp cut in its second word
   RosMessageReader in(b.data, MessageSerialization::kCdr, "tf2_msgs/TFMessage");
   in.set_context("transforms[2]");
-  EXPECT_EQ(ErrorOf([&] { in.ReadHeader(); }),
+  EXPECT_EQ(ErrorMessageOf([&] { in.ReadHeader(); }),
             "tf2_msgs/TFMessage: transforms[2].header.stamp.nanosec: a uint32 needs 4 bytes at byte 8, the message "
             "has 10");
   // Alignment padding that runs past the end reports the aligned offset.
   const Bytes c = std::move(CdrLe().U32(2).Text("a").U8(0));
   RosMessageReader d = Cdr(c);
   d.ReadString("s");
-  EXPECT_EQ(ErrorOf([&] { d.ReadFloat64("x"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { d.ReadFloat64("x"); }),
             "sensor_msgs/LaserScan: x: a float64 needs 8 bytes at byte 12, the message has 10");
 }
 

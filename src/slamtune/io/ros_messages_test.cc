@@ -14,11 +14,14 @@
 #include <vector>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 using Payload = std::vector<std::uint8_t>;
 
 constexpr auto kCdr = MessageSerialization::kCdr;
@@ -197,18 +200,6 @@ void Decode(RosMessageKind kind, std::span<const std::uint8_t> data, MessageSeri
   }
 }
 
-// what() of the InputError `f` throws ("" and a failure when it throws none).
-template <typename F>
-std::string ErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
 void PutU32(Payload& p, std::size_t at, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) p[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
@@ -343,21 +334,23 @@ TEST(RosMessagesTest, StringLengthPastTheEnd) {
   // scan_frame5_cdr.bin: frame_id length at byte 12 (d8), its bytes from byte 16.
   Payload p = Golden("scan_frame5_cdr.bin");
   PutU32(p, 12, 1000);
-  EXPECT_EQ(ErrorOf([&] { DecodeLaserScan(p, kCdr); }),
+  EXPECT_EQ(ErrorMessageOf([&] { DecodeLaserScan(p, kCdr); }),
             "sensor_msgs/LaserScan: header.frame_id: a string of length 1000 needs 1000 bytes at byte 16, the "
-            "message has " + std::to_string(p.size()));
+            "message has " +
+                std::to_string(p.size()));
   // ROS 1: seq, sec, nsec, then the frame_id length at byte 12.
   Payload q = Golden("odom_2_ros1.bin");
   PutU32(q, 12, 0xfffffff0);
-  EXPECT_THAT(ErrorOf([&] { DecodeOdometry(q, kRos1); }),
-              HasSubstr("nav_msgs/Odometry: header.frame_id: a string of length 4294967280 needs 4294967280 bytes at "
-                        "byte 16"));
+  EXPECT_THAT([&] { DecodeOdometry(q, kRos1); },
+              ThrowsMessage<InputError>(HasSubstr(
+                  "nav_msgs/Odometry: header.frame_id: a string of length 4294967280 needs 4294967280 bytes at "
+                  "byte 16")));
 }
 
 TEST(RosMessagesTest, CdrStringWithoutNul) {
   Payload p = Golden("odom_0_cdr.bin");
   p[4 + 33] = 'x';  // the NUL after "base_link" (d24-d33)
-  EXPECT_EQ(ErrorOf([&] { DecodeOdometry(p, kCdr); }),
+  EXPECT_EQ(ErrorMessageOf([&] { DecodeOdometry(p, kCdr); }),
             "nav_msgs/Odometry: child_frame_id: a CDR string of length 10 does not end with a NUL at byte 28, the "
             "message has 724");
 }
@@ -366,35 +359,40 @@ TEST(RosMessagesTest, SequenceCountOfAllOnes) {
   // scan_frame5_cdr.bin: "abcde\0" ends at d18, the float32 fields take d20-d47, ranges count at d48.
   Payload p = Golden("scan_frame5_cdr.bin");
   PutU32(p, 4 + 48, 0xffffffff);
-  EXPECT_EQ(ErrorOf([&] { DecodeLaserScan(p, kCdr); }),
+  EXPECT_EQ(ErrorMessageOf([&] { DecodeLaserScan(p, kCdr); }),
             "sensor_msgs/LaserScan: ranges: 4294967295 float32 values need 17179869180 bytes at byte 56, the "
-            "message has " + std::to_string(p.size()));
+            "message has " +
+                std::to_string(p.size()));
   Payload tf = Golden("tf_3_ros1.bin");
   PutU32(tf, 0, 0xffffffff);
-  EXPECT_THAT(ErrorOf([&] { DecodeTfMessage(tf, kRos1); }),
-              HasSubstr("tf2_msgs/TFMessage: transforms: 4294967295 elements of at least 72 bytes"));
-  EXPECT_THAT(ErrorOf([&] { DecodeTfMessage(tf, kRos1); }), HasSubstr("at byte 4"));
+  EXPECT_THAT(
+      [&] { DecodeTfMessage(tf, kRos1); },
+      ThrowsMessage<InputError>(HasSubstr("tf2_msgs/TFMessage: transforms: 4294967295 elements of at least 72 bytes")));
+  EXPECT_THAT([&] { DecodeTfMessage(tf, kRos1); }, ThrowsMessage<InputError>(HasSubstr("at byte 4")));
 }
 
 TEST(RosMessagesTest, ErrorsInsideTransformsNameTheirIndex) {
   Payload p = Golden("tf_3_ros1.bin");
   p.resize(p.size() - 4);  // cut transforms[2].transform.rotation
-  EXPECT_THAT(ErrorOf([&] { DecodeTfMessage(p, kRos1); }),
-              HasSubstr("tf2_msgs/TFMessage: transforms[2].transform.rotation: 4 float64 values need 32 bytes at "
-                        "byte"));
+  EXPECT_THAT([&] { DecodeTfMessage(p, kRos1); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("tf2_msgs/TFMessage: transforms[2].transform.rotation: 4 float64 values need 32 bytes at "
+                            "byte")));
 }
 
 TEST(RosMessagesTest, Xcdr2AndShortPayloadsAreRefused) {
   Payload p = Golden("scan_frame2_cdr.bin");
   p[1] = 0x07;
-  EXPECT_THAT(ErrorOf([&] { DecodeLaserScan(p, kCdr); }),
-              HasSubstr("sensor_msgs/LaserScan: encapsulation header: representation 00 07 (CDR2_LE"));
+  EXPECT_THAT([&] { DecodeLaserScan(p, kCdr); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("sensor_msgs/LaserScan: encapsulation header: representation 00 07 (CDR2_LE")));
   const Payload three = {0x00, 0x01, 0x00};
-  EXPECT_EQ(ErrorOf([&] { DecodeOdometry(three, kCdr); }),
+  EXPECT_EQ(ErrorMessageOf([&] { DecodeOdometry(three, kCdr); }),
             "nav_msgs/Odometry: encapsulation header: a CDR payload of 3 bytes cannot hold the 4-byte encapsulation "
             "header at byte 0, the message has 3");
-  EXPECT_THAT(ErrorOf([&] { DecodeTfMessage(three, kRos1); }),
-              HasSubstr("tf2_msgs/TFMessage: transforms: a uint32 needs 4 bytes at byte 0, the message has 3"));
+  EXPECT_THAT([&] { DecodeTfMessage(three, kRos1); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("tf2_msgs/TFMessage: transforms: a uint32 needs 4 bytes at byte 0, the message has 3")));
 }
 
 TEST(RosMessagesTest, RandomBytesGiveInputErrorOrAMessage) {

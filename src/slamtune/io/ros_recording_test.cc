@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 #include "slamtune/io/rosbag2_folder.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
@@ -17,6 +18,7 @@ using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 using namespace testing;  // NOLINT: the recording builders
+using slamtune::testing::ErrorMessageOf;
 
 struct RecordingRead {
   ContainerSummary summary;
@@ -32,15 +34,6 @@ RecordingRead Read(const std::string& path, ContainerReadOptions options = {}) {
     read.error = e.what();
   }
   return read;
-}
-
-std::string ErrorOf(const std::function<void()>& run) {
-  try {
-    run();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 // metadata.yaml as rosbag2 writes it (the fields the reader does not use shortened).
@@ -96,9 +89,10 @@ TEST(RosRecordingTest, DetectsEachKindByContentNeverByName) {
   EXPECT_EQ(DetectRecordingKind(dir + "/e.clf"), RecordingKind::kCarmenLog);
   EXPECT_EQ(DetectRecordingKind(dir + "/empty"), RecordingKind::kCarmenLog);
   EXPECT_EQ(DetectRecordingKind(dir + "/f.mcap"), RecordingKind::kCarmenLog);  // gzip: a CARMEN log
-  EXPECT_EQ(ErrorOf([&] { DetectRecordingKind(dir + "/nothing"); }),
+  EXPECT_EQ(ErrorMessageOf([&] { DetectRecordingKind(dir + "/nothing"); }),
             dir + "/nothing: cannot open (No such file or directory)");
-  EXPECT_EQ(ErrorOf([&] { DetectRecordingKind(dir); }), dir + ": a folder but not a rosbag2 bag (no metadata.yaml)");
+  EXPECT_EQ(ErrorMessageOf([&] { DetectRecordingKind(dir); }),
+            dir + ": a folder but not a rosbag2 bag (no metadata.yaml)");
   WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"a.bag"}));
   EXPECT_EQ(DetectRecordingKind(dir), RecordingKind::kRosbag2Folder);
   EXPECT_STREQ(RecordingKindName(RecordingKind::kRosbag2Folder), "rosbag2 bag folder");

@@ -9,11 +9,14 @@
 #include <unistd.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::io {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 std::string TempPath(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("slamtune_trajectory_test_" + std::to_string(::getpid()) + "_" + name)).string();
@@ -23,15 +26,6 @@ std::string WriteText(const std::string& name, const std::string& text) {
   const std::string path = TempPath(name);
   std::ofstream(path) << text;
   return path;
-}
-
-std::string ErrorOf(const std::string& path) {
-  try {
-    ReadTrajectory(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(TrajectoryTest, ReadsPosesAndSkipsComments) {
@@ -59,23 +53,29 @@ TEST(TrajectoryTest, RoundTripKeepsMicrosecondsAndNineDigits) {
 
 TEST(TrajectoryTest, ErrorsNameFileLineAndProblem) {
   const std::string cols = WriteText("cols", "1 0 0 0\n2 0 0\n");
-  EXPECT_EQ(ErrorOf(cols), cols + ":2: expected 4 columns (timestamp x y theta), found 3");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(cols); }),
+            cols + ":2: expected 4 columns (timestamp x y theta), found 3");
   const std::string text = WriteText("text", "1 0 zero 0\n");
-  EXPECT_EQ(ErrorOf(text), text + ":1: column 3 (y) is not a number: 'zero'");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(text); }), text + ":1: column 3 (y) is not a number: 'zero'");
   const std::string nan = WriteText("nan", "1 0 0 0\n2 0 0 -nan\n");
-  EXPECT_EQ(ErrorOf(nan), nan + ":2: column 4 (theta) is not finite: -nan");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(nan); }), nan + ":2: column 4 (theta) is not finite: -nan");
   const std::string inf = WriteText("inf", "-inf 0 0 0\n");
-  EXPECT_EQ(ErrorOf(inf), inf + ":1: column 1 (timestamp) is not finite: -inf");
-  EXPECT_THAT(ErrorOf("/nonexistent/t.txt"), HasSubstr("/nonexistent/t.txt: cannot open"));
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(inf); }), inf + ":1: column 1 (timestamp) is not finite: -inf");
+  EXPECT_THAT([] { ReadTrajectory("/nonexistent/t.txt"); },
+              ThrowsMessage<InputError>(HasSubstr("/nonexistent/t.txt: cannot open")));
 }
 
 TEST(TrajectoryTest, TwoDifferentPosesWithOneTimestampNameTheSecondLine) {
   const std::string two = WriteText("two", "# t x y theta\n10.5 1 2 0.5\n11 0 0 0\n10.5 1 2.5 0.5\n");
-  EXPECT_EQ(ErrorOf(two), two + ":4: second pose for timestamp 10.5 (line 2 has 1 2 0.5, this line 1 2.5 0.5): a "
-                                "trajectory needs one pose per timestamp");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(two); }),
+            two +
+                ":4: second pose for timestamp 10.5 (line 2 has 1 2 0.5, this line 1 2.5 0.5): a "
+                "trajectory needs one pose per timestamp");
   const std::string spelled = WriteText("spelled", "7.000000 0 0 0\n7 0 0 0.25\n");  // same time, other text
-  EXPECT_EQ(ErrorOf(spelled), spelled + ":2: second pose for timestamp 7 (line 1 has 0 0 0, this line 0 0 0.25): a "
-                                        "trajectory needs one pose per timestamp");
+  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(spelled); }),
+            spelled +
+                ":2: second pose for timestamp 7 (line 1 has 0 0 0, this line 0 0 0.25): a "
+                "trajectory needs one pose per timestamp");
 }
 
 TEST(TrajectoryTest, AnExactlyRepeatedPoseIsReadOnce) {

@@ -8,16 +8,19 @@
 #include <opencv2/imgproc.hpp>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 #include "slamtune/metrics/synthetic_map.h"
 
 namespace slamtune::metrics {
 namespace {
 
 namespace fs = std::filesystem;
+using slamtune::testing::ErrorMessageOf;
 using ::testing::AllOf;
 using ::testing::Ge;
 using ::testing::HasSubstr;
 using ::testing::Le;
+using ::testing::ThrowsMessage;
 
 // One 40 x 30 room (outer size) in the middle of a 100 x 80 map.
 constexpr SyntheticRoom kRoom{49.5, 39.5, 40, 30, 0.0};
@@ -27,15 +30,6 @@ io::MapImage SingleRoom() { return DrawSyntheticRooms(100, 80, {kRoom}); }
 SyntheticRoom Rotated(SyntheticRoom room, double angle_deg) {
   room.angle_deg = angle_deg;
   return room;
-}
-
-std::string ErrorOf(const MapQualityOptions& options) {
-  try {
-    options.Validate();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 void ExpectSameFigures(const MapQuality& a, const MapQuality& b) {
@@ -181,31 +175,32 @@ TEST(MapQualityTest, OptionsChangeTheCornerCount) {
 }
 
 TEST(MapQualityOptionsTest, ValidateNamesFieldValueAndRule) {
-  EXPECT_EQ(ErrorOf({}), "");
+  EXPECT_NO_THROW(MapQualityOptions{}.Validate());
   MapQualityOptions o;
   o.blur_size = 4;
-  EXPECT_EQ(ErrorOf(o), "map quality option blur_size = 4: must be odd and in [1, 31] pixels");
+  EXPECT_EQ(ErrorMessageOf([&] { o.Validate(); }),
+            "map quality option blur_size = 4: must be odd and in [1, 31] pixels");
   o = {};
   o.blur_size = -1;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("blur_size = -1"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("blur_size = -1")));
   o = {};
   o.blur_sigma = -0.5;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("blur_sigma = -0.5: must be >= 0"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("blur_sigma = -0.5: must be >= 0")));
   o = {};
   o.harris_block_size = 1;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("harris_block_size = 1: must be in [2, 31]"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("harris_block_size = 1: must be in [2, 31]")));
   o = {};
   o.harris_aperture = 2;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("harris_aperture = 2: must be 1, 3, 5 or 7"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("harris_aperture = 2: must be 1, 3, 5 or 7")));
   o = {};
   o.harris_k = 0.0;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("harris_k = 0: must be in (0, 0.25)"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("harris_k = 0: must be in (0, 0.25)")));
   o = {};
   o.corner_threshold = 1.5;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("corner_threshold = 1.5: must be in (0, 1]"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("corner_threshold = 1.5: must be in (0, 1]")));
   o = {};
   o.corner_threshold = 0.0;
-  EXPECT_THAT(ErrorOf(o), HasSubstr("corner_threshold = 0"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("corner_threshold = 0")));
 }
 
 TEST(MapQualityTest, RejectsMalformedMapsAndOptionsBeforeWork) {

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::metrics {
 namespace {
+
+using slamtune::testing::ErrorMessageOf;
 
 io::LaserLog LogWithScansAt(const std::vector<double>& times) {
   io::LaserLog log;
@@ -19,13 +22,9 @@ io::LaserLog LogWithScansAt(const std::vector<double>& times) {
 
 io::Relation Rel(double t1, double t2) { return {t1, t2, Pose2{}, 0}; }
 
+// The message with which the relations of "truth.relations" are refused for `log`.
 std::string MessageOf(const io::LaserLog& log, const std::vector<io::Relation>& relations) {
-  try {
-    RequireMatchingRelations(log, relations, "truth.relations");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return ErrorMessageOf([&] { RequireMatchingRelations(log, relations, "truth.relations"); });
 }
 
 TEST(RelationMatch, CountsRelationsWithBothTimestampsAtScans) {

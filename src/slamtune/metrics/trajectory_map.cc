@@ -27,9 +27,7 @@ TrajectoryMap::TrajectoryMap(std::shared_ptr<const io::LaserLog> log, const slam
   if (log_->scans.empty()) return;
   const slam::OdometryFrame frame = slam::OdometryFrameOf(*log_);
   geometry_ = std::make_shared<const slam::LaserGeometry>(slam::GeometryForRecord(log_->scans.front(), base, frame.offset));
-  grid_.resolution = base.resolution;
-  grid_.min_pass_through = base.min_pass_through;
-  grid_.occupancy_threshold = base.occupancy_threshold;
+  grid_ = slam::GridOptionsOf(base);
   const Pose2* last = nullptr;
   for (std::size_t i = 0; i < log_->scans.size(); ++i) {
     const io::LaserScanRecord& record = log_->scans[i];

@@ -19,7 +19,7 @@ EvaluationRecord RunGuarded(const EvaluateFn& evaluate, const Assignment& assign
     record.key = key;
     record.params = assignment;
     for (Objective objective : AllObjectives()) {
-      if (record.status == "ok" && !std::isfinite(ValueOf(record, objective))) {
+      if (record.status == RunStatus::kOk && !std::isfinite(ValueOf(record, objective))) {
         record = EvaluationRecord::Failed(key, assignment, "non-finite objective value");
         break;
       }
@@ -27,7 +27,7 @@ EvaluationRecord RunGuarded(const EvaluateFn& evaluate, const Assignment& assign
   } catch (const std::exception& e) {
     record = EvaluationRecord::Failed(key, assignment, e.what());
   }
-  if (record.status != "ok") {
+  if (record.status != RunStatus::kOk) {
     record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   return record;
@@ -85,7 +85,7 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
       memory_[keys[i]] = fresh[t];
       ++stats_.evaluated;
       if (ran_on == RanOn::kWorkerRank) ++stats_.remote;
-      if (fresh[t].status != "ok") ++stats_.failed;
+      if (fresh[t].status != RunStatus::kOk) ++stats_.failed;
       stats_.busy_s += fresh[t].wall_s;
       snapshot = stats_;
     }

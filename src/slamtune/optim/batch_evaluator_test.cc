@@ -42,12 +42,12 @@ TEST(BatchEvaluator, RunsEachDistinctSetOnceAndKeepsOrder) {
 TEST(BatchEvaluator, FailuresAreRecordedAndScoredWorst) {
   BatchEvaluator eval(Fake, nullptr, 1);
   const auto out = eval.Evaluate({{{"r", -1}}, {{"r", 6}}, {{"r", 1}}});
-  EXPECT_EQ(out[0].status, "failed");
+  EXPECT_EQ(out[0].status, RunStatus::kFailed);
   EXPECT_EQ(out[0].reason, "negative radius");
-  EXPECT_EQ(out[1].status, "failed");
+  EXPECT_EQ(out[1].status, RunStatus::kFailed);
   EXPECT_EQ(out[1].reason, "non-finite objective value");
   EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kPaper).Score(out[0])[1], 1e9);
-  EXPECT_EQ(out[2].status, "ok");
+  EXPECT_EQ(out[2].status, RunStatus::kOk);
   EXPECT_EQ(eval.stats().failed, 2u);
 }
 

@@ -44,7 +44,7 @@ std::vector<double> NormalisedSums(const std::vector<EvaluationRecord>& records,
 std::vector<std::size_t> OkIndices(const std::vector<EvaluationRecord>& records) {
   std::vector<std::size_t> ok;
   for (std::size_t i = 0; i < records.size(); ++i)
-    if (records[i].status == "ok") ok.push_back(i);
+    if (records[i].status == RunStatus::kOk) ok.push_back(i);
   return ok;
 }
 
@@ -72,7 +72,7 @@ Recommendation RecommendByMajority(const std::vector<EvaluationRecord>& populati
   for (const auto& r : population) {
     keys.push_back(r.key);
     scores.push_back(objectives.Score(r));
-    ok.push_back(r.status == "ok");
+    ok.push_back(r.status == RunStatus::kOk);
   }
   const std::size_t index = MajorityIndex(keys, scores, ok);
   return {index, static_cast<int>(std::count(keys.begin(), keys.end(), keys[index]))};
@@ -165,8 +165,10 @@ const char* VerdictKindName(VerdictKind kind) {
 
 VerdictSummary Verdict(const EvaluationRecord& rec, const EvaluationRecord& base, const VerdictOptions& options) {
   const std::string& label = options.base_label;
-  if (rec.status != "ok") return {VerdictKind::kFailed, "The recommended parameter set failed to evaluate: " + rec.reason};
-  if (base.status != "ok") {
+  if (rec.status != RunStatus::kOk) {
+    return {VerdictKind::kFailed, "The recommended parameter set failed to evaluate: " + rec.reason};
+  }
+  if (base.status != RunStatus::kOk) {
     return {VerdictKind::kFailed, fmt::format("{} failed to evaluate on this log: {}", label, base.reason)};
   }
   const auto a = options.objectives.Score(rec), b = options.objectives.Score(base);

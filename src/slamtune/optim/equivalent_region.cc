@@ -40,12 +40,12 @@ std::string EquivalentRegion::Describe() const {
 std::optional<EquivalentRegion> FindEquivalentRegion(const std::vector<EvaluationRecord>& evaluations,
                                                      const EvaluationRecord& recommended, const SearchSpace& space,
                                                      const ObjectiveSet& objectives, double tolerance) {
-  if (recommended.status != "ok") return std::nullopt;
+  if (recommended.status != RunStatus::kOk) return std::nullopt;
   // Successful runs, once per parameter set.
   std::vector<const EvaluationRecord*> runs;
   std::set<std::string> seen;
   for (const EvaluationRecord& r : evaluations) {
-    if (r.status == "ok" && seen.insert(Identity(r)).second) runs.push_back(&r);
+    if (r.status == RunStatus::kOk && seen.insert(Identity(r)).second) runs.push_back(&r);
   }
   if (seen.insert(Identity(recommended)).second) runs.push_back(&recommended);
 

@@ -1,13 +1,33 @@
 #include "slamtune/optim/evaluation_record.h"
 
+#include <fmt/format.h>
+
+#include "slamtune/common/error.h"
+
 namespace slamtune::optim {
+
+const char* NameOf(RunStatus status) {
+  switch (status) {
+    case RunStatus::kOk: return "ok";
+    case RunStatus::kFailed: return "failed";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+RunStatus ParseRunStatus(std::string_view name) {
+  for (const RunStatus status : {RunStatus::kOk, RunStatus::kFailed}) {
+    if (name == NameOf(status)) return status;
+  }
+  throw InputError(fmt::format("unknown evaluation status '{}' (known: ok, failed)", name));
+}
 
 EvaluationRecord EvaluationRecord::Failed(const std::string& key, const std::map<std::string, double>& params,
                                           const std::string& reason) {
   EvaluationRecord r;
   r.key = key;
   r.params = params;
-  r.status = "failed";
+  r.status = RunStatus::kFailed;
   r.reason = reason;
   return r;
 }
@@ -15,7 +35,7 @@ EvaluationRecord EvaluationRecord::Failed(const std::string& key, const std::map
 void to_json(nlohmann::json& j, const EvaluationRecord& r) {
   j = nlohmann::json{{"key", r.key},
                      {"params", r.params},
-                     {"status", r.status},
+                     {"status", NameOf(r.status)},
                      {"reason", r.reason},
                      {"objectives",
                       {{"occupied_ratio", r.occupied_ratio},
@@ -46,7 +66,7 @@ void to_json(nlohmann::json& j, const EvaluationRecord& r) {
 void from_json(const nlohmann::json& j, EvaluationRecord& r) {
   r.key = j.at("key").get<std::string>();
   r.params = j.at("params").get<std::map<std::string, double>>();
-  r.status = j.at("status").get<std::string>();
+  r.status = ParseRunStatus(j.at("status").get<std::string>());
   r.reason = j.at("reason").get<std::string>();
   const auto& o = j.at("objectives");
   r.occupied_ratio = o.at("occupied_ratio").get<double>();

@@ -9,14 +9,24 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace slamtune::optim {
 
+// Whether an evaluation's SLAM run gave a map to score: kFailed when the run threw or its map
+// has nothing to score (the reason says which); a failed record scores worst on every objective.
+enum class RunStatus { kOk, kFailed };
+
+// "ok", "failed": the text results.json, the CSV tables and the run database hold.
+const char* NameOf(RunStatus status);
+// The status written as `name`; InputError for any other text.
+RunStatus ParseRunStatus(std::string_view name);
+
 struct EvaluationRecord {
   std::string key;                        // SearchSpace::Key of the full assignment
   std::map<std::string, double> params;   // ROS name -> value (varied and fixed)
-  std::string status = "ok";              // "ok" or "failed"
+  RunStatus status = RunStatus::kOk;
   std::string reason;                     // why it failed (exception text, NaN, ...)
 
   // Map figures (metrics/map_quality.h, slam/occupancy_grid.h); objective_set.h picks the

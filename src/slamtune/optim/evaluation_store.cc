@@ -182,7 +182,7 @@ void EvaluationStore::Put(const EvaluationRecord& record) {
                 "INSERT OR REPLACE INTO evaluations(key, status, record, seq)"
                 " VALUES(?, ?, ?, (SELECT COALESCE(MAX(seq), 0) + 1 FROM evaluations))");
   put.Bind(1, record.key);
-  put.Bind(2, record.status);
+  put.Bind(2, std::string(NameOf(record.status)));
   put.Bind(3, nlohmann::json(record).dump());
   put.Step();
 }

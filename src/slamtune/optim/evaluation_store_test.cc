@@ -1,17 +1,23 @@
 #include "slamtune/optim/evaluation_store.h"
 #include "slamtune/optim/objective_set.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sqlite3.h>
 
 #include <filesystem>
 #include <fstream>
 #include <thread>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::optim {
 namespace {
+
+using slamtune::testing::ErrorMessageOf;
 
 std::string FreshPath(const std::string& name) {
   return (slamtune::testing::UniqueTempDir("store_" + name) / "run.sqlite").string();
@@ -53,6 +59,48 @@ TEST(EvaluationStore, RecordsSurviveReopening) {
   EXPECT_FALSE(store.Get("missing").has_value());
   EXPECT_EQ(store.LastGeneration(), 0);
   EXPECT_EQ(store.All().front().key, "r=0");
+}
+
+// Runs `sql` on the database at `path` and returns the first column of each row as text.
+std::vector<std::string> Column(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  sqlite3_stmt* stmt = nullptr;
+  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+  std::vector<std::string> out;
+  while (sqlite3_step(stmt) == SQLITE_ROW) {
+    const unsigned char* text = sqlite3_column_text(stmt, 0);
+    out.emplace_back(text == nullptr ? "" : reinterpret_cast<const char*>(text));
+  }
+  sqlite3_finalize(stmt);
+  sqlite3_close(db);
+  return out;
+}
+
+TEST(EvaluationStore, StatusIsStoredAsOkOrFailedText) {
+  const std::string path = FreshPath("status");
+  {
+    EvaluationStore store(path);
+    store.Put(Sample(0));
+    store.Put(EvaluationRecord::Failed("f", {}, "solver diverged"));
+  }
+  EXPECT_EQ(Column(path, "SELECT status FROM evaluations ORDER BY seq"), (std::vector<std::string>{"ok", "failed"}));
+  std::vector<std::string> statuses;
+  for (const std::string& record : Column(path, "SELECT record FROM evaluations ORDER BY seq")) {
+    statuses.push_back(nlohmann::json::parse(record).at("status").get<std::string>());
+  }
+  EXPECT_EQ(statuses, (std::vector<std::string>{"ok", "failed"}));
+  EvaluationStore store(path);
+  EXPECT_EQ(store.Get("r=0")->status, RunStatus::kOk);
+  EXPECT_EQ(store.Get("f")->status, RunStatus::kFailed);
+}
+
+TEST(EvaluationStore, AnUnknownStoredStatusIsAnInputError) {
+  const std::string path = FreshPath("unknown_status");
+  EvaluationStore(path).Put(EvaluationRecord::Failed("f", {}, "solver diverged"));
+  Column(path, "UPDATE evaluations SET record = replace(record, '\"status\":\"failed\"', '\"status\":\"passed\"')");
+  EXPECT_THAT([&] { EvaluationStore(path).Get("f"); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("unknown evaluation status 'passed'")));
 }
 
 TEST(EvaluationStore, FailedRecordsScoreWorst) {
@@ -108,18 +156,9 @@ void Overwrite(const std::string& path, std::streamoff offset, const std::string
   file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
-std::string CheckMessage(const std::string& path) {
-  try {
-    CheckRunDatabase(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(CheckRunDatabase, IntactDatabasePasses) {
   const std::string path = FilledDatabase("intact");
-  EXPECT_EQ(CheckMessage(path), "");
+  EXPECT_NO_THROW(CheckRunDatabase(path));
   EXPECT_EQ(EvaluationStore(path).Count(), 200u);
 }
 
@@ -127,7 +166,7 @@ TEST(CheckRunDatabase, CorruptPageIsRefusedNamingTheFile) {
   const std::string path = FilledDatabase("page");
   ASSERT_GT(std::filesystem::file_size(path), 5u * 4096);
   Overwrite(path, 4 * 4096, std::string(4096, '\x5a'));
-  const std::string message = CheckMessage(path);
+  const std::string message = ErrorMessageOf([&] { CheckRunDatabase(path); });
   EXPECT_EQ(message.rfind(path + ": the run database is damaged (", 0), 0u) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
@@ -135,9 +174,10 @@ TEST(CheckRunDatabase, CorruptPageIsRefusedNamingTheFile) {
 TEST(CheckRunDatabase, OverwrittenHeaderIsRefused) {
   const std::string path = FilledDatabase("header");
   Overwrite(path, 0, "not a database header, really");
-  EXPECT_EQ(CheckMessage(path),
-            path + ": the run database is damaged (file is not a database); it cannot be resumed: start again with "
-                   "a new --out (the report files beside it stay readable)");
+  EXPECT_EQ(ErrorMessageOf([&] { CheckRunDatabase(path); }),
+            path +
+                ": the run database is damaged (file is not a database); it cannot be resumed: start again with "
+                "a new --out (the report files beside it stay readable)");
 }
 
 }  // namespace

@@ -105,7 +105,9 @@ ObjectiveSet ObjectiveSet::Parse(const std::string& name) {
 std::vector<double> ObjectiveSet::Score(const EvaluationRecord& record) const {
   std::vector<double> out;
   out.reserve(objectives_.size());
-  for (Objective o : objectives_) out.push_back(record.status == "ok" ? ValueOf(record, o) : InfoOf(o).failure_score);
+  for (Objective o : objectives_) {
+    out.push_back(record.status == RunStatus::kOk ? ValueOf(record, o) : InfoOf(o).failure_score);
+  }
   return out;
 }
 

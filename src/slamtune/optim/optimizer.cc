@@ -62,7 +62,7 @@ std::vector<EvaluationRecord> RecordsOf(BatchEvaluator& evaluator, const SearchS
 // every later generation would fail the same way.
 void RequireAnySuccess(const std::vector<EvaluationRecord>& records, const std::string& what) {
   for (const EvaluationRecord& r : records) {
-    if (r.status == "ok") return;
+    if (r.status == RunStatus::kOk) return;
   }
   std::string example;
   if (!records.empty()) {

@@ -10,9 +10,14 @@
 #include <cmath>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::optim {
 namespace {
+
+using slamtune::testing::ErrorMessageOf;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 // One file per test and name: ctest runs the tests of this file in parallel processes.
 std::string WriteTemp(const std::string& name, const std::string& text) {
@@ -20,15 +25,6 @@ std::string WriteTemp(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / ("slamtune_space_" + test + "_" + name + ".yaml");
   std::ofstream(path) << text;
   return path.string();
-}
-
-std::string ErrorOf(const std::string& text) {
-  try {
-    SearchSpace::FromYaml(WriteTemp("err", text));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 InputError ErrorFrom(const std::string& name, const std::string& text) {
@@ -150,7 +146,8 @@ fix:
 }
 
 TEST(SearchSpace, KeysAndTypesThatAreNotTextAreInputErrors) {
-  EXPECT_EQ(ErrorOf("[vary]: 1\n"), WriteTemp("err", "[vary]: 1\n") + ":1: a top-level key must be plain text, not a YAML sequence");
+  EXPECT_EQ(ErrorMessageOf([] { SearchSpace::FromYaml(WriteTemp("err", "[vary]: 1\n")); }),
+            WriteTemp("err", "[vary]: 1\n") + ":1: a top-level key must be plain text, not a YAML sequence");
   EXPECT_EQ(MessageOf("key", "vary:\n  {a: 1}: {min: 1, max: 2}\n"), "a parameter name must be plain text, not a YAML map");
   EXPECT_EQ(MessageOf("field", "vary:\n  scan_buffer_size: {min: 1, max: 2, [t]: 1}\n"),
             "a key of 'scan_buffer_size' must be plain text, not a YAML sequence");
@@ -161,19 +158,41 @@ TEST(SearchSpace, KeysAndTypesThatAreNotTextAreInputErrors) {
 }
 
 TEST(SearchSpace, RejectsBadSpacesWithReadableMessages) {
-  EXPECT_NE(ErrorOf("vary: {}\n").find("search space is empty"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 6, max: 2}\n").find("bounds reversed"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  loop_match_minimum_chain_size: {min: 1.5, max: 4, type: int}\n").find("whole-number bounds"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nextra: 1\n").find("unknown key 'extra'"), std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4, stride: 1}\n").find("unknown key 'stride'"), std::string::npos);
+  EXPECT_THAT([] { SearchSpace::FromYaml(WriteTemp("err", "vary: {}\n")); },
+              ThrowsMessage<InputError>(HasSubstr("search space is empty")));
+  EXPECT_THAT(
+      [] { SearchSpace::FromYaml(WriteTemp("err", "vary:\n  loop_search_maximum_distance: {min: 6, max: 2}\n")); },
+      ThrowsMessage<InputError>(HasSubstr("bounds reversed")));
+  EXPECT_THAT(
+      [] {
+        SearchSpace::FromYaml(
+            WriteTemp("err", "vary:\n  loop_match_minimum_chain_size: {min: 1.5, max: 4, type: int}\n"));
+      },
+      ThrowsMessage<InputError>(HasSubstr("whole-number bounds")));
+  EXPECT_THAT(
+      [] {
+        SearchSpace::FromYaml(WriteTemp("err", "vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nextra: 1\n"));
+      },
+      ThrowsMessage<InputError>(HasSubstr("unknown key 'extra'")));
+  EXPECT_THAT(
+      [] {
+        SearchSpace::FromYaml(WriteTemp("err", "vary:\n  loop_search_maximum_distance: {min: 1, max: 4, stride: 1}\n"));
+      },
+      ThrowsMessage<InputError>(HasSubstr("unknown key 'stride'")));
   EXPECT_EQ(MessageOf("step", "vary:\n  loop_search_maximum_distance: {min: 1, max: 4, step: 5}\n"),
             "'loop_search_maximum_distance': step 5 must be > 0 and at most max - min = 3");
   EXPECT_EQ(MessageOf("intstep", "vary:\n  scan_buffer_size: {min: 5, max: 40, step: 2.5}\n"),
             "'scan_buffer_size': an int parameter needs a whole-number step, got 2.5");
-  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nfix:\n  loop_search_maximum_distance: 2\n").find("both varied and fixed"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf("vary:\n  loop_search_maximum_distance: {min: a, max: 4}\n").find("loop_search_maximum_distance.min must be a number"), std::string::npos);
+  EXPECT_THAT(
+      [] {
+        SearchSpace::FromYaml(WriteTemp(
+            "err",
+            "vary:\n  loop_search_maximum_distance: {min: 1, max: 4}\nfix:\n  loop_search_maximum_distance: 2\n"));
+      },
+      ThrowsMessage<InputError>(HasSubstr("both varied and fixed")));
+  EXPECT_THAT(
+      [] { SearchSpace::FromYaml(WriteTemp("err", "vary:\n  loop_search_maximum_distance: {min: a, max: 4}\n")); },
+      ThrowsMessage<InputError>(HasSubstr("loop_search_maximum_distance.min must be a number")));
 }
 
 TEST(SearchSpace, StepsPutEveryValueOnTheLatticeWithinBounds) {

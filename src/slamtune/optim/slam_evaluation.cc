@@ -15,17 +15,9 @@
 namespace slamtune::optim {
 namespace {
 
-slam::OccupancyGridOptions GridOptions(const slam::MapperParams& params) {
-  slam::OccupancyGridOptions grid;
-  grid.resolution = params.resolution;
-  grid.min_pass_through = params.min_pass_through;
-  grid.occupancy_threshold = params.occupancy_threshold;
-  return grid;
-}
-
 slam::OccupancyGrid GridOf(const slam::LogRunner& runner, const slam::MapperParams& params) {
   return slam::OccupancyGrid::FromScans(std::span<const slam::LaserScan>(runner.mapper().scans()),
-                                        GridOptions(params));
+                                        slam::GridOptionsOf(params));
 }
 
 slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
@@ -59,7 +51,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   std::vector<std::uint64_t> key;
   const bool use_cache = context.map_scores != nullptr && run_out == nullptr;
   if (use_cache) {
-    key = MapScoreCache::KeyOf(GridOptions(params), std::span<const slam::LaserScan>(runner.mapper().scans()));
+    key = MapScoreCache::KeyOf(slam::GridOptionsOf(params), std::span<const slam::LaserScan>(runner.mapper().scans()));
     scores = context.map_scores->Find(key);
   }
   if (!scores) {
@@ -101,7 +93,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   }
   if (quality.occupied_cells == 0) {
     // Nothing to score: an empty map would win every objective.
-    record.status = "failed";
+    record.status = RunStatus::kFailed;
     record.reason = "the map has no occupied cell (no reading reached it: min_laser_range at or above the range "
                     "threshold?)";
   }

@@ -13,12 +13,15 @@
 #include <string>
 #include <thread>
 
+#include "slamtune/common/testing/same_bits.h"
 #include "slamtune/io/carmen_reader.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/sim/simulation.h"
 
 namespace slamtune::optim {
 namespace {
+
+using slamtune::testing::SameBits;
 
 std::uint64_t Bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
@@ -89,9 +92,7 @@ void ExpectIdentical(const Evaluated& a, const Evaluated& b, const std::string& 
   ASSERT_EQ(a.run.trajectory.size(), b.run.trajectory.size());
   std::size_t differing = 0;
   for (std::size_t i = 0; i < a.run.trajectory.size(); ++i) {
-    const Pose2& p = a.run.trajectory[i].pose;
-    const Pose2& q = b.run.trajectory[i].pose;
-    if (Bits(p.x) != Bits(q.x) || Bits(p.y) != Bits(q.y) || Bits(p.theta) != Bits(q.theta)) ++differing;
+    if (!SameBits(a.run.trajectory[i].pose, b.run.trajectory[i].pose)) ++differing;
   }
   EXPECT_EQ(differing, 0u) << "poses differing";
   // The map, pixel for pixel.
@@ -200,10 +201,10 @@ TEST(SlamEvaluation, AnEmptyMapIsAFailedRun) {
   context.log = WorldSlice("office", 200);
   context.base.min_laser_range = 30.0;  // above every reading
   const EvaluationRecord r = EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}});
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::kFailed);
   EXPECT_NE(r.reason.find("no occupied cell"), std::string::npos) << r.reason;
   context.base.min_laser_range = 0.0;
-  EXPECT_EQ(EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}}).status, "ok");
+  EXPECT_EQ(EvaluateSlam(context, {{"loop_search_maximum_distance", 4.0}}).status, RunStatus::kOk);
 }
 
 // The drawn wall (objective n_w) is counted only when asked for, and it ranks runs of other node
@@ -225,8 +226,8 @@ TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
   ASSERT_NE(context.trajectory_map, nullptr);
   const EvaluationRecord dense = EvaluateSlam(context, dense_set);
   const EvaluationRecord sparse = EvaluateSlam(context, sparse_set);
-  ASSERT_EQ(dense.status, "ok");
-  ASSERT_EQ(sparse.status, "ok");
+  ASSERT_EQ(dense.status, RunStatus::kOk);
+  ASSERT_EQ(sparse.status, RunStatus::kOk);
   ASSERT_TRUE(dense.has_gt && sparse.has_gt);
   std::printf("error %.4f -> %.4f m; own map %.0f -> %.0f cells; drawn wall %.0f -> %.0f cells\n", dense.trans_mean_m,
               sparse.trans_mean_m, dense.occupied_cells, sparse.occupied_cells, dense.drawn_wall_cells,

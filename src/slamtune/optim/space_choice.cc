@@ -21,7 +21,7 @@ DefaultSpaceChoice ChooseDefaultSpace(const SlamEvaluationContext& context) {
   choice.steps = std::move(run.sequential_matches);
   choice.map = std::move(run.map);
   choice.trajectory = std::move(run.trajectory);
-  if (base.status == "ok" && run.front_end.points_at_front_end()) choice.kind = DefaultSpaceKind::kFrontEnd;
+  if (base.status == RunStatus::kOk && run.front_end.points_at_front_end()) choice.kind = DefaultSpaceKind::kFrontEnd;
   return choice;
 }
 

@@ -94,7 +94,7 @@ std::vector<optim::EvaluationRecord> GroundTruthRuns(const std::vector<optim::Ev
   std::vector<optim::EvaluationRecord> out;
   std::set<std::string> seen;
   for (const auto& e : evaluations) {
-    if (e.status != "ok" || !e.has_gt) continue;
+    if (e.status != optim::RunStatus::kOk || !e.has_gt) continue;
     const std::string key = e.key.empty() ? optim::SearchSpace::Key(e.params) : e.key;
     if (seen.insert(key).second) out.push_back(e);
   }

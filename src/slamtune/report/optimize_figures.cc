@@ -33,7 +33,7 @@ std::vector<std::pair<const optim::Candidate*, std::vector<double>>> PlottableCa
     const optim::OptimizeResult& result) {
   std::vector<std::pair<const optim::Candidate*, std::vector<double>>> out;
   for (const auto* c : CandidatesInReportOrder(result)) {
-    if (c->record.status != "ok") continue;
+    if (c->record.status != optim::RunStatus::kOk) continue;
     std::vector<double> objectives = result.objectives.Values(c->record);
     if (!result.objectives.IsFailureScore(objectives)) out.emplace_back(c, objectives);
   }
@@ -203,7 +203,7 @@ std::vector<CandidateMapPanel> CandidateMapPanels(const optim::OptimizeResult& r
   for (CandidateGroup& group : MergedCandidates(result)) {
     const optim::Candidate& c = group.shown();
     std::string caption = ParamSummary(c.record.params, result.space);
-    if (c.record.status == "ok") {
+    if (c.record.status == optim::RunStatus::kOk) {
       caption += fmt::format(", {} loop closure{}", c.record.loop_closures, c.record.loop_closures == 1 ? "" : "s");
     } else {
       caption += ", run failed";
@@ -296,8 +296,9 @@ std::vector<SpacePanel> ParameterSpacePanels(const optim::OptimizeResult& result
   std::vector<SpacePanel> panels;
   for (std::size_t k = 0; k < result.objectives.size(); ++k) panels.push_back({SpaceColouring::kObjective, k});
   panels.push_back({SpaceColouring::kLoopClosures, 0});
-  const bool ground_truth = std::any_of(result.evaluations.begin(), result.evaluations.end(),
-                                        [](const optim::EvaluationRecord& e) { return e.status == "ok" && e.has_gt; });
+  const bool ground_truth =
+      std::any_of(result.evaluations.begin(), result.evaluations.end(),
+                  [](const optim::EvaluationRecord& e) { return e.status == optim::RunStatus::kOk && e.has_gt; });
   if (ground_truth) panels.push_back({SpaceColouring::kTranslationalError, 0});
   return panels;
 }
@@ -497,7 +498,7 @@ ColouredGroups QuarterGroups(const optim::OptimizeResult& result, const SpacePai
 ColouredGroups LoopGroups(const optim::OptimizeResult& result, const SpacePair& pair) {
   std::vector<int> counts;
   for (const auto& e : result.evaluations)
-    if (e.status == "ok") counts.push_back(e.loop_closures);
+    if (e.status == optim::RunStatus::kOk) counts.push_back(e.loop_closures);
   const std::vector<CountClass> classes = LoopClosureClasses(counts, 6);
   ColouredGroups g;
   for (std::size_t i = 0; i < classes.size(); ++i) {
@@ -511,7 +512,7 @@ ColouredGroups LoopGroups(const optim::OptimizeResult& result, const SpacePair& 
   }
   for (const auto& e : result.evaluations) {
     const auto p = PointOf(e, pair);
-    if (e.status != "ok" || !p) continue;
+    if (e.status != optim::RunStatus::kOk || !p) continue;
     for (std::size_t i = 0; i < classes.size(); ++i) {
       if (e.loop_closures < classes[i].lower || e.loop_closures > classes[i].upper) continue;
       g.series[i].x.push_back(p->x);
@@ -529,7 +530,7 @@ ColouredGroups GroupsFor(const SpacePanel& panel, const optim::OptimizeResult& r
       ColouredGroups g = QuarterGroups(
           result, pair,
           [&](const optim::EvaluationRecord& e) -> std::optional<double> {
-            if (e.status != "ok") return std::nullopt;
+            if (e.status != optim::RunStatus::kOk) return std::nullopt;
             return optim::ValueOf(e, id);
           },
           "");
@@ -541,7 +542,7 @@ ColouredGroups GroupsFor(const SpacePanel& panel, const optim::OptimizeResult& r
       ColouredGroups g = QuarterGroups(
           result, pair,
           [](const optim::EvaluationRecord& e) -> std::optional<double> {
-            if (e.status != "ok" || !e.has_gt || !std::isfinite(e.trans_mean_m)) return std::nullopt;
+            if (e.status != optim::RunStatus::kOk || !e.has_gt || !std::isfinite(e.trans_mean_m)) return std::nullopt;
             return e.trans_mean_m;
           },
           "m");
@@ -559,7 +560,7 @@ Series FailedRuns(const optim::OptimizeResult& result, const SpacePair& pair) {
   failed.marker_size = 8;
   for (const auto& e : result.evaluations) {
     const auto p = PointOf(e, pair);
-    if (e.status == "ok" || !p) continue;
+    if (e.status == optim::RunStatus::kOk || !p) continue;
     failed.x.push_back(p->x);
     failed.y.push_back(p->y);
   }
@@ -663,7 +664,7 @@ std::vector<double> LineValues(const optim::EvaluationRecord& r, const std::vect
                                optim::Objective first) {
   std::vector<double> values;
   for (const auto& d : dims) values.push_back(ParamOf(r, d.name).value_or(std::nan("")));
-  values.push_back(r.status == "ok" ? optim::ValueOf(r, first) : std::nan(""));
+  values.push_back(r.status == optim::RunStatus::kOk ? optim::ValueOf(r, first) : std::nan(""));
   return values;
 }
 
@@ -674,7 +675,7 @@ cv::Mat ParallelCoordinates(const optim::OptimizeResult& result, const FigureOpt
   // Successful sets, worst first so the best are drawn on top.
   std::vector<const optim::EvaluationRecord*> ok;
   for (const auto& e : result.evaluations)
-    if (e.status == "ok") ok.push_back(&e);
+    if (e.status == optim::RunStatus::kOk) ok.push_back(&e);
   std::stable_sort(ok.begin(), ok.end(),
                    [&](const auto* a, const auto* b) { return optim::ValueOf(*a, first) > optim::ValueOf(*b, first); });
   std::vector<double> values;
@@ -748,7 +749,7 @@ cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::siz
   const optim::Objective objective_id = result.objectives.objectives()[k];
   const std::string objective = ObjectiveAt(result, k).short_name;
   std::size_t successful = 0;
-  for (const auto& e : result.evaluations) successful += e.status == "ok" ? 1 : 0;
+  for (const auto& e : result.evaluations) successful += e.status == optim::RunStatus::kOk ? 1 : 0;
   const auto limits = ObjectiveLimits(result);
   std::vector<cv::Mat> panels;
   int most_outside = 0;
@@ -760,7 +761,7 @@ cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::siz
     int outside = 0;
     for (const auto& e : result.evaluations) {
       const auto x = ParamOf(e, d.name);
-      if (!x || e.status != "ok") continue;
+      if (!x || e.status != optim::RunStatus::kOk) continue;
       const double v = optim::ValueOf(e, objective_id);
       all.x.push_back(*x);
       all.y.push_back(v);
@@ -769,7 +770,7 @@ cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::siz
     std::vector<Series> series = {all};
     AddCandidates(series, result, [&](const optim::Candidate& c) -> std::optional<std::pair<double, double>> {
       const auto x = ParamOf(c.record, d.name);
-      if (!x || c.record.status != "ok") return std::nullopt;
+      if (!x || c.record.status != optim::RunStatus::kOk) return std::nullopt;
       return std::pair{*x, optim::ValueOf(c.record, objective_id)};
     });
     PlotOptions o = PanelOptions(options);
@@ -893,7 +894,7 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
     }
     std::vector<Series> series = {all};
     for (const auto* c : CandidatesInReportOrder(result)) {
-      if (c->record.status == "ok" && c->record.has_gt) {
+      if (c->record.status == optim::RunStatus::kOk && c->record.has_gt) {
         series.push_back(CandidateSeries(*c, optim::ValueOf(c->record, result.objectives.objectives()[k]),
                                          c->record.trans_mean_m));
       }

@@ -28,7 +28,7 @@ const char* const kObjectivesCaveat =
 
 namespace {
 
-bool Ok(const optim::EvaluationRecord& r) { return r.status == "ok"; }
+bool Ok(const optim::EvaluationRecord& r) { return r.status == optim::RunStatus::kOk; }
 
 std::string Short(double v) { return Readable(v, 4); }
 

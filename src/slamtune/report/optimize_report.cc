@@ -74,7 +74,7 @@ class FolderWriter {
 std::string MapCaption(const CandidateGroup& group, const optim::OptimizeResult& result) {
   const optim::Candidate& c = group.shown();
   std::string text = group.label + ": " + ParamSummary(c.record.params, result.space);
-  if (c.record.status != "ok") return text + ", run failed: " + c.record.reason;
+  if (c.record.status != optim::RunStatus::kOk) return text + ", run failed: " + c.record.reason;
   text += fmt::format(", {} loop closure{}", c.record.loop_closures, c.record.loop_closures == 1 ? "" : "s");
   const std::vector<double> values = result.objectives.Values(c.record);
   for (std::size_t k = 0; k < values.size(); ++k) {

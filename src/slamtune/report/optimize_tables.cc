@@ -9,7 +9,7 @@
 namespace slamtune::report {
 namespace {
 
-bool Ok(const optim::EvaluationRecord& r) { return r.status == "ok"; }
+bool Ok(const optim::EvaluationRecord& r) { return r.status == optim::RunStatus::kOk; }
 
 // A metric cell: empty for a failed run.
 std::string Metric(const optim::EvaluationRecord& r, double value) { return Ok(r) ? FormatNumber(value) : ""; }
@@ -124,7 +124,7 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
     const auto& r = evaluations[i];
     std::vector<std::string> row = {std::to_string(i)};
     for (const auto& p : params) row.push_back(Param(r.params, p));
-    row.insert(row.end(), {r.status, r.reason, Metric(r, r.occupied_ratio), Metric(r, r.corner_pixels),
+    row.insert(row.end(), {NameOf(r.status), r.reason, Metric(r, r.occupied_ratio), Metric(r, r.corner_pixels),
                            Metric(r, r.enclosed_areas), Metric(r, r.occupied_ratio_known), Metric(r, r.corners),
                            Metric(r, r.contours), Metric(r, r.occupied_cells), Metric(r, r.hits),
                            Metric(r, r.hits_in_free_cells), Metric(r, r.hits_in_unknown_cells),

@@ -11,7 +11,9 @@ nlohmann::json CandidateJson(const optim::Candidate& candidate) {
   const optim::EvaluationRecord& r = candidate.record;
   nlohmann::json j = r;  // the record's own JSON (optim/evaluation_record.h), then the report's fields
   j.erase("key");
-  if (r.status == "ok") j["objectives"]["unbacked_hits"] = optim::ValueOf(r, optim::Objective::kUnbackedHits);
+  if (r.status == optim::RunStatus::kOk) {
+    j["objectives"]["unbacked_hits"] = optim::ValueOf(r, optim::Objective::kUnbackedHits);
+  }
   j["label"] = candidate.label;
   j["description"] = candidate.description;
   return j;

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool Ok(const optim::EvaluationRecord& r) { return r.status == "ok"; }
+bool Ok(const optim::EvaluationRecord& r) { return r.status == optim::RunStatus::kOk; }
 
 std::string Metric(const optim::EvaluationRecord& r, double v) { return Ok(r) ? FormatNumber(v) : ""; }
 
@@ -38,7 +38,7 @@ CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>&
   t.header.push_back("loop_scans");
   for (const auto& p : points) {
     const auto& r = p.record;
-    std::vector<std::string> row = {parameter, FormatNumber(p.value), r.status, r.reason,
+    std::vector<std::string> row = {parameter, FormatNumber(p.value), NameOf(r.status), r.reason,
                                     Ok(r) ? std::to_string(r.loop_closures) : "", Metric(r, r.occupied_ratio),
                                     Metric(r, r.corner_pixels), Metric(r, r.enclosed_areas),
                                     Metric(r, r.occupied_ratio_known), Metric(r, r.corners), Metric(r, r.contours),

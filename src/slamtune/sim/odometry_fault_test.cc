@@ -12,6 +12,7 @@ namespace slamtune::sim {
 namespace {
 
 using testing::HasSubstr;
+using testing::ThrowsMessage;
 
 OdometryFault Fault(OdometryFaultKind kind, double start, double length, double magnitude) {
   OdometryFault fault;
@@ -70,20 +71,17 @@ TEST(OdometryFault, SummedOverStepsTheWholeMagnitudeIsReported) {
 }
 
 TEST(OdometryFault, ValidateNamesFieldValueAndRule) {
-  const auto message = [](const OdometryFault& fault) {
-    try {
-      fault.Validate("faults[2]");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  EXPECT_EQ(message(Fault(OdometryFaultKind::kSpin, 1.0, 0.1, 0.5)), "");
-  EXPECT_THAT(message(Fault(OdometryFaultKind::kSpin, -1.0, 0.1, 0.5)), HasSubstr("faults[2] (spin) start_m = -1: must be"));
-  EXPECT_THAT(message(Fault(OdometryFaultKind::kJump, 1.0, 0.0, 0.5)), HasSubstr("faults[2] (jump) length_m = 0: must be"));
-  EXPECT_THAT(message(Fault(OdometryFaultKind::kJump, 1.0, 0.1, 11.0)), HasSubstr("magnitude = 11: must be in [-10, 10] m"));
-  EXPECT_THAT(message(Fault(OdometryFaultKind::kSpin, 1.0, 0.1, 7.0)), HasSubstr("(spin) magnitude = 7"));
-  EXPECT_THAT(message(Fault(OdometryFaultKind::kReverse, 1.0, 0.1, 0.5)), HasSubstr("(reverse) magnitude = 0.5: must be 0"));
+  EXPECT_NO_THROW(Fault(OdometryFaultKind::kSpin, 1.0, 0.1, 0.5).Validate("faults[2]"));
+  EXPECT_THAT([] { Fault(OdometryFaultKind::kSpin, -1.0, 0.1, 0.5).Validate("faults[2]"); },
+              ThrowsMessage<InputError>(HasSubstr("faults[2] (spin) start_m = -1: must be")));
+  EXPECT_THAT([] { Fault(OdometryFaultKind::kJump, 1.0, 0.0, 0.5).Validate("faults[2]"); },
+              ThrowsMessage<InputError>(HasSubstr("faults[2] (jump) length_m = 0: must be")));
+  EXPECT_THAT([] { Fault(OdometryFaultKind::kJump, 1.0, 0.1, 11.0).Validate("faults[2]"); },
+              ThrowsMessage<InputError>(HasSubstr("magnitude = 11: must be in [-10, 10] m")));
+  EXPECT_THAT([] { Fault(OdometryFaultKind::kSpin, 1.0, 0.1, 7.0).Validate("faults[2]"); },
+              ThrowsMessage<InputError>(HasSubstr("(spin) magnitude = 7")));
+  EXPECT_THAT([] { Fault(OdometryFaultKind::kReverse, 1.0, 0.1, 0.5).Validate("faults[2]"); },
+              ThrowsMessage<InputError>(HasSubstr("(reverse) magnitude = 0.5: must be 0")));
 }
 
 TEST(OdometryFault, ParsesTheCommandLineForm) {

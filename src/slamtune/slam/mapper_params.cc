@@ -336,6 +336,14 @@ ScanMatcherOptions MapperParams::LoopMatcherOptions(double range_threshold) cons
   return o;
 }
 
+OccupancyGridOptions GridOptionsOf(const MapperParams& params) {
+  OccupancyGridOptions grid;
+  grid.resolution = params.resolution;
+  grid.min_pass_through = params.min_pass_through;
+  grid.occupancy_threshold = params.occupancy_threshold;
+  return grid;
+}
+
 // §9.2 and §2.1: slam_karto never sets the threshold, so Karto's 12 m is clipped into the
 // laser's limits; slam_toolbox uses max_laser_range, capped at (or replaced by) range_max.
 double MapperParams::RangeThreshold(double min_range, double max_range) const {

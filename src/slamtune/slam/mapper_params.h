@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "slamtune/slam/backend/pose_graph_solver.h"
+#include "slamtune/slam/occupancy_grid.h"
 #include "slamtune/slam/scan_matcher.h"
 
 namespace slamtune::slam {
@@ -118,6 +119,10 @@ struct MapperParams {
 
   friend bool operator==(const MapperParams&, const MapperParams&) = default;
 };
+
+// Options of the occupancy grid these parameters draw (§8.1, §9.2): resolution, min_pass_through
+// and occupancy_threshold; max_cells keeps its default.
+OccupancyGridOptions GridOptionsOf(const MapperParams& params);
 
 enum class ParamType { kBool, kInt, kDouble, kString };
 

@@ -5,23 +5,16 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <functional>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::slam {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
-
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using ::testing::ThrowsMessage;
 
 TEST(MapperParams, DefaultsAreSlamKartoYaml) {
   const MapperParams p;
@@ -54,7 +47,8 @@ TEST(MapperParams, SlamToolboxPresetUsesItsYaml) {
   EXPECT_EQ(p.minimum_time_interval, 3600);  // not passed to the toolbox Mapper (§3.4)
   EXPECT_NO_THROW(p.Validate());
   EXPECT_NE(p, MapperParams{});
-  EXPECT_THAT(ErrorOf([] { MapperParams::Preset("cartographer"); }), HasSubstr("unknown preset 'cartographer'"));
+  EXPECT_THAT([] { MapperParams::Preset("cartographer"); },
+              ThrowsMessage<InputError>(HasSubstr("unknown preset 'cartographer'")));
 }
 
 TEST(MapperParams, RangeThresholdRules) {
@@ -84,35 +78,60 @@ TEST(MapperParams, MatcherOptionsUseInternalUnits) {
   EXPECT_EQ(loop.smear_deviation, 0.03);
 }
 
+TEST(MapperParams, GridOptionsTakeTheMapParameters) {
+  MapperParams p;
+  p.resolution = 0.1;
+  p.min_pass_through = 5;
+  p.occupancy_threshold = 0.25;
+  const OccupancyGridOptions grid = GridOptionsOf(p);
+  EXPECT_EQ(grid.resolution, 0.1);
+  EXPECT_EQ(grid.min_pass_through, 5);
+  EXPECT_EQ(grid.occupancy_threshold, 0.25);
+  EXPECT_EQ(grid.max_cells, OccupancyGridOptions{}.max_cells);
+  // The defaults of both agree: slam_karto's map parameters.
+  const OccupancyGridOptions defaults = GridOptionsOf(MapperParams{});
+  EXPECT_EQ(defaults.resolution, OccupancyGridOptions{}.resolution);
+  EXPECT_EQ(defaults.min_pass_through, OccupancyGridOptions{}.min_pass_through);
+  EXPECT_EQ(defaults.occupancy_threshold, OccupancyGridOptions{}.occupancy_threshold);
+}
+
 TEST(MapperParams, ValidationNamesParameterValueAndRule) {
   MapperParams p;
   p.loop_match_minimum_chain_size = 0;
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }),
-              HasSubstr("loop_match_minimum_chain_size = 0 is out of range: must be an integer >= 1"));
+  EXPECT_THAT([&] { p.Validate(); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("loop_match_minimum_chain_size = 0 is out of range: must be an integer >= 1")));
   p = {};
   p.loop_search_maximum_distance = -1.5;
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("loop_search_maximum_distance = -1.5 is out of range"));
+  EXPECT_THAT([&] { p.Validate(); },
+              ThrowsMessage<InputError>(HasSubstr("loop_search_maximum_distance = -1.5 is out of range")));
   p = {};
   p.loop_match_minimum_response_coarse = 1.2;
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }),
-              HasSubstr("loop_match_minimum_response_coarse = 1.2 is out of range: must be in [0, 1]"));
+  EXPECT_THAT([&] { p.Validate(); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("loop_match_minimum_response_coarse = 1.2 is out of range: must be in [0, 1]")));
   p = {};
   p.correlation_search_space_dimension = 0.31;
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("must be an even integer"));
+  EXPECT_THAT([&] { p.Validate(); }, ThrowsMessage<InputError>(HasSubstr("must be an even integer")));
   p = {};
   p.loop_search_space_dimension = 8.05;  // 161 cells: odd
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("loop_search_space_dimension = 8.05"));
+  EXPECT_THAT([&] { p.Validate(); }, ThrowsMessage<InputError>(HasSubstr("loop_search_space_dimension = 8.05")));
   p = {};
   p.correlation_search_space_smear_deviation = 0.2;  // > 10 rho
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("correlation_search_space_smear_deviation = 0.2"));
+  EXPECT_THAT([&] { p.Validate(); },
+              ThrowsMessage<InputError>(HasSubstr("correlation_search_space_smear_deviation = 0.2")));
   p = {};
-  EXPECT_THAT(ErrorOf([&] { SetFromString(p, "solver", "g2o"); }),
-              HasSubstr("solver = 'g2o' is out of range: must be spa or ceres"));
-  EXPECT_THAT(ErrorOf([&] { p.Validate({{"ceres_loss_function", "SoftL1"}}); }),
-              HasSubstr("ceres_loss_function = 'SoftL1' is out of range: must be None, HuberLoss or CauchyLoss"));
+  EXPECT_THAT([&] { SetFromString(p, "solver", "g2o"); },
+              ThrowsMessage<InputError>(HasSubstr("solver = 'g2o' is out of range: must be spa or ceres")));
+  EXPECT_THAT(
+      [&] {
+        p.Validate({{"ceres_loss_function", "SoftL1"}});
+      },
+      ThrowsMessage<InputError>(
+          HasSubstr("ceres_loss_function = 'SoftL1' is out of range: must be None, HuberLoss or CauchyLoss")));
   p = {};
   p.minimum_travel_distance = std::nan("");
-  EXPECT_THAT(ErrorOf([&] { p.Validate(); }), HasSubstr("minimum_travel_distance = nan"));
+  EXPECT_THAT([&] { p.Validate(); }, ThrowsMessage<InputError>(HasSubstr("minimum_travel_distance = nan")));
 }
 
 TEST(MapperParams, NumericAccessByRosName) {
@@ -127,12 +146,15 @@ TEST(MapperParams, NumericAccessByRosName) {
   EXPECT_FALSE(p.do_loop_closing);
 
   const MapperParams before = p;
-  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "loop_match_minimum_chain_size", 2.5); }),
-              HasSubstr("loop_match_minimum_chain_size = 2.5 is out of range"));
-  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "loop_match_minimum_chain_size", 0); }), HasSubstr("must be an integer >= 1"));
-  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "use_scan_barycenter", 0.5); }), HasSubstr("true or false"));
-  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "solver", 1); }), HasSubstr("is a string"));
-  EXPECT_THAT(ErrorOf([&] { SetNumeric(p, "loop_radius", 1); }), HasSubstr("unknown mapper parameter 'loop_radius'"));
+  EXPECT_THAT([&] { SetNumeric(p, "loop_match_minimum_chain_size", 2.5); },
+              ThrowsMessage<InputError>(HasSubstr("loop_match_minimum_chain_size = 2.5 is out of range")));
+  EXPECT_THAT([&] { SetNumeric(p, "loop_match_minimum_chain_size", 0); },
+              ThrowsMessage<InputError>(HasSubstr("must be an integer >= 1")));
+  EXPECT_THAT([&] { SetNumeric(p, "use_scan_barycenter", 0.5); },
+              ThrowsMessage<InputError>(HasSubstr("true or false")));
+  EXPECT_THAT([&] { SetNumeric(p, "solver", 1); }, ThrowsMessage<InputError>(HasSubstr("is a string")));
+  EXPECT_THAT([&] { SetNumeric(p, "loop_radius", 1); },
+              ThrowsMessage<InputError>(HasSubstr("unknown mapper parameter 'loop_radius'")));
   EXPECT_EQ(p, before);  // validated before changing state
 }
 
@@ -144,10 +166,10 @@ TEST(MapperParams, OverridesFromText) {
   EXPECT_EQ(p.loop_match_minimum_response_coarse, 0.55);
   EXPECT_TRUE(p.use_response_expansion);
   EXPECT_EQ(p.solver, SolverKind::kCeres);
-  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "scan_buffer_size"); }), HasSubstr("form name=value"));
-  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "scan_buffer_size=ten"); }),
-              HasSubstr("scan_buffer_size = 'ten' is not a number (int expected"));
-  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "use_response_expansion=maybe"); }), HasSubstr("maybe"));
+  EXPECT_THAT([&] { ApplyOverride(p, "scan_buffer_size"); }, ThrowsMessage<InputError>(HasSubstr("form name=value")));
+  EXPECT_THAT([&] { ApplyOverride(p, "scan_buffer_size=ten"); },
+              ThrowsMessage<InputError>(HasSubstr("scan_buffer_size = 'ten' is not a number (int expected")));
+  EXPECT_THAT([&] { ApplyOverride(p, "use_response_expansion=maybe"); }, ThrowsMessage<InputError>(HasSubstr("maybe")));
 }
 
 // A consistent set is taken whatever the order it is given in: the values are validated
@@ -177,9 +199,9 @@ TEST(MapperParams, ConsistentSetsAreValidatedTogether) {
 
 TEST(MapperParams, UnknownNamesGetTheClosestKnownOne) {
   MapperParams p;
-  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "loop_search_maximum_distanse=3"); }),
-              HasSubstr("(did you mean 'loop_search_maximum_distance'?)"));
-  EXPECT_THAT(ErrorOf([&] { ApplyOverride(p, "frobnicate=3"); }), ::testing::Not(HasSubstr("did you mean")));
+  EXPECT_THAT([&] { ApplyOverride(p, "loop_search_maximum_distanse=3"); },
+              ThrowsMessage<InputError>(HasSubstr("(did you mean 'loop_search_maximum_distance'?)")));
+  EXPECT_THAT(ErrorMessageOf([&] { ApplyOverride(p, "frobnicate=3"); }), ::testing::Not(HasSubstr("did you mean")));
 }
 
 TEST(MapperParams, NamedValuesCoverTheTableAndRoundTrip) {

@@ -15,6 +15,7 @@ namespace slamtune::slam {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 using Cells = std::vector<Eigen::Vector2i>;
 
 Cells Trace(int x0, int y0, int x1, int y1) {
@@ -244,24 +245,16 @@ TEST(OccupancyGrid, NoScansGiveAnEmptyMap) {
 }
 
 TEST(OccupancyGridOptions, ValidateNamesFieldValueAndRule) {
-  auto message = [](const OccupancyGridOptions& o) -> std::string {
-    try {
-      o.Validate();
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
   OccupancyGridOptions o;
-  EXPECT_EQ(message(o), "");
+  EXPECT_NO_THROW(o.Validate());
   o.resolution = 0.0;
-  EXPECT_THAT(message(o), HasSubstr("resolution = 0"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("resolution = 0")));
   o = {};
   o.min_pass_through = -1;
-  EXPECT_THAT(message(o), HasSubstr("min_pass_through = -1: must be >= 0"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("min_pass_through = -1: must be >= 0")));
   o = {};
   o.occupancy_threshold = 1.5;
-  EXPECT_THAT(message(o), HasSubstr("occupancy_threshold = 1.5"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("occupancy_threshold = 1.5")));
   // A diverged trajectory: the map would be far too large.
   const LaserScan a = FanScan({1.0}, 0.0, 0.1, 0.1, 20.0, 12.0, {0, 0, 0});
   const LaserScan b = FanScan({1.0}, 0.0, 0.1, 0.1, 20.0, 12.0, {5e4, 5e4, 0});

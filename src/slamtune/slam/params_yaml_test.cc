@@ -4,23 +4,17 @@
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::slam {
 namespace {
 
+using slamtune::testing::ErrorMessageOf;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::StartsWith;
-
-std::string ErrorOf(MapperParams& p, const std::string& yaml) {
-  try {
-    ApplyParamsYaml(p, yaml, "test.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using ::testing::ThrowsMessage;
 
 TEST(ParamsYaml, ReadsRos2Nesting) {
   MapperParams p;
@@ -68,27 +62,33 @@ TEST(ParamsYaml, BareRosParametersAndEmptyFile) {
 TEST(ParamsYaml, RejectsUnknownWrongTypeAndOutOfRange) {
   MapperParams p;
   const MapperParams before = p;
-  EXPECT_THAT(ErrorOf(p, "loop_search_radius: 3\n"), HasSubstr("test.yaml:1: unknown mapper parameter 'loop_search_radius'"));
-  EXPECT_THAT(ErrorOf(p, "scan_buffer_size: 10\nloop_match_minimum_chain_size: many\n"),
-              HasSubstr("test.yaml:2: mapper parameter loop_match_minimum_chain_size = 'many' is not a number"));
-  EXPECT_THAT(ErrorOf(p, "loop_match_minimum_response_coarse: 1.5\n"),
-              HasSubstr("loop_match_minimum_response_coarse = 1.5 is out of range: must be in [0, 1]"));
-  EXPECT_THAT(ErrorOf(p, "loop_search_maximum_distance: [1, 2]\n"), HasSubstr("must be a scalar"));
-  EXPECT_THAT(ErrorOf(p, "solver_plugin: solver_plugins::G2oSolver\n"), HasSubstr("is not supported"));
+  EXPECT_THAT([&] { ApplyParamsYaml(p, "loop_search_radius: 3\n", "test.yaml"); },
+              ThrowsMessage<InputError>(HasSubstr("test.yaml:1: unknown mapper parameter 'loop_search_radius'")));
+  EXPECT_THAT([&] { ApplyParamsYaml(p, "scan_buffer_size: 10\nloop_match_minimum_chain_size: many\n", "test.yaml"); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("test.yaml:2: mapper parameter loop_match_minimum_chain_size = 'many' is not a number")));
+  EXPECT_THAT([&] { ApplyParamsYaml(p, "loop_match_minimum_response_coarse: 1.5\n", "test.yaml"); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("loop_match_minimum_response_coarse = 1.5 is out of range: must be in [0, 1]")));
+  EXPECT_THAT([&] { ApplyParamsYaml(p, "loop_search_maximum_distance: [1, 2]\n", "test.yaml"); },
+              ThrowsMessage<InputError>(HasSubstr("must be a scalar")));
+  EXPECT_THAT([&] { ApplyParamsYaml(p, "solver_plugin: solver_plugins::G2oSolver\n", "test.yaml"); },
+              ThrowsMessage<InputError>(HasSubstr("is not supported")));
   // A choice that names none is reported after the last key, as the first value out of range in table order.
-  EXPECT_EQ(ErrorOf(p, "ceres_loss_function: SoftL1\nresolution: -1\n"),
+  EXPECT_EQ(ErrorMessageOf([&] { ApplyParamsYaml(p, "ceres_loss_function: SoftL1\nresolution: -1\n", "test.yaml"); }),
             "test.yaml: mapper parameter resolution = -1 is out of range: must be > 0");
-  EXPECT_EQ(ErrorOf(p, "ceres_loss_function: SoftL1\n"),
+  EXPECT_EQ(ErrorMessageOf([&] { ApplyParamsYaml(p, "ceres_loss_function: SoftL1\n", "test.yaml"); }),
             "test.yaml: mapper parameter ceres_loss_function = 'SoftL1' is out of range: must be None, HuberLoss or "
             "CauchyLoss");
-  EXPECT_THAT(ErrorOf(p, "a: [\n"), HasSubstr("test.yaml:"));
+  EXPECT_THAT([&] { ApplyParamsYaml(p, "a: [\n", "test.yaml"); }, ThrowsMessage<InputError>(HasSubstr("test.yaml:")));
   EXPECT_EQ(p, before);  // nothing applied on error
 }
 
 TEST(ParamsYaml, KeysThatAreNotTextAreInputErrorsAndARepeatedNodeKeyIsRead) {
   MapperParams p;
-  EXPECT_EQ(ErrorOf(p, "{a: 1}: 2\n"), "test.yaml:1: a parameter name must be plain text, not a YAML map");
-  EXPECT_EQ(ErrorOf(p, "[x]:\n  ros__parameters: {}\n"),
+  EXPECT_EQ(ErrorMessageOf([&] { ApplyParamsYaml(p, "{a: 1}: 2\n", "test.yaml"); }),
+            "test.yaml:1: a parameter name must be plain text, not a YAML map");
+  EXPECT_EQ(ErrorMessageOf([&] { ApplyParamsYaml(p, "[x]:\n  ros__parameters: {}\n", "test.yaml"); }),
             "test.yaml:1: a node name must be plain text, not a YAML sequence");
   // The node key written twice: the entry that holds ros__parameters is read, whichever comes
   // first (a lookup by key would take the first and find no ros__parameters in it).
@@ -97,7 +97,7 @@ TEST(ParamsYaml, KeysThatAreNotTextAreInputErrorsAndARepeatedNodeKeyIsRead) {
       "slam_toolbox:\n"
       "  ros__parameters:\n"
       "    loop_search_maximum_distance: 3.5\n";
-  EXPECT_EQ(ErrorOf(p, twice), "");
+  EXPECT_NO_THROW(ApplyParamsYaml(p, twice, "test.yaml"));
   EXPECT_EQ(p.loop_search_maximum_distance, 3.5);
 }
 

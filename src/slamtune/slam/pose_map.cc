@@ -45,11 +45,7 @@ io::MapImage MapFromPoses(const io::LaserLog& log, const std::vector<io::TimedPo
   if (scans.empty()) {
     throw InputError(log.path, 0, "no scan of the log has a pose in the trajectory (timestamps differ)");
   }
-  OccupancyGridOptions grid;
-  grid.resolution = params.resolution;
-  grid.min_pass_through = params.min_pass_through;
-  grid.occupancy_threshold = params.occupancy_threshold;
-  return OccupancyGrid::FromScans(std::span<const LaserScan>(scans), grid).ToMapImage();
+  return OccupancyGrid::FromScans(std::span<const LaserScan>(scans), GridOptionsOf(params)).ToMapImage();
 }
 
 }  // namespace slamtune::slam

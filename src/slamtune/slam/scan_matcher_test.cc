@@ -16,6 +16,7 @@ namespace slamtune::slam {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 ScanMatcherOptions SequentialOptions() { return {}; }  // slam_karto defaults (§4.1 first row)
 
@@ -75,41 +76,36 @@ void ExpectIdentical(const MatchResult& a, const MatchResult& b) {
 }
 
 TEST(ScanMatcherOptions, ValidateNamesFieldValueAndRule) {
-  auto message = [](ScanMatcherOptions o) -> std::string {
-    try {
-      o.Validate();
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
   ScanMatcherOptions o;
-  EXPECT_EQ(message(o), "");
-  EXPECT_EQ(message(LoopOptions()), "");
-  EXPECT_EQ(message(ToolboxOptions()), "");
+  EXPECT_NO_THROW(o.Validate());
+  EXPECT_NO_THROW(LoopOptions().Validate());
+  EXPECT_NO_THROW(ToolboxOptions().Validate());
   o.search_dimension = 0.31;  // 31 cells: odd
-  EXPECT_THAT(message(o), HasSubstr("search_dimension / search_resolution = 0.31 / 0.01"));
-  EXPECT_THAT(message(o), HasSubstr("even integer"));
+  EXPECT_THAT([&] { o.Validate(); },
+              ThrowsMessage<InputError>(HasSubstr("search_dimension / search_resolution = 0.31 / 0.01")));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("even integer")));
   o.search_dimension = 0.305;  // not an integer
-  EXPECT_THAT(message(o), HasSubstr("even integer"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("even integer")));
   o = {};
   o.smear_deviation = 0.001;
-  EXPECT_THAT(message(o), HasSubstr("smear_deviation = 0.001: must lie in [0.5, 10]"));
+  EXPECT_THAT([&] { o.Validate(); },
+              ThrowsMessage<InputError>(HasSubstr("smear_deviation = 0.001: must lie in [0.5, 10]")));
   o = {};
   o.search_resolution = -0.01;
-  EXPECT_THAT(message(o), HasSubstr("search_resolution = -0.01: must be a positive"));
+  EXPECT_THAT([&] { o.Validate(); },
+              ThrowsMessage<InputError>(HasSubstr("search_resolution = -0.01: must be a positive")));
   o = {};
   o.threads = 0;
-  EXPECT_THAT(message(o), HasSubstr("threads = 0"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("threads = 0")));
   o = {};
   o.minimum_angle_penalty = 1.5;
-  EXPECT_THAT(message(o), HasSubstr("minimum_angle_penalty = 1.5"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("minimum_angle_penalty = 1.5")));
   o = {};
   o.search_resolution = 0.001;
   o.search_dimension = 0.3;
   o.smear_deviation = 0.003;
   o.range_threshold = 80;
-  EXPECT_THAT(message(o), HasSubstr("more than 2^31"));
+  EXPECT_THAT([&] { o.Validate(); }, ThrowsMessage<InputError>(HasSubstr("more than 2^31")));
   EXPECT_THROW(ScanMatcher{o}, InputError);
 }
 

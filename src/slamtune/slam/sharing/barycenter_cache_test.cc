@@ -2,21 +2,17 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <thread>
 #include <vector>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/same_bits.h"
 #include "slamtune/slam/testing/synthetic_room.h"
 
 namespace slamtune::slam {
 namespace {
 
-bool SameBits(const Pose2& a, const Pose2& b) {
-  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
-         std::bit_cast<std::uint64_t>(a.theta) == std::bit_cast<std::uint64_t>(b.theta);
-}
+using slamtune::testing::SameBits;
 
 // The barycentre a scan computes itself at `pose` (no cache).
 Pose2 OwnBarycenter(LaserScan scan, const Pose2& pose) {

@@ -2,17 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <thread>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/common/testing/same_bits.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 
 namespace slamtune::slam {
 namespace {
+
+using slamtune::testing::SameBits;
 
 // A 6 m square room seen from (x, y): ranges of 181 beams over 180 degrees.
 LaserScan RoomScan(const Pose2& pose, int log_index) {
@@ -42,14 +44,11 @@ LaserScan RoomScan(const Pose2& pose, int log_index) {
   return scan;
 }
 
+// Mean, response and covariance, bit for bit.
 bool SameBits(const MatchResult& a, const MatchResult& b) {
-  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
-  if (bits(a.mean.x) != bits(b.mean.x) || bits(a.mean.y) != bits(b.mean.y) ||
-      bits(a.mean.theta) != bits(b.mean.theta) || bits(a.response) != bits(b.response)) {
-    return false;
-  }
+  if (!SameBits(a.mean, b.mean) || !SameBits(a.response, b.response)) return false;
   for (int k = 0; k < 9; ++k) {
-    if (bits(a.covariance.data()[k]) != bits(b.covariance.data()[k])) return false;
+    if (!SameBits(a.covariance.data()[k], b.covariance.data()[k])) return false;
   }
   return true;
 }

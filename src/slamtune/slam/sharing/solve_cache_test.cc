@@ -6,8 +6,12 @@
 #include <cmath>
 #include <vector>
 
+#include "slamtune/common/testing/same_bits.h"
+
 namespace slamtune::slam {
 namespace {
+
+using slamtune::testing::SameBits;
 
 // A square loop of four poses with drifted initial values: the solve moves them.
 struct Graph {
@@ -25,18 +29,6 @@ struct Graph {
     }
   }
 };
-
-bool SameBits(const std::vector<Pose2>& a, const std::vector<Pose2>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (std::bit_cast<std::uint64_t>(a[k].x) != std::bit_cast<std::uint64_t>(b[k].x) ||
-        std::bit_cast<std::uint64_t>(a[k].y) != std::bit_cast<std::uint64_t>(b[k].y) ||
-        std::bit_cast<std::uint64_t>(a[k].theta) != std::bit_cast<std::uint64_t>(b[k].theta)) {
-      return false;
-    }
-  }
-  return true;
-}
 
 TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
   const auto solver = MakeSolver(SolverKind::kSpa);
