@@ -135,8 +135,9 @@ int main(int argc, char** argv) {
                        {"wall_no_skip_s", m.wall_no_skip_s},
                        {"skip_speedup", m.wall_no_skip_s / m.wall_s}});
       } else {
-        std::printf("%-14s %6d scans %5d nodes %3d loops  %8.2f s wall  %8.1f scans/s  %7.1f nodes/s  real-time x%.1f\n",
-                    m.name.c_str(), m.scans, m.nodes, m.loops, m.wall_s, scans_per_s, nodes_per_s, rtf);
+        std::printf(
+            "%-14s %6d scans %5d nodes %3d loops  %8.2f s wall  %8.1f scans/s  %7.1f nodes/s  real-time x%.1f\n",
+            m.name.c_str(), m.scans, m.nodes, m.loops, m.wall_s, scans_per_s, nodes_per_s, rtf);
         std::printf("%-14s near chains: %d of %d matches skipped; every near chain matched: %.2f s, so x%.2f "
                     "from skipping (medians of %d, same trajectory)\n",
                     "", m.near_chain_skipped, m.near_chain_matches, m.wall_no_skip_s, m.wall_no_skip_s / m.wall_s,

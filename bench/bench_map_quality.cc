@@ -69,8 +69,8 @@ void BM_MapQualityFullOffice(benchmark::State& state) {
     benchmark::DoNotOptimize(corner_pixels);
   }
   state.counters["corner_pixels"] = static_cast<double>(corner_pixels);
-  state.counters["Mcells/s"] =
-      benchmark::Counter(static_cast<double>(map.pixels.size()) * state.iterations() / 1e6, benchmark::Counter::kIsRate);
+  state.counters["Mcells/s"] = benchmark::Counter(static_cast<double>(map.pixels.size()) * state.iterations() / 1e6,
+                                                  benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_MapQualityFullOffice)->Arg(500)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond);
 

@@ -124,7 +124,8 @@ int Run(const std::vector<std::string>& problems, unsigned seeds, double generat
   std::vector<DtlzCase> cases;
   for (const std::string& name : problems) {
     const auto it = std::find_if(kCases.begin(), kCases.end(), [&](const DtlzCase& c) { return c.name == name; });
-    if (it == kCases.end()) throw slamtune::InputError("--problems: unknown problem '" + name + "', expected dtlz1..dtlz4");
+    if (it == kCases.end())
+      throw slamtune::InputError("--problems: unknown problem '" + name + "', expected dtlz1..dtlz4");
     cases.push_back(*it);
   }
   const ReferencePoints directions = slamtune::nsga3::DasDennisPoints(kObjectives, kDivisions);

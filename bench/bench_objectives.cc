@@ -57,7 +57,8 @@ std::vector<Figure> Figures() {
       {"occupied / known", [](const EvaluationRecord& r) { return r.occupied_ratio_known; }},
       {"occupied cells", [](const EvaluationRecord& r) { return r.occupied_cells; }},
       {"corner clusters", [](const EvaluationRecord& r) { return r.corners; }},
-      {"hits in free / hits", [](const EvaluationRecord& r) { return r.hits > 0 ? r.hits_in_free_cells / r.hits : 1.0; }},
+      {"hits in free / hits",
+       [](const EvaluationRecord& r) { return r.hits > 0 ? r.hits_in_free_cells / r.hits : 1.0; }},
       {"n_w (drawn wall cells)", [](const EvaluationRecord& r) { return r.drawn_wall_cells; }},
   };
 }

@@ -201,7 +201,8 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
   std::printf("peak RSS %s\n", ProcStatus("VmHWM").c_str());
   const auto* best = result.Find("recommended");
   if (best != nullptr) {
-    std::printf("recommended: r %.4g g %.0f, %d loop closures\n", best->record.params.at("loop_search_maximum_distance"),
+    std::printf("recommended: r %.4g g %.0f, %d loop closures\n",
+                best->record.params.at("loop_search_maximum_distance"),
                 best->record.params.at("loop_match_minimum_chain_size"), best->record.loop_closures);
   }
   return 0;

@@ -21,7 +21,9 @@ struct InfoArgs {
 };
 
 // JSON numbers cannot be infinite: an infinite value (no no-return value) is written as null.
-nlohmann::ordered_json Number(double value) { return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr); }
+nlohmann::ordered_json Number(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
 
 nlohmann::ordered_json ToJson(const io::LogSummary& s) {
   return {

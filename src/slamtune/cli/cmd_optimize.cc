@@ -63,11 +63,18 @@ std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
 }
 
 nlohmann::json InvocationJson(const OptimizeArgs& a) {
-  return {{"inputs", a.inputs.ToJson()},  {"space", a.space_file}, {"vary", a.vary}, {"fix", a.fix},
+  return {{"inputs", a.inputs.ToJson()},
+          {"space", a.space_file},
+          {"vary", a.vary},
+          {"fix", a.fix},
           {"population", a.population},
-          {"generations", a.generations}, {"divisions", a.divisions}, {"seed", a.seed},
-          {"objectives", a.objectives}, {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
-          {"settling", {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
+          {"generations", a.generations},
+          {"divisions", a.divisions},
+          {"seed", a.seed},
+          {"objectives", a.objectives},
+          {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
+          {"settling",
+           {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
 }
 
 // The recorded inputs that are the files named now must still have their recorded content
@@ -409,7 +416,9 @@ const SubcommandRegistrar kRegistrar{{
     40,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<OptimizeArgs>();
-      app.add_option("LOG", args->inputs.log, "CARMEN log (.clf/.log, plain or gzip) or a ROS 2 / ROS 1 recording (.mcap, .db3, bag folder, .bag); none: the built-in world");
+      app.add_option("LOG", args->inputs.log,
+                     "CARMEN log (.clf/.log, plain or gzip) or a ROS 2 / ROS 1 recording (.mcap, .db3, bag folder, "
+                     ".bag); none: the built-in world");
       ResultNeutralOptions& neutral = args->result_neutral;
       neutral.Add(app.add_option("--out", args->out, "output folder (created; must not hold another optimisation)"));
       neutral.Add(app.add_option("--resume", args->resume, "continue an interrupted optimisation in this folder"));
@@ -422,7 +431,8 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--vary", args->vary,
                      "search this parameter, NAME=MIN:MAX[:STEP] (repeatable; NAME a ROS name or r, g, p, q; an "
                      "integer parameter is searched by whole numbers): the search space without a YAML file");
-      app.add_option("--fix", args->fix, "hold a parameter at a value while --vary searches others, NAME=VALUE (repeatable)");
+      app.add_option("--fix", args->fix,
+                     "hold a parameter at a value while --vary searches others, NAME=VALUE (repeatable)");
       app.add_option("--objectives", args->objectives,
                      "what the map is judged by: 'occupied' (unbacked hits u_h, corner pixels n_c and occupied "
                      "cells n_o, which also sees a corridor mapped twice side by side), 'drawn' (u_h, n_c and the "
@@ -440,7 +450,8 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--stop-window", args->settling.window, "... for this many generations in a row")
           ->capture_default_str();
       app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
-      app.add_option("--generations", args->generations, "the most generations (default 60; 8 on the built-in world); the run stops earlier once the "
+      app.add_option("--generations", args->generations,
+                     "the most generations (default 60; 8 on the built-in world); the run stops earlier once the "
                      "answer has settled, unless --no-early-stop");
       app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
           ->capture_default_str();
@@ -453,7 +464,7 @@ const SubcommandRegistrar kRegistrar{{
       app.footer(
           "Examples:\n"
           "  slamtune optimize --out runs/office-jump --world office-jump   # a built-in world whose defaults fail\n"
-          "  slamtune optimize drive.mcap --out runs/drive                  # your recording; the space is chosen for you\n"
+          "  slamtune optimize drive.mcap --out runs/drive                  # your recording; space chosen for you\n"
           "  slamtune optimize drive.mcap --out runs/drive2 --params my_slam_toolbox.yaml\n"
           "  slamtune optimize intel.clf.gz --out runs/intel --vary r=2:8:0.01 --vary g=4:20 --fix p=0.7\n"
           "  slamtune optimize aces.clf.gz --out runs/aces --space front-end --relations aces.relations\n"

@@ -90,7 +90,9 @@ void WriteLoopClosuresCsv(const std::string& path, const slam::RunSummary& s) {
 // One row per sequential match (slam/front_end_evidence.h), `suspect` by the run's median response.
 void WriteFrontEndCsv(const std::string& path, const std::vector<slam::SequentialMatchStep>& steps,
                       const slam::FrontEndEvidence& evidence) {
-  std::string csv = "log_index,time,response,dx,dy,x,y,dtheta,sigma_xy,sigma_minor,at_window_edge,at_heading_edge,suspect,degenerate\n";
+  std::string csv =
+      "log_index,time,response,dx,dy,x,y,dtheta,sigma_xy,sigma_minor,at_window_edge,at_heading_edge,suspect,"
+      "degenerate\n";
   for (const slam::SequentialMatchStep& s : steps) {
     csv += fmt::format("{},{:.6f},{:.6g},{:.6g},{:.6g},{:.4f},{:.4f},{:.6g},{:.6g},{:.6g},{},{},{},{}\n", s.log_index,
                        s.time, s.response, s.dx, s.dy, s.x, s.y, s.dtheta, s.sigma_xy, s.sigma_minor,
@@ -278,10 +280,10 @@ std::string AddGtError(const std::vector<io::TimedPose>& trajectory, const RunIn
 
 void PrintRunSummary(const slam::RunSummary& summary, const std::string& gt_line, const std::string& out,
                      const slam::FrontEndEvidence& front_end) {
-  const std::string dropped =
-      summary.scans_wrong_reading_count > 0
-          ? fmt::format(", {} scans dropped (reading count differs from the first scan's)", summary.scans_wrong_reading_count)
-          : "";
+  const std::string dropped = summary.scans_wrong_reading_count > 0
+                                  ? fmt::format(", {} scans dropped (reading count differs from the first scan's)",
+                                                summary.scans_wrong_reading_count)
+                                  : "";
   std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s; wrote %s\n", summary.scans_read,
               summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, dropped.c_str(),
               gt_line.c_str(), out.c_str());
@@ -350,7 +352,8 @@ const SubcommandRegistrar kRun(Subcommand{
           "Examples:\n"
           "  slamtune run drive.mcap --out runs/drive_defaults\n"
           "  slamtune run drive.mcap --out runs/drive_best --params runs/drive/best.yaml\n"
-          "  slamtune run intel.clf.gz --relations intel.relations --set loop_search_maximum_distance=6 --out runs/intel_r6\n"
+          "  slamtune run intel.clf.gz --relations intel.relations --set loop_search_maximum_distance=6 --out "
+          "runs/intel_r6\n"
           "  slamtune run --world corridor-long --out runs/corridor   # a built-in world, error against its truth");
       return [args]() -> int { return Run(*args); };
     }});

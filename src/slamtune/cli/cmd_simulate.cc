@@ -36,7 +36,8 @@ int ListWorlds() {
 
 int Run(const SimulateState& state) {
   if (state.list) return ListWorlds();
-  if (state.out.empty()) throw InputError("--out: required (the folder to write NAME.clf, NAME.relations, NAME.truth.txt)");
+  if (state.out.empty())
+    throw InputError("--out: required (the folder to write NAME.clf, NAME.relations, NAME.truth.txt)");
   sim::SimulationOptions options = state.options;
   if (!state.laser_offset.empty()) {
     options.laser_offset = Pose2{state.laser_offset[0], state.laser_offset[1], state.laser_offset[2]};

@@ -78,7 +78,8 @@ std::vector<std::string> Header(const Target& target, const TuningInputs& inputs
 std::string Summary(const optim::OptimizeResult& result) {
   const auto* best = result.Find("recommended");
   std::string out;
-  for (const auto& [name, value] : best->record.params) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", name, value);
+  for (const auto& [name, value] : best->record.params)
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", name, value);
   return out;
 }
 
@@ -104,7 +105,8 @@ RecommendationFiles WriteRecommendationFiles(const std::string& dir, const Tunin
     if (!files.not_written.empty()) {
       std::string names;
       for (const std::string& n : files.not_written) names += (names.empty() ? "" : ", ") + n;
-      const std::string note = fmt::format("{} has no parameter for {}: the node keeps its own", slam::RosNodeName(target.node), names);
+      const std::string note =
+          fmt::format("{} has no parameter for {}: the node keeps its own", slam::RosNodeName(target.node), names);
       files.full = "# note: " + note + "\n" + files.full;
       out.warnings.push_back(fmt::format("{}: {}", target.full, note));
     }
@@ -133,9 +135,11 @@ RecommendationFiles WriteRecommendationFiles(const std::string& dir, const Tunin
 
 std::vector<std::string> HowToLoad(const std::string& dir) {
   const std::string d = std::filesystem::absolute(dir).string();
-  return {fmt::format("slam_toolbox (ROS 2): ros2 launch slam_toolbox online_async_launch.py slam_params_file:={}/best.yaml", d),
-          fmt::format("  or merge {}/best_change.yaml into your own file", d),
-          fmt::format("slam_karto (ROS 1):   rosparam load {}/best_slam_karto.yaml /slam_karto  (before starting it)", d)};
+  return {
+      fmt::format(
+          "slam_toolbox (ROS 2): ros2 launch slam_toolbox online_async_launch.py slam_params_file:={}/best.yaml", d),
+      fmt::format("  or merge {}/best_change.yaml into your own file", d),
+      fmt::format("slam_karto (ROS 1):   rosparam load {}/best_slam_karto.yaml /slam_karto  (before starting it)", d)};
 }
 
 }  // namespace slamtune::cli

@@ -214,7 +214,8 @@ int ServeAsWorker(const optim::MpiWorld& world) {
     run.no_share = setup.at("no_share").get<bool>();
     run.share_mb = setup.at("share_mb").get<std::size_t>();
     auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(), run);
-    optim::DrawWall(*context, setup.at("draw_wall").get<bool>() ? optim::WallDrawing::kDraw : optim::WallDrawing::kSkip);
+    optim::DrawWall(*context,
+                    setup.at("draw_wall").get<bool>() ? optim::WallDrawing::kDraw : optim::WallDrawing::kSkip);
     return EvaluateWith(std::move(context));
   });
   return 0;

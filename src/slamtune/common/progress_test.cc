@@ -25,7 +25,9 @@ std::string Capture(Progress::Mode mode, double interval) {
   return out;
 }
 
-TEST(Progress, PlainModeThrottlesButForcedLinesPass) { EXPECT_EQ(Capture(Progress::Mode::kPlain, 100), "a\nc\ndone\n"); }
+TEST(Progress, PlainModeThrottlesButForcedLinesPass) {
+  EXPECT_EQ(Capture(Progress::Mode::kPlain, 100), "a\nc\ndone\n");
+}
 
 TEST(Progress, LiveModeRewritesOneLine) {
   const std::string out = Capture(Progress::Mode::kLive, 100);

@@ -12,7 +12,8 @@ TEST(SignalNoticeDeathTest, SigintPrintsTheLineAndEndsBySigint) {
         SignalNotice notice("continue with: slamtune optimize --resume out");
         raise(SIGINT);
       },
-      testing::KilledBySignal(SIGINT), "^slamtune: stopped by SIGINT; continue with: slamtune optimize --resume out\n$");
+      testing::KilledBySignal(SIGINT),
+      "^slamtune: stopped by SIGINT; continue with: slamtune optimize --resume out\n$");
 }
 
 TEST(SignalNoticeDeathTest, SigtermPrintsTheLineAndEndsBySigterm) {

@@ -286,11 +286,11 @@ LaserLog Read(LineReader& reader, const LogReadOptions& options) {
   log.lines_read = reader.line_number();
   if (!any_content) throw InputError(log.path, 0, "empty file (no records)");
   if (log.scans.empty()) {
-    throw InputError(log.path, 0,
-                     "no laser scans (FLASER, ROBOTLASER1 or RAWLASER1..4) in " + std::to_string(log.lines_read) +
-                         " lines" +
-                         (log.skipped_records > 0 ? " (" + std::to_string(log.skipped_records) + " skipped as malformed)"
-                                                  : std::string()));
+    throw InputError(
+        log.path, 0,
+        "no laser scans (FLASER, ROBOTLASER1 or RAWLASER1..4) in " + std::to_string(log.lines_read) + " lines" +
+            (log.skipped_records > 0 ? " (" + std::to_string(log.skipped_records) + " skipped as malformed)"
+                                     : std::string()));
   }
   PlaceRawLaserScans(&st);
   ApplyNoReturnRule(options, &st);

@@ -22,10 +22,10 @@
 //       pose is interpolated linearly in ipc time between the ODOM records that bracket the
 //       scan (heading along the shorter arc). Scans before the first or after the last ODOM
 //       have no pose: they are left out and counted (LaserLog::scans_without_odometry, printed
-//       with the log's input description), never clamped; laser pose = robot (+) offset, the offset taken from the PARAMs
-//       robot_<L>_offset, robot_<L>_side_offset, robot_<L>_angular_offset (m, m, rad; zero when
-//       absent) with L = frontlaser, rearlaser, laser3, laser4 for RAWLASER1..4. A log with
-//       RAWLASER scans and no ODOM record is an error.
+//       with the log's input description), never clamped; laser pose = robot (+) offset, the offset taken from the
+//       PARAMs robot_<L>_offset, robot_<L>_side_offset, robot_<L>_angular_offset (m, m, rad; zero when absent) with L =
+//       frontlaser, rearlaser, laser3, laser4 for RAWLASER1..4. A log with RAWLASER scans and no ODOM record is an
+//       error.
 //   ODOM x y theta tv rv accel ipc host logger
 //   PARAM name value host time   (value may hold spaces; stored in LaserLog::params, last wins)
 //   `#` comment lines and empty lines. Any other record name (RLASER, TRUEPOS, SYNC, NMEA-GGA,

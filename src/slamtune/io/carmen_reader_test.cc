@@ -170,7 +170,8 @@ TEST(CarmenReaderTest, RawLaserWithoutOdometryIsAnError) {
 
 TEST(CarmenReaderTest, RawLaserScansOutsideTheOdometrySpanAreCountedNotClamped) {
   const std::string raw = "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 ";
-  std::string text = raw + "9.5 h 9.5\nODOM 0 0 0 0 0 0 10.0 h 10\n" + raw + "10.5 h 10.5\nODOM 1 0 0 0 0 0 11.0 h 11\n";
+  std::string text =
+      raw + "9.5 h 9.5\nODOM 0 0 0 0 0 0 10.0 h 10\n" + raw + "10.5 h 10.5\nODOM 1 0 0 0 0 0 11.0 h 11\n";
   for (int k = 0; k < 297; ++k) text += raw + std::to_string(12 + k) + " h 1\n";  // the log's ODOM stopped
   const LaserLog log = ReadText(text);
   ASSERT_EQ(log.scans.size(), 1u);
@@ -419,7 +420,8 @@ TEST(CarmenReaderTest, UnreadablePathIsAnError) {
 
 TEST(CarmenReaderTest, GzipAndPlainGiveIdenticalScans) {
   std::string text = "PARAM robot_frontlaser_offset 0.0 nohost 0\nODOM 0 0 0 0 0 0 0.5 h 0.5\n";
-  for (int i = 0; i < 3000; ++i) text += Flaser(180, 1.0 + 0.001 * i, {0.01 * i, 0, 0.001 * i}, {0.01 * i, 0, 0.001 * i}, i);
+  for (int i = 0; i < 3000; ++i)
+    text += Flaser(180, 1.0 + 0.001 * i, {0.01 * i, 0, 0.001 * i}, {0.01 * i, 0, 0.001 * i}, i);
   const std::string plain = TempPath("plain.clf.gz");  // names do not decide the format
   std::ofstream(plain) << text;
   const std::string gz = WriteGzip("compressed.clf", text);
@@ -438,7 +440,8 @@ TEST(CarmenReaderTest, GzipAndPlainGiveIdenticalScans) {
   EXPECT_EQ(a.record_counts, b.record_counts);
   // Concatenated gzip members read as one stream.
   const std::string two = TempPath("two_members.gz");
-  std::ofstream(two, std::ios::binary) << ReadBytes(WriteGzip("m1.gz", Flaser(1.0))) << ReadBytes(WriteGzip("m2.gz", Flaser(2.0)));
+  std::ofstream(two, std::ios::binary) << ReadBytes(WriteGzip("m1.gz", Flaser(1.0)))
+                                       << ReadBytes(WriteGzip("m2.gz", Flaser(2.0)));
   EXPECT_EQ(ReadCarmenLog(two).scans.size(), 2u);
 }
 

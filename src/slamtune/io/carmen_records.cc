@@ -91,8 +91,9 @@ void CheckGeometry(const Fields& f, double fov, std::size_t n, const LaserScanRe
   const double steps = scan.angle_increment * static_cast<double>(n - 1);
   const double tolerance = kFovTolerance + 0.01 * steps;
   if (fov < steps - tolerance || fov > steps + scan.angle_increment + tolerance) {
-    throw CarmenRecordError(fmt::format("{} {} rad contradicts {} readings at angular_res {} rad (they span {:.6f} rad)",
-                                        Where(f, 3, "fov"), f[3], n, f[4], steps));
+    throw CarmenRecordError(
+        fmt::format("{} {} rad contradicts {} readings at angular_res {} rad (they span {:.6f} rad)",
+                    Where(f, 3, "fov"), f[3], n, f[4], steps));
   }
 }
 
@@ -110,7 +111,8 @@ std::size_t ParseLaserHead(const Fields& f, std::size_t tail, LaserScanRecord* s
   const double fov = Finite(f, 3, "fov");
   scan->angle_increment = Finite(f, 4, "angular_res");
   scan->max_range = Finite(f, 5, "max_range");
-  if (scan->max_range <= 0) throw CarmenRecordError(Where(f, 5, "max_range") + " must be positive: " + std::string(f[5]));
+  if (scan->max_range <= 0)
+    throw CarmenRecordError(Where(f, 5, "max_range") + " must be positive: " + std::string(f[5]));
   Number(f, 6, "accuracy");
   Number(f, 7, "remission_mode");
   const std::size_t n = Count(f, 8, "num_readings");

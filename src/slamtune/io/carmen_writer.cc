@@ -38,7 +38,8 @@ bool HasSpace(const std::string& text) {
 }
 
 void RequireDecimals(const char* field, int value, int max) {
-  if (value < 0 || value > max) throw InputError(fmt::format("carmen writer {} = {}: must be in [0, {}]", field, value, max));
+  if (value < 0 || value > max)
+    throw InputError(fmt::format("carmen writer {} = {}: must be in [0, {}]", field, value, max));
 }
 
 void RequireFinitePose(const Pose2& p, const char* what, std::size_t index) {
@@ -51,7 +52,8 @@ void RequireFinitePose(const Pose2& p, const char* what, std::size_t index) {
 void CheckWritable(const LaserLog& log) {
   for (const auto& [name, value] : log.params) {
     if (name.empty() || value.empty() || HasSpace(name) || HasSpace(value)) {
-      throw InputError(fmt::format("cannot write PARAM '{}' = '{}': name and value must be non-empty words", name, value));
+      throw InputError(
+          fmt::format("cannot write PARAM '{}' = '{}': name and value must be non-empty words", name, value));
     }
   }
   for (std::size_t i = 0; i < log.odometry.size(); ++i) {
@@ -72,7 +74,8 @@ void CheckWritable(const LaserLog& log) {
     if (s.kind == RecordKind::kFlaser) {
       double angle_min = 0.0, increment = 0.0;
       FlaserBeamGeometry(s.ranges.size(), &angle_min, &increment);
-      if (std::fabs(s.angle_min - angle_min) > kAngleTolerance || std::fabs(s.angle_increment - increment) > kAngleTolerance) {
+      if (std::fabs(s.angle_min - angle_min) > kAngleTolerance ||
+          std::fabs(s.angle_increment - increment) > kAngleTolerance) {
         throw InputError(fmt::format(
             "cannot write laser scan {} as FLASER: its beams (first {} rad, step {} rad) are not the FLASER "
             "convention for {} readings (first {} rad, step {} rad); give it another kind to write ROBOTLASER1",
@@ -192,7 +195,8 @@ CarmenWriteSummary WriteChecked(std::ostream& out, const LaserLog& log, const Ca
       if (options.exact_ranges) {
         for (double range : r.ranges) fmt::format_to(std::back_inserter(buffer), " {}", range);
       } else {
-        for (double range : r.ranges) fmt::format_to(std::back_inserter(buffer), " {:.{}f}", range, options.range_decimals);
+        for (double range : r.ranges)
+          fmt::format_to(std::back_inserter(buffer), " {:.{}f}", range, options.range_decimals);
       }
       if (!flaser) buffer.append(std::string_view(" 0"));  // no remissions
       AppendPose(buffer, r.laser_pose, options.pose_decimals);

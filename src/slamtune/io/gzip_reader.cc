@@ -90,8 +90,8 @@ std::size_t GzipReader::ReadInflated(char* dst, std::size_t n) {
     if (rc == Z_STREAM_END) {
       member_ended_ = true;
     } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
-      error_ = std::string("corrupt gzip stream (zlib: ") + (zs_.msg != nullptr ? zs_.msg : "error " + std::to_string(rc)) +
-               ")";
+      error_ = std::string("corrupt gzip stream (zlib: ") +
+               (zs_.msg != nullptr ? zs_.msg : "error " + std::to_string(rc)) + ")";
       done_ = true;  // bytes produced before the error are still returned; the next call ends
     }
     if (produced > 0) return produced;

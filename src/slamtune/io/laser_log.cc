@@ -34,7 +34,9 @@ std::string BeamGeometry::ToString() const {
                      angle_max() * kDeg, angle_increment * kDeg);
 }
 
-BeamGeometry GeometryOf(const LaserScanRecord& scan) { return {scan.ranges.size(), scan.angle_min, scan.angle_increment}; }
+BeamGeometry GeometryOf(const LaserScanRecord& scan) {
+  return {scan.ranges.size(), scan.angle_min, scan.angle_increment};
+}
 
 void RecordingReadOptions::Validate() const {
   if (!(max_odom_gap_s > 0.0 && max_odom_gap_s <= 60.0)) {

@@ -40,7 +40,8 @@ std::string Gzip(const std::string& text) {
 // Lines of varied length whose total is several times the 1 MiB read chunk.
 std::string ManyLines(std::size_t count) {
   std::string text;
-  for (std::size_t i = 0; i < count; ++i) text += std::string(i % 977, 'a' + static_cast<char>(i % 26)) + "|" + std::to_string(i) + "\n";
+  for (std::size_t i = 0; i < count; ++i)
+    text += std::string(i % 977, 'a' + static_cast<char>(i % 26)) + "|" + std::to_string(i) + "\n";
   return text;
 }
 

@@ -77,7 +77,8 @@ void CheckStamps(const std::vector<double>& stamps, const CheckOptions& o, Check
     if (stamps[k] > stamps[k - 1]) periods.push_back(stamps[k] - stamps[k - 1]);
   }
   const double period = Median(periods);
-  if (period > 0) report->facts.push_back(fmt::format("scan period: {:.4f} s median ({:.2f} Hz)", period, 1.0 / period));
+  if (period > 0)
+    report->facts.push_back(fmt::format("scan period: {:.4f} s median ({:.2f} Hz)", period, 1.0 / period));
   Occurrences gaps, back, duplicate;
   double longest = 0.0, largest_back = 0.0;
   for (std::size_t k = 1; k < stamps.size(); ++k) {
@@ -179,7 +180,8 @@ OdometryTrack TrackOf(const LaserLog& log) {
   if (log.odometry.size() >= 2) {
     t.records = log.odometry;
     t.velocities = !log.recording || log.recording->odometry_velocities;
-    t.source = log.recording ? (log.recording->odometry_velocities ? "Odometry messages" : "tf samples") : "ODOM records";
+    t.source =
+        log.recording ? (log.recording->odometry_velocities ? "Odometry messages" : "tf samples") : "ODOM records";
     return t;
   }
   for (const LaserScanRecord& s : log.scans) {
@@ -218,7 +220,8 @@ void CheckOdometry(const LaserLog& log, const CheckOptions& o, CheckReport* repo
     if (wrapped && std::min(std::fabs(a.pose.theta), std::fabs(b.pose.theta)) < kPi / 2) {
       wraps.Add(scan, b.ipc_time);
     } else if ((dt <= 0 && (d > 0.05 || turn > 0.05)) ||
-               (dt > 0 && ((d > 0.1 && d / dt > o.max_speed_mps) || (turn > 0.2 && turn / dt > o.max_turn_rate_rad_s)))) {
+               (dt > 0 &&
+                ((d > 0.1 && d / dt > o.max_speed_mps) || (turn > 0.2 && turn / dt > o.max_turn_rate_rad_s)))) {
       jumps.Add(scan, b.ipc_time);
     }
     if (track.source != "scan poses" && period > 0 && period < o.stall_s / 2 && dt > o.stall_s &&
@@ -236,7 +239,8 @@ void CheckOdometry(const LaserLog& log, const CheckOptions& o, CheckReport* repo
     } else {
       frozen_since = -1.0;
     }
-    const double forward = std::cos(a.pose.theta) * (b.pose.x - a.pose.x) + std::sin(a.pose.theta) * (b.pose.y - a.pose.y);
+    const double forward =
+        std::cos(a.pose.theta) * (b.pose.x - a.pose.x) + std::sin(a.pose.theta) * (b.pose.y - a.pose.y);
     if (std::fabs(v) > o.moving_speed_mps && std::fabs(forward) > 1e-3) {
       ++moving_steps;
       if ((forward > 0) != (v > 0)) mismatch.Add(scan, b.ipc_time);
@@ -270,14 +274,16 @@ void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
   if (!log.recording) return;
   const RecordingInfo& r = *log.recording;
   for (const RecordingInfo::Topic& t : r.topics) {
-    report->facts.push_back(fmt::format("topic: {} ({}), {} messages, {:.2f} Hz", t.name, t.type, t.messages, t.rate_hz));
+    report->facts.push_back(
+        fmt::format("topic: {} ({}), {} messages, {:.2f} Hz", t.name, t.type, t.messages, t.rate_hz));
   }
   for (const std::string& e : r.tf_edges) report->facts.push_back("tf: " + e);
   if (r.scans_unplaced > 0) {
-    Problem(report, ProblemKind::kTfMissing,
-            fmt::format("{} of {} scans have no odometry at their stamp and cannot be used (first: {})", r.scans_unplaced,
-                        r.scan_messages, r.unplaced_examples.empty() ? "-" : r.unplaced_examples.front()),
-            r.scans_unplaced);
+    Problem(
+        report, ProblemKind::kTfMissing,
+        fmt::format("{} of {} scans have no odometry at their stamp and cannot be used (first: {})", r.scans_unplaced,
+                    r.scan_messages, r.unplaced_examples.empty() ? "-" : r.unplaced_examples.front()),
+        r.scans_unplaced);
   }
   if (r.scans_malformed + r.messages_undecodable > 0) {
     Problem(report, ProblemKind::kMalformedMessages,
@@ -287,8 +293,8 @@ void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
   }
   if (r.dropped_tail_bytes > 0) {
     Problem(report, ProblemKind::kTruncatedRecording,
-            fmt::format("the recording ends in a corrupt or truncated part: {} bytes not read ({})", r.dropped_tail_bytes,
-                        r.dropped_tail_reason));
+            fmt::format("the recording ends in a corrupt or truncated part: {} bytes not read ({})",
+                        r.dropped_tail_bytes, r.dropped_tail_reason));
   }
   if (r.tf_parent_conflicts + r.tf_bad_rotations > 0) {
     report->facts.push_back(fmt::format("tf: {} transforms ignored (second parent), {} refused (bad rotation)",
@@ -468,11 +474,13 @@ std::string FormatCheckReport(const CheckReport& report) {
       for (std::size_t k = 0; k < p.scans.size(); ++k) {
         where += fmt::format("{}scan {} ({:.3f} s)", k ? ", " : "", p.scans[k], p.times_s[k]);
       }
-      out += fmt::format("  at {}{}\n", where, p.count > p.scans.size() ? fmt::format(" and {} more", p.count - p.scans.size()) : "");
+      out += fmt::format("  at {}{}\n", where,
+                         p.count > p.scans.size() ? fmt::format(" and {} more", p.count - p.scans.size()) : "");
     }
     kinds += (kinds.empty() ? "" : ", ") + std::string(ProblemKindName(p.kind));
   }
-  return out + fmt::format("verdict: {} problem{}: {}\n", report.problems.size(), report.problems.size() == 1 ? "" : "s", kinds);
+  return out + fmt::format("verdict: {} problem{}: {}\n", report.problems.size(),
+                           report.problems.size() == 1 ? "" : "s", kinds);
 }
 
 }  // namespace slamtune::io

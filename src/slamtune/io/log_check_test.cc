@@ -76,7 +76,8 @@ INSTANTIATE_TEST_SUITE_P(
                 [](LaserLog* log) { std::swap(log->scans[70].ipc_time, log->scans[71].ipc_time); }},
         Planted{"StampDuplicate", ProblemKind::kScanStampDuplicate,
                 [](LaserLog* log) { log->scans[80].ipc_time = log->scans[79].ipc_time; }},
-        Planted{"BeamChange", ProblemKind::kBeamGeometryChange, [](LaserLog* log) { log->scans[90].ranges.pop_back(); }},
+        Planted{"BeamChange", ProblemKind::kBeamGeometryChange,
+                [](LaserLog* log) { log->scans[90].ranges.pop_back(); }},
         Planted{"RangeMaxTooLow", ProblemKind::kRangeMaxTooLow, [](LaserLog* log) { log->scans[12].ranges[3] = 31.5; }},
         Planted{"RangeMaxTooHigh", ProblemKind::kRangeMaxTooHigh,
                 [](LaserLog* log) {
@@ -94,7 +95,8 @@ INSTANTIATE_TEST_SUITE_P(
                 [](LaserLog* log) { log->odometry.erase(log->odometry.begin() + 100, log->odometry.begin() + 130); }},
         Planted{"OdometryStallFrozen", ProblemKind::kOdometryStall,
                 [](LaserLog* log) {
-                  for (std::size_t k = 100; k < log->odometry.size(); ++k) log->odometry[k].pose.x = 5.0 + 0.05 * (k < 130 ? 0 : k - 130);
+                  for (std::size_t k = 100; k < log->odometry.size(); ++k)
+                    log->odometry[k].pose.x = 5.0 + 0.05 * (k < 130 ? 0 : k - 130);
                 }},
         Planted{"HeadingWrap", ProblemKind::kHeadingWrap,
                 [](LaserLog* log) {
@@ -102,7 +104,8 @@ INSTANTIATE_TEST_SUITE_P(
                   for (std::size_t k = 1; k < log->odometry.size(); ++k) {
                     const double heading = k < 150 ? 0.3 : -2.9;
                     const Pose2& before = log->odometry[k - 1].pose;
-                    log->odometry[k].pose = {before.x + 0.05 * std::cos(heading), before.y + 0.05 * std::sin(heading), heading};
+                    log->odometry[k].pose = {before.x + 0.05 * std::cos(heading), before.y + 0.05 * std::sin(heading),
+                                             heading};
                   }
                 }},
         Planted{"VelocityMismatch", ProblemKind::kOdometryVelocityMismatch,
@@ -130,7 +133,8 @@ TEST(LogCheck, RecordingFaultsAreFoundInTheFixtureBags) {
   const CheckReport gap = CheckRecording(kFixtures + "fault_tf_gap.mcap", {}, options);
   EXPECT_TRUE(gap.Has(ProblemKind::kTfMissing));
   EXPECT_TRUE(gap.Has(ProblemKind::kTfLate));
-  EXPECT_TRUE(CheckRecording(kFixtures + "fault_two_scan_topics.mcap", {}, options).Has(ProblemKind::kSeveralScanTopics));
+  EXPECT_TRUE(
+      CheckRecording(kFixtures + "fault_two_scan_topics.mcap", {}, options).Has(ProblemKind::kSeveralScanTopics));
   EXPECT_TRUE(CheckRecording(kFixtures + "fault_inf_nan.mcap", {}, options).Has(ProblemKind::kRangeMaxTooLow));
 }
 

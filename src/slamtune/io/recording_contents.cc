@@ -32,8 +32,9 @@ struct Reader {
     try {
       Decode(kind, topic, message);
     } catch (const InputError& e) {
-      const std::string where = fmt::format("{}: {}: {}: {}", message.location.file.empty() ? out->path : message.location.file,
-                                            message.location.ToString(), topic.name, e.what());
+      const std::string where =
+          fmt::format("{}: {}: {}: {}", message.location.file.empty() ? out->path : message.location.file,
+                      message.location.ToString(), topic.name, e.what());
       if (!lenient) throw InputError(where);
       (kind == RosMessageKind::kLaserScan ? out->scans_undecodable : out->messages_undecodable) += 1;
       if (out->undecodable_examples.size() < kMaxExamples) out->undecodable_examples.push_back(where);
@@ -54,9 +55,9 @@ struct Reader {
       }
       case RosMessageKind::kOdometry: {
         const OdometryMessage m = DecodeOdometry(message.data, topic.serialization);
-        out->odometry[topic.name].push_back({m.header.stamp_ns, message.log_time_ns, NormalizeFrameId(m.header.frame_id),
-                                             NormalizeFrameId(m.child_frame_id), ToRigid(m.position, m.orientation), m.linear.x,
-                                             m.angular.z});
+        out->odometry[topic.name].push_back({m.header.stamp_ns, message.log_time_ns,
+                                             NormalizeFrameId(m.header.frame_id), NormalizeFrameId(m.child_frame_id),
+                                             ToRigid(m.position, m.orientation), m.linear.x, m.angular.z});
         return;
       }
       case RosMessageKind::kTf: {
@@ -83,8 +84,9 @@ RecordingContents ReadRecordingContents(const std::string& path, bool lenient, s
   Reader reader{&contents, lenient, max_scan_messages};
   ContainerReadOptions options;
   options.lenient = lenient;
-  contents.container = ReadRosRecording(
-      path, options, [&](const RecordedTopic& topic, const RecordedMessage& message) { reader.Message(topic, message); });
+  contents.container = ReadRosRecording(path, options, [&](const RecordedTopic& topic, const RecordedMessage& message) {
+    reader.Message(topic, message);
+  });
   return contents;
 }
 

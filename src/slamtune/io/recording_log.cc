@@ -32,7 +32,8 @@ std::string TopicList(const RecordingContents& contents) {
 // --scan-topic, or the only LaserScan topic.
 void ChooseScanTopic(const RecordingContents& contents, const RecordingReadOptions& options, RecordingInfo* info) {
   std::vector<std::string> candidates;
-  for (const auto& [name, scans] : contents.scans) candidates.push_back(fmt::format("{} ({} messages)", name, scans.size()));
+  for (const auto& [name, scans] : contents.scans)
+    candidates.push_back(fmt::format("{} ({} messages)", name, scans.size()));
   if (!options.scan_topic.empty()) {
     if (contents.scans.count(options.scan_topic) == 0) {
       throw InputError(contents.path, 0,
@@ -82,7 +83,8 @@ void UseOdometryTopic(const RecordingContents& contents, const std::string& topi
   }
   source->tf = &source->topic_samples;
   source->samples = &samples;
-  info->odometry_source = fmt::format("topic {} (nav_msgs/Odometry, {} -> {})", topic, info->odom_frame, info->base_frame);
+  info->odometry_source =
+      fmt::format("topic {} (nav_msgs/Odometry, {} -> {})", topic, info->odom_frame, info->base_frame);
   info->odometry_rule = rule;
 }
 
@@ -124,9 +126,11 @@ void ChooseOdometry(const RecordingContents& contents, const RecordingReadOption
                                       options.base_frame.empty() ? "found in the tf tree" : "--base-frame");
     return;
   }
-  const std::string why = fmt::format("no {} -> {} transform in /tf", odom, base.empty() ? "base_footprint/base_link" : base);
+  const std::string why =
+      fmt::format("no {} -> {} transform in /tf", odom, base.empty() ? "base_footprint/base_link" : base);
   if (contents.odometry.size() == 1) {
-    UseOdometryTopic(contents, contents.odometry.begin()->first, options, why + "; the only Odometry topic", info, source);
+    UseOdometryTopic(contents, contents.odometry.begin()->first, options, why + "; the only Odometry topic", info,
+                     source);
     return;
   }
   throw InputError(contents.path, 0,
@@ -154,10 +158,11 @@ RigidTransform3 ChooseLaserOffset(const RecordingContents& contents, const Recor
   }
   const TfLookup lookup = contents.tf.Lookup(info->base_frame, info->laser_frame, first_stamp);
   if (!lookup.transform) {
-    throw InputError(contents.path, 0,
-                     fmt::format("no laser offset: {} -> {} not in the tf tree ({}); was /tf_static recorded? State the "
-                                 "mounting pose with --laser-offset X,Y,YAW",
-                                 info->base_frame, info->laser_frame, lookup.failure));
+    throw InputError(
+        contents.path, 0,
+        fmt::format("no laser offset: {} -> {} not in the tf tree ({}); was /tf_static recorded? State the "
+                    "mounting pose with --laser-offset X,Y,YAW",
+                    info->base_frame, info->laser_frame, lookup.failure));
   }
   std::vector<std::string> chain = contents.tf.PathToRoot(info->laser_frame);
   const auto base = std::find(chain.begin(), chain.end(), info->base_frame);
@@ -256,7 +261,8 @@ void FillTopics(const RecordingContents& contents, RecordingInfo* info) {
     auto it = contents.receive_times.find(t.name);
     if (it != contents.receive_times.end() && it->second.size() > 1) {
       const auto [lo, hi] = std::minmax_element(it->second.begin(), it->second.end());
-      if (*hi > *lo) topic.rate_hz = static_cast<double>(it->second.size() - 1) / (static_cast<double>(*hi - *lo) / 1e9);
+      if (*hi > *lo)
+        topic.rate_hz = static_cast<double>(it->second.size() - 1) / (static_cast<double>(*hi - *lo) / 1e9);
     }
     info->topics.push_back(topic);
   }

@@ -19,7 +19,9 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("slamtune_relations_test_" + std::to_string(::getpid()) + "_" + name)).string();
+  return (std::filesystem::temp_directory_path() /
+          ("slamtune_relations_test_" + std::to_string(::getpid()) + "_" + name))
+      .string();
 }
 
 std::string WriteText(const std::string& name, const std::string& text) {

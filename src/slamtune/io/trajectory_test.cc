@@ -19,7 +19,9 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("slamtune_trajectory_test_" + std::to_string(::getpid()) + "_" + name)).string();
+  return (std::filesystem::temp_directory_path() /
+          ("slamtune_trajectory_test_" + std::to_string(::getpid()) + "_" + name))
+      .string();
 }
 
 std::string WriteText(const std::string& name, const std::string& text) {
@@ -29,7 +31,8 @@ std::string WriteText(const std::string& name, const std::string& text) {
 }
 
 TEST(TrajectoryTest, ReadsPosesAndSkipsComments) {
-  const auto poses = ReadTrajectory(WriteText("ok", "# t x y theta\n  \n10.5 1 2 0.5\n\t# indented comment\n11 -1 -2 -0.5\n"));
+  const auto poses =
+      ReadTrajectory(WriteText("ok", "# t x y theta\n  \n10.5 1 2 0.5\n\t# indented comment\n11 -1 -2 -0.5\n"));
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[0].time, 10.5);
   EXPECT_EQ(poses[0].pose, (Pose2{1, 2, 0.5}));
@@ -90,7 +93,9 @@ TEST(TrajectoryTest, ByteOrderMarkDoesNotHideTheFirstPose) {
   EXPECT_EQ(poses[0].pose.x, 0.5);
 }
 
-TEST(TrajectoryTest, EmptyFileIsEmptyTrajectory) { EXPECT_TRUE(ReadTrajectory(WriteText("empty", "# only\n")).empty()); }
+TEST(TrajectoryTest, EmptyFileIsEmptyTrajectory) {
+  EXPECT_TRUE(ReadTrajectory(WriteText("empty", "# only\n")).empty());
+}
 
 TEST(TrajectoryTest, UnwritablePathThrows) {
   EXPECT_THROW(WriteTrajectory("/nonexistent/dir/t.txt", {{0, {}}}), InputError);

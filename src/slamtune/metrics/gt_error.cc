@@ -113,8 +113,10 @@ GtError ComputeGtError(const std::vector<io::TimedPose>& trajectory, const std::
   result.trans_sq_std = t2.std;
   result.rot_sq_mean = r2.mean;
   result.rot_sq_std = r2.std;
-  result.trans_max_m = trans.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::max_element(trans.begin(), trans.end());
-  result.rot_max_deg = rot.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::max_element(rot.begin(), rot.end());
+  result.trans_max_m =
+      trans.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::max_element(trans.begin(), trans.end());
+  result.rot_max_deg =
+      rot.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::max_element(rot.begin(), rot.end());
   return result;
 }
 

@@ -26,7 +26,8 @@ TrajectoryMap::TrajectoryMap(std::shared_ptr<const io::LaserLog> log, const slam
   options.Validate();
   if (log_->scans.empty()) return;
   const slam::OdometryFrame frame = slam::OdometryFrameOf(*log_);
-  geometry_ = std::make_shared<const slam::LaserGeometry>(slam::GeometryForRecord(log_->scans.front(), base, frame.offset));
+  geometry_ =
+      std::make_shared<const slam::LaserGeometry>(slam::GeometryForRecord(log_->scans.front(), base, frame.offset));
   grid_ = slam::GridOptionsOf(base);
   const Pose2* last = nullptr;
   for (std::size_t i = 0; i < log_->scans.size(); ++i) {

@@ -66,7 +66,8 @@ std::string HyperplaneIntercepts(const std::vector<std::vector<double>>& candida
   for (std::size_t i = 0; i < m; ++i) {
     const double a = 1.0 / b(i);  // intercept on axis i: b_i * a_i = 1
     if (!std::isfinite(a)) return fmt::format("intercept {} is not finite", i);
-    if (!(a > min_intercept)) return fmt::format("intercept {} = {:g} is not above min_intercept {:g}", i, a, min_intercept);
+    if (!(a > min_intercept))
+      return fmt::format("intercept {} = {:g} is not above min_intercept {:g}", i, a, min_intercept);
     (*intercepts)[i] = a;
   }
   return "";

@@ -308,7 +308,8 @@ TEST(Nsga3Evolve, MixedIntegerProblemKeepsIntegerGenesIntegral) {
   }
   EXPECT_GE(integer_values.size(), 8u) << "the integer gene must be explored";
   // Selection drives the integer gene to its best value, 3.
-  const auto at_optimum = std::count_if(pop.get_x().begin(), pop.get_x().end(), [](const auto& x) { return x[2] == 3; });
+  const auto at_optimum =
+      std::count_if(pop.get_x().begin(), pop.get_x().end(), [](const auto& x) { return x[2] == 3; });
   EXPECT_GT(at_optimum, 80);
 }
 

@@ -179,8 +179,8 @@ VerdictSummary Verdict(const EvaluationRecord& rec, const EvaluationRecord& base
     const double rel = (a[k] - b[k]) / scale;
     if (rel < -options.equivalence_tolerance) ++better;
     if (rel > options.equivalence_tolerance) ++worse;
-    detail += fmt::format("{}{} {:.4g} vs {:.4g}", k ? ", " : "", InfoOf(options.objectives.objectives()[k]).title, a[k],
-                          b[k]);
+    detail += fmt::format("{}{} {:.4g} vs {:.4g}", k ? ", " : "", InfoOf(options.objectives.objectives()[k]).title,
+                          a[k], b[k]);
   }
   const std::string loops =
       fmt::format("loop closures {} (recommended) vs {} (base)", rec.loop_closures, base.loop_closures);

@@ -73,7 +73,8 @@ std::optional<EquivalentRegion> FindEquivalentRegion(const std::vector<Evaluatio
     if (r->loop_closures != recommended.loop_closures) continue;
     const std::vector<double> v = objectives.Values(*r);
     bool close = true;
-    for (std::size_t k = 0; k < m && close; ++k) close = std::abs(v[k] - target[k]) <= tolerance * (upper[k] - lower[k]);
+    for (std::size_t k = 0; k < m && close; ++k)
+      close = std::abs(v[k] - target[k]) <= tolerance * (upper[k] - lower[k]);
     if (!close) continue;
     ++region.members;
     for (ParameterRange& range : region.ranges) {

@@ -68,8 +68,9 @@ TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
 
 TEST(ObjectiveSet, FailedRunsScoreWorseThanAnyMapAndAreRecognised) {
   const auto failed = EvaluationRecord::Failed("k", {}, "solver diverged");
-  for (const ObjectiveSet& set : {ObjectiveSet(ObjectiveSetKind::kConsistency), ObjectiveSet(ObjectiveSetKind::kOccupied),
-                                  ObjectiveSet(ObjectiveSetKind::kDrawn), ObjectiveSet(ObjectiveSetKind::kPaper)}) {
+  for (const ObjectiveSet& set :
+       {ObjectiveSet(ObjectiveSetKind::kConsistency), ObjectiveSet(ObjectiveSetKind::kOccupied),
+        ObjectiveSet(ObjectiveSetKind::kDrawn), ObjectiveSet(ObjectiveSetKind::kPaper)}) {
     SCOPED_TRACE(set.name());
     const auto score = set.Score(failed);
     EXPECT_TRUE(set.IsFailureScore(score));

@@ -75,7 +75,8 @@ OptimizationHistory SummarizeGenerations(const std::vector<std::vector<std::vect
     }
     for (std::size_t i = 0; i < normalised.size(); ++i) {
       bool dominated = false;
-      for (std::size_t j = 0; j < normalised.size() && !dominated; ++j) dominated = Dominates(normalised[j], normalised[i]);
+      for (std::size_t j = 0; j < normalised.size() && !dominated; ++j)
+        dominated = Dominates(normalised[j], normalised[i]);
       if (!dominated) ++s.front_size;
     }
     s.hypervolume = Hypervolume(normalised, kHypervolumeReference);

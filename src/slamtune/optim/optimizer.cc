@@ -86,11 +86,18 @@ void OptimizeSettings::Validate() const {
 }
 
 nlohmann::json OptimizeSettings::ToJson() const {
-  return {{"log", log_path},           {"relations", relations_path}, {"space", space.Fingerprint()},
-          {"default", default_assignment}, {"divisions", divisions},  {"population", population},
-          {"generations", generations},  {"seed", seed},              {"engine", engine},
-          {"objectives", objectives.name()},
-          {"settling", {{"enabled", settling.enabled}, {"tolerance", settling.tolerance}, {"window", settling.window}}}};
+  return {
+      {"log", log_path},
+      {"relations", relations_path},
+      {"space", space.Fingerprint()},
+      {"default", default_assignment},
+      {"divisions", divisions},
+      {"population", population},
+      {"generations", generations},
+      {"seed", seed},
+      {"engine", engine},
+      {"objectives", objectives.name()},
+      {"settling", {{"enabled", settling.enabled}, {"tolerance", settling.tolerance}, {"window", settling.window}}}};
 }
 
 namespace {

@@ -277,8 +277,10 @@ void SearchSpace::Validate(const std::string& source) const {
   if (dimensions.empty()) throw InputError(source, 0, "search space is empty: 'vary' names no parameter");
   std::set<std::string> seen;
   for (const Dimension& d : dimensions) {
-    if (!seen.insert(d.name).second) throw InputError(source, LineOf(d.name), fmt::format("'{}' is listed twice", d.name));
-    if (fixed.count(d.name)) throw InputError(source, LineOf(d.name), fmt::format("'{}' is both varied and fixed", d.name));
+    if (!seen.insert(d.name).second)
+      throw InputError(source, LineOf(d.name), fmt::format("'{}' is listed twice", d.name));
+    if (fixed.count(d.name))
+      throw InputError(source, LineOf(d.name), fmt::format("'{}' is both varied and fixed", d.name));
     if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
       throw InputError(source, LineOf(d.name), fmt::format("'{}': bounds must be finite", d.name));
     }

@@ -95,8 +95,8 @@ TEST(SearchSpace, RefusesWhatCannotBeSearchedNamingTheLine) {
             "'loop_match_minimum_chain_size' is an integer parameter: its type must be int");
   EXPECT_EQ(MessageOf("typo", "vary:\n  loop_search_maximum_distanse: {min: 2, max: 6}\n"),
             "unknown mapper parameter 'loop_search_maximum_distanse' (did you mean 'loop_search_maximum_distance'?)");
-  EXPECT_EQ(ErrorLine("typo2", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n  minimum_travel: 0.1\n"),
-            4u);
+  EXPECT_EQ(
+      ErrorLine("typo2", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n  minimum_travel: 0.1\n"), 4u);
   // An integer parameter without a type is searched as an integer.
   const SearchSpace s = SearchSpace::FromYaml(WriteTemp("inttype", "vary:\n  scan_buffer_size: {min: 5, max: 40}\n"));
   EXPECT_TRUE(s.dimensions[0].integer);
@@ -148,7 +148,8 @@ fix:
 TEST(SearchSpace, KeysAndTypesThatAreNotTextAreInputErrors) {
   EXPECT_EQ(ErrorMessageOf([] { SearchSpace::FromYaml(WriteTemp("err", "[vary]: 1\n")); }),
             WriteTemp("err", "[vary]: 1\n") + ":1: a top-level key must be plain text, not a YAML sequence");
-  EXPECT_EQ(MessageOf("key", "vary:\n  {a: 1}: {min: 1, max: 2}\n"), "a parameter name must be plain text, not a YAML map");
+  EXPECT_EQ(MessageOf("key", "vary:\n  {a: 1}: {min: 1, max: 2}\n"),
+            "a parameter name must be plain text, not a YAML map");
   EXPECT_EQ(MessageOf("field", "vary:\n  scan_buffer_size: {min: 1, max: 2, [t]: 1}\n"),
             "a key of 'scan_buffer_size' must be plain text, not a YAML sequence");
   EXPECT_EQ(MessageOf("type", "vary:\n  scan_buffer_size: {min: 1, max: 2, type: {int: 1}}\n"),

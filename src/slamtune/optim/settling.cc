@@ -41,7 +41,8 @@ std::vector<std::vector<double>> NonDominatedVectors(const std::vector<std::vect
   return out;
 }
 
-double FrontMovement(const std::vector<std::vector<double>>& previous, const std::vector<std::vector<double>>& current) {
+double FrontMovement(const std::vector<std::vector<double>>& previous,
+                     const std::vector<std::vector<double>>& current) {
   if (previous.empty() || current.empty()) return 1.0;
   const std::size_t m = current.front().size();
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);

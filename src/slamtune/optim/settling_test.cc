@@ -55,7 +55,8 @@ TEST(SettlingRule, AMovingFrontOrAChangingAnswerKeepsItGoing) {
     const double shift = 0.5 / g;  // still moving by more than the tolerance
     EXPECT_FALSE(moving.Update(g, {{3.0}, {4.0}}, {{1.0 + shift, 2.0}, {2.0, 1.0 - shift}})) << g;
   }
-  EXPECT_THAT(moving.Describe(10), HasSubstr("ran all 10 generations: the answer was still changing (the front still moved"));
+  EXPECT_THAT(moving.Describe(10),
+              HasSubstr("ran all 10 generations: the answer was still changing (the front still moved"));
   // The same front, but the map most individuals share alternates between its two ends.
   SettlingRule flipping({true, 0.0025, 2}, OneDimension());
   for (unsigned g = 1; g <= 10; ++g) {
@@ -65,7 +66,8 @@ TEST(SettlingRule, AMovingFrontOrAChangingAnswerKeepsItGoing) {
       EXPECT_FALSE(flipping.Update(g, {{3.0}, {4.0}, {4.0}}, {{1.0, 2.0}, {2.0, 1.0}, {2.0, 1.0}})) << g;
     }
   }
-  EXPECT_THAT(flipping.Describe(10), HasSubstr("below the tolerance 0.0025, but the recommended or the knee map changed"));
+  EXPECT_THAT(flipping.Describe(10),
+              HasSubstr("below the tolerance 0.0025, but the recommended or the knee map changed"));
 }
 
 TEST(SettlingRule, SetsThatGiveTheSameMapAreOneAnswer) {

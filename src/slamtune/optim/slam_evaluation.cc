@@ -162,8 +162,9 @@ std::string SharedWorkBrief(const SlamEvaluationContext& context) {
   const slam::MatchCacheCounters c = context.shared_work.match_cache->counters();
   const std::uint64_t calls = c.hits + c.waits + c.misses;
   if (calls == 0) return "";
-  return fmt::format("matches: {:.1f}% of {} shared, {} computed", 100.0 * static_cast<double>(c.hits + c.waits) / calls,
-                     FormatCount(static_cast<double>(calls)), FormatCount(static_cast<double>(c.misses)));
+  return fmt::format("matches: {:.1f}% of {} shared, {} computed",
+                     100.0 * static_cast<double>(c.hits + c.waits) / calls, FormatCount(static_cast<double>(calls)),
+                     FormatCount(static_cast<double>(c.misses)));
 }
 
 }  // namespace slamtune::optim

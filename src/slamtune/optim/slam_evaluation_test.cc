@@ -52,7 +52,8 @@ std::vector<Evaluated> EvaluateAll(const SlamEvaluationContext& context, const s
   std::vector<Evaluated> out(sets.size());
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t i = next++; i < sets.size(); i = next++) out[i].record = EvaluateSlam(context, sets[i], &out[i].run);
+    for (std::size_t i = next++; i < sets.size(); i = next++)
+      out[i].record = EvaluateSlam(context, sets[i], &out[i].run);
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(work);

@@ -1,7 +1,8 @@
 // The tuning problem as a pagmo user-defined problem (UDP): decision vector = the search
 // space's parameters (reals first, integers last = pagmo's nix), fitness = the map
-// objectives of one SLAM run with those parameters (objective_set.h), all minimised. batch_fitness hands a whole offspring population to the BatchEvaluator,
-// which deduplicates, serves the run database and runs the rest in parallel.
+// objectives of one SLAM run with those parameters (objective_set.h), all minimised. batch_fitness hands a whole
+// offspring population to the BatchEvaluator, which deduplicates, serves the run database and runs the rest in
+// parallel.
 #pragma once
 
 #include <pagmo/types.hpp>

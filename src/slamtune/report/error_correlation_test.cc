@@ -31,7 +31,8 @@ TEST(CorrelateObjectivesWithError, ClassifiesAndStatesTheEvidence) {
   EXPECT_EQ(summary.objectives[1].tracking, Tracking::kTracks);
   EXPECT_EQ(summary.objectives[2].tracking, Tracking::kAgainst);
   EXPECT_THAT(summary.objectives[0].reading, HasSubstr("Occupied ratio (eta) tracks the error"));
-  EXPECT_THAT(summary.statement, HasSubstr("On this log, eta and n_c track the translational error and n_e runs against it"));
+  EXPECT_THAT(summary.statement,
+              HasSubstr("On this log, eta and n_c track the translational error and n_e runs against it"));
   EXPECT_THAT(summary.statement, HasSubstr("12 distinct parameter sets"));
 }
 

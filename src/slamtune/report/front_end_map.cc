@@ -32,7 +32,9 @@ struct PixelFrame {
   }
 };
 
-bool Within(const slam::SequentialMatchStep& s, int first, int last) { return s.log_index >= first && s.log_index <= last; }
+bool Within(const slam::SequentialMatchStep& s, int first, int last) {
+  return s.log_index >= first && s.log_index <= last;
+}
 
 // Polyline through the final poses of the steps with log index in [first, last].
 void DrawPath(cv::Mat& image, const PixelFrame& frame, const std::vector<io::TimedPose>& trajectory,

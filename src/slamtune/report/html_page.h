@@ -3,8 +3,8 @@
 // table when a header is clicked, so report.html reads the same offline, mailed or
 // archived (a figure may also link to its full-size file beside the page). The layout fits a
 // 1400 px window without horizontal scrolling: content is at most 1200 px wide, table cells
-// wrap long values anywhere, and a table still too wide scrolls inside its own box. Every piece of text goes through HtmlEscape: log paths, labels and verdicts come
-// from the user or the run and must not be able to inject markup.
+// wrap long values anywhere, and a table still too wide scrolls inside its own box. Every piece of text goes through
+// HtmlEscape: log paths, labels and verdicts come from the user or the run and must not be able to inject markup.
 #pragma once
 
 #include <cstdint>

@@ -182,7 +182,8 @@ cv::Mat RenderMapPanel(const io::MapImage& map, const std::string& label, const 
       WrapText(caption, caption_scale, std::max({body.cols + 2, label_size.width, 320}));
   const int caption_line_h = TextSize("Ag", caption_scale).height + 3;
   cv::Size caption_size(0, static_cast<int>(caption_lines.size()) * caption_line_h);
-  for (const auto& line : caption_lines) caption_size.width = std::max(caption_size.width, TextSize(line, caption_scale).width);
+  for (const auto& line : caption_lines)
+    caption_size.width = std::max(caption_size.width, TextSize(line, caption_scale).width);
   // The scale bar: its length in px and its text, under the map's left edge.
   const bool bar = options.scale_bar && px_per_m > 0.0;
   const double bar_m = bar ? ScaleBarLength(px_per_m, body.cols) : 0.0;

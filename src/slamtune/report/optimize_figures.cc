@@ -65,7 +65,8 @@ bool Inside(const std::optional<AxisLimits>& l, double v) { return !l || (v >= l
 // with the non-dominated points and the candidates on top. Each panel title says how many
 // points lie outside its axes.
 cv::Mat ProjectionPanels(const std::vector<PointGroup>& groups, const optim::OptimizeResult& result,
-                         bool mark_candidates, bool mark_front, const FigureOptions& options, const std::string& title) {
+                         bool mark_candidates, bool mark_front, const FigureOptions& options,
+                         const std::string& title) {
   const auto limits = ObjectiveLimits(result);
   const auto candidates = PlottableCandidates(result);
   std::vector<cv::Mat> panels;
@@ -123,7 +124,8 @@ std::string FailedNote(int failed) {
 }  // namespace
 
 void FigureOptions::Validate() const {
-  if (panel_width < 160) throw InputError(fmt::format("FigureOptions.panel_width = {}: must be >= 160 px", panel_width));
+  if (panel_width < 160)
+    throw InputError(fmt::format("FigureOptions.panel_width = {}: must be >= 160 px", panel_width));
   if (panel_height < 120) {
     throw InputError(fmt::format("FigureOptions.panel_height = {}: must be >= 120 px", panel_height));
   }
@@ -211,7 +213,8 @@ std::vector<CandidateMapPanel> CandidateMapPanels(const optim::OptimizeResult& r
     MapOverlay overlay;
     for (const auto& [x, y] : c.path) overlay.path.emplace_back(x, y);
     for (const optim::LoopEdge& e : c.loop_edges) {
-      overlay.segments.push_back({e.from_x, e.from_y, e.to_x, e.to_y, e.log_index >= 0 ? std::to_string(e.log_index) : ""});
+      overlay.segments.push_back(
+          {e.from_x, e.from_y, e.to_x, e.to_y, e.log_index >= 0 ? std::to_string(e.log_index) : ""});
     }
     cv::Mat image = RenderMapPanel(c.map, group.label, caption, options.maps, overlay);
     out.push_back({std::move(group), std::move(image)});

@@ -1,8 +1,8 @@
 // The figures of `slamtune optimize`:
 // * the candidates' maps side by side (map_panels.h);
 // * the population in objective space for one generation, as the three 2D projections of
-//   the result's three objectives (e.g. u_h-n_c, u_h-n_e, n_c-n_e) in one 1 x 3 image, with the candidates marked (the seed
-//   paper's Figure 13 shows the population moving towards the front over generations);
+//   the result's three objectives (e.g. u_h-n_c, u_h-n_e, n_c-n_e) in one 1 x 3 image, with the candidates marked (the
+//   seed paper's Figure 13 shows the population moving towards the front over generations);
 // * all snapshots overlaid, on the same axes;
 // * each objective against the translational error, one panel per objective, with Spearman's
 //   rho in the panel title (error_correlation.h);

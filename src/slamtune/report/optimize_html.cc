@@ -238,8 +238,8 @@ void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) 
     row.push_back(Ok(e) ? std::to_string(e.loop_closures) : "");
     if (gt) {
       if (e.has_gt) {
-        row.insert(row.end(), {FormatMeanStd(e.trans_mean_m, e.trans_std_m), FormatMeanStd(e.rot_mean_deg, e.rot_std_deg),
-                               std::to_string(e.relations_used)});
+        row.insert(row.end(), {FormatMeanStd(e.trans_mean_m, e.trans_std_m),
+                               FormatMeanStd(e.rot_mean_deg, e.rot_std_deg), std::to_string(e.relations_used)});
       } else {
         row.insert(row.end(), {"", "", ""});
       }
@@ -300,7 +300,8 @@ void CorrelationSection(HtmlPage& page, const OptimizeFigures& f, const ErrorCor
   page.Heading(2, "Do the objectives track the true error on this log?");
   if (!f.objective_vs_error.empty()) {
     page.Image(f.objective_vs_error, "objectives against translational error",
-               "Each objective against the mean translational error of every distinct parameter set (objective_vs_error.png).");
+               "Each objective against the mean translational error of every distinct parameter set "
+               "(objective_vs_error.png).");
   }
   std::vector<std::vector<std::string>> rows;
   for (const auto& o : c.objectives) {
@@ -412,20 +413,22 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
     std::vector<HtmlPage::Figure> figures;
     for (const auto& m : f.map_panels) figures.push_back({m.png, "map of " + m.label, m.caption, m.file});
     page.FigureGrid(figures, 2);
-    page.Paragraph("Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
-                   "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
-                   "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
-                   "note");
+    page.Paragraph(
+        "Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
+        "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
+        "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
+        "note");
   } else {
     page.Paragraph("No candidate to show.");
   }
 
   page.Heading(2, "Population in objective space", "population");
   if (!f.populations.empty()) {
-    page.Paragraph("Every panel uses the same axes, fitted to the non-dominated front of all generations shown (black "
-                   "diamonds mark each generation's front) and reaching one front's width beyond it, so the generations "
-                   "compare directly; a panel's title counts the individuals that lie outside its axes (usually runs "
-                   "whose map broke).");
+    page.Paragraph(
+        "Every panel uses the same axes, fitted to the non-dominated front of all generations shown (black "
+        "diamonds mark each generation's front) and reaching one front's width beyond it, so the generations "
+        "compare directly; a panel's title counts the individuals that lie outside its axes (usually runs "
+        "whose map broke).");
   }
   std::vector<HtmlPage::Figure> generations;
   for (const auto& [generation, png] : f.populations) {
@@ -476,7 +479,8 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   if (r.settings.is_object()) {
     for (const auto& [key, value] : r.settings.items()) {
       if (key == "engine") FlattenSettings(value, "", engine);
-      else if (key == "space") settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
+      else if (key == "space")
+        settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
       else FlattenSettings(value, key, settings);
     }
   }

@@ -41,14 +41,35 @@ int Count(const std::string& text, const std::string& what) {
 TEST(WriteOptimizeReport, WritesEveryFileWithGroundTruth) {
   const fs::path dir = FreshDir("gt");
   const auto summary = WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
-  for (const char* name :
-       {"results.json", "table3_best_worst_params.csv", "table4_6_objectives.csv", "table7_loop_closures.csv",
-        "table8_loop_scans.csv", "table9_10_errors.csv", "evaluations.csv", "maps_side_by_side.png",
-        "map_recommended.pgm", "map_recommended.yaml", "map_knee.pgm", "map_knee.yaml", "map_worst.pgm",
-        "map_worst.yaml", "population_gen1.png", "population_gen3.png", "population_gen5.png",
-        "population_evolution.png", "objective_vs_error.png", "map_recommended.png", "map_knee.png",
-        "map_worst.png", "map_default.png", "parameter_space.png", "history.png", "slices_occupied_ratio.png", "slices_corner_pixels.png",
-        "slices_enclosed_areas.png", "report.html"}) {
+  for (const char* name : {"results.json",
+                           "table3_best_worst_params.csv",
+                           "table4_6_objectives.csv",
+                           "table7_loop_closures.csv",
+                           "table8_loop_scans.csv",
+                           "table9_10_errors.csv",
+                           "evaluations.csv",
+                           "maps_side_by_side.png",
+                           "map_recommended.pgm",
+                           "map_recommended.yaml",
+                           "map_knee.pgm",
+                           "map_knee.yaml",
+                           "map_worst.pgm",
+                           "map_worst.yaml",
+                           "population_gen1.png",
+                           "population_gen3.png",
+                           "population_gen5.png",
+                           "population_evolution.png",
+                           "objective_vs_error.png",
+                           "map_recommended.png",
+                           "map_knee.png",
+                           "map_worst.png",
+                           "map_default.png",
+                           "parameter_space.png",
+                           "history.png",
+                           "slices_occupied_ratio.png",
+                           "slices_corner_pixels.png",
+                           "slices_enclosed_areas.png",
+                           "report.html"}) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
     EXPECT_THAT(summary.files, ::testing::Contains(std::string(name)));
   }
@@ -256,7 +277,8 @@ TEST(WriteOptimizeReport, TablesMirrorThePapers) {
   EXPECT_THAT(t3, HasSubstr("\nrecommended,3,12\n"));
   EXPECT_THAT(t3, HasSubstr("\ndefault,4,10\n"));
   const std::string t4 = Slurp(dir / "table4_6_objectives.csv");
-  EXPECT_EQ(t4.substr(0, t4.find('\n')), "label,eta,eta_known,corner_pixels,corners,enclosed_areas,contours,unbacked_hits");
+  EXPECT_EQ(t4.substr(0, t4.find('\n')),
+            "label,eta,eta_known,corner_pixels,corners,enclosed_areas,contours,unbacked_hits");
   // Listed recommended, knee, default, worst.
   EXPECT_LT(t4.find("\nrecommended,"), t4.find("\nknee,"));
   EXPECT_LT(t4.find("\nknee,"), t4.find("\ndefault,"));

@@ -114,10 +114,28 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
   CsvTable t;
   t.header = {"index"};
   t.header.insert(t.header.end(), params.begin(), params.end());
-  for (const char* h : {"status", "reason", "occupied_ratio", "corner_pixels", "enclosed_areas", "occupied_ratio_known",
-                        "corners", "contours", "occupied_cells", "hits", "hits_in_free_cells", "hits_in_unknown_cells",
-                        "unbacked_hits", "drawn_wall_cells", "nodes", "loop_closures", "wall_s", "trans_mean_m", "trans_std_m",
-                        "rot_mean_deg", "rot_std_deg", "relations_used"}) {
+  for (const char* h : {"status",
+                        "reason",
+                        "occupied_ratio",
+                        "corner_pixels",
+                        "enclosed_areas",
+                        "occupied_ratio_known",
+                        "corners",
+                        "contours",
+                        "occupied_cells",
+                        "hits",
+                        "hits_in_free_cells",
+                        "hits_in_unknown_cells",
+                        "unbacked_hits",
+                        "drawn_wall_cells",
+                        "nodes",
+                        "loop_closures",
+                        "wall_s",
+                        "trans_mean_m",
+                        "trans_std_m",
+                        "rot_mean_deg",
+                        "rot_std_deg",
+                        "relations_used"}) {
     t.header.push_back(h);
   }
   for (std::size_t i = 0; i < evaluations.size(); ++i) {

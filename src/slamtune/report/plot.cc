@@ -256,7 +256,8 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
     for (const auto& e : legend) legend_w = std::max(legend_w, sample_w + kGap + TextSize(e.name, scale).width);
     if (legend_w > 0) legend_w += 2 * kGap + kMargin;
   }
-  const int top = kMargin + (options.title.empty() ? line_h / 2 : TextSize(options.title, title_scale, 2).height + kGap);
+  const int top =
+      kMargin + (options.title.empty() ? line_h / 2 : TextSize(options.title, title_scale, 2).height + kGap);
   const int bottom = kMargin + kTickLength + kGap + line_h + (options.x_label.empty() ? 0 : line_h + kGap);
   const int left = kMargin + (options.y_label.empty() ? 0 : line_h + kGap) + y_tick_width + kGap + kTickLength;
   int right = kMargin + TextSize(out.x_axis.labels.back(), scale).width / 2;
@@ -298,7 +299,8 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
     DrawText(image, options.x_label, {area.x + area.width / 2 - ts.width / 2, options.height - kMargin - ts.height},
              scale, kBlack);
   }
-  if (!options.y_label.empty()) DrawRotatedText(image, options.y_label, {kMargin + line_h / 2, area.y + area.height / 2}, scale);
+  if (!options.y_label.empty())
+    DrawRotatedText(image, options.y_label, {kMargin + line_h / 2, area.y + area.height / 2}, scale);
 
   // Data: lines clipped to the axes, then markers of points inside them.
   const cv::Rect clip(area.x, area.y, area.width, area.height);

@@ -78,7 +78,8 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   j["changes"] = result.changes;
   j["how_to_load"] = result.how_to_load;
   j["recommended_share"] = result.recommended_share;
-  j["lowest_error"] = result.lowest_error_label.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.lowest_error_label);
+  j["lowest_error"] =
+      result.lowest_error_label.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.lowest_error_label);
   j["settings"] = result.settings.is_null() ? nlohmann::json::object() : result.settings;
   j["search_space"] = SearchSpaceJson(result.space);
   j["log"] = result.log_path;

@@ -34,15 +34,25 @@ CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>&
   CsvTable t;
   t.header = {"parameter", "value", "status", "reason", "loop_closures", "occupied_ratio", "corner_pixels",
               "enclosed_areas", "occupied_ratio_known", "corners", "contours", "unbacked_hits", "nodes", "wall_s"};
-  if (gt) t.header.insert(t.header.end(), {"trans_mean_m", "trans_std_m", "rot_mean_deg", "rot_std_deg", "relations_used"});
+  if (gt)
+    t.header.insert(t.header.end(), {"trans_mean_m", "trans_std_m", "rot_mean_deg", "rot_std_deg", "relations_used"});
   t.header.push_back("loop_scans");
   for (const auto& p : points) {
     const auto& r = p.record;
-    std::vector<std::string> row = {parameter, FormatNumber(p.value), NameOf(r.status), r.reason,
-                                    Ok(r) ? std::to_string(r.loop_closures) : "", Metric(r, r.occupied_ratio),
-                                    Metric(r, r.corner_pixels), Metric(r, r.enclosed_areas),
-                                    Metric(r, r.occupied_ratio_known), Metric(r, r.corners), Metric(r, r.contours),
-                                    Metric(r, Unbacked(r)), Ok(r) ? std::to_string(r.nodes) : "", FormatNumber(r.wall_s)};
+    std::vector<std::string> row = {parameter,
+                                    FormatNumber(p.value),
+                                    NameOf(r.status),
+                                    r.reason,
+                                    Ok(r) ? std::to_string(r.loop_closures) : "",
+                                    Metric(r, r.occupied_ratio),
+                                    Metric(r, r.corner_pixels),
+                                    Metric(r, r.enclosed_areas),
+                                    Metric(r, r.occupied_ratio_known),
+                                    Metric(r, r.corners),
+                                    Metric(r, r.contours),
+                                    Metric(r, Unbacked(r)),
+                                    Ok(r) ? std::to_string(r.nodes) : "",
+                                    FormatNumber(r.wall_s)};
     if (gt) {
       const bool has = Ok(r) && r.has_gt;
       row.insert(row.end(), {has ? FormatNumber(r.trans_mean_m) : "", has ? FormatNumber(r.trans_std_m) : "",
@@ -66,13 +76,16 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
   const std::vector<Quantity> quantities = {
       {"loop closures", [](const optim::EvaluationRecord& r) { return static_cast<double>(r.loop_closures); }, false},
       {Title(optim::Objective::kUnbackedHits), [](const optim::EvaluationRecord& r) { return Unbacked(r); }, false},
-      {Title(optim::Objective::kOccupiedRatio), [](const optim::EvaluationRecord& r) { return r.occupied_ratio; }, false},
+      {Title(optim::Objective::kOccupiedRatio), [](const optim::EvaluationRecord& r) { return r.occupied_ratio; },
+       false},
       {Title(optim::Objective::kCornerPixels), [](const optim::EvaluationRecord& r) { return r.corner_pixels; }, false},
-      {Title(optim::Objective::kEnclosedAreas), [](const optim::EvaluationRecord& r) { return r.enclosed_areas; }, false},
+      {Title(optim::Objective::kEnclosedAreas), [](const optim::EvaluationRecord& r) { return r.enclosed_areas; },
+       false},
       {"mean translational error (m)", [](const optim::EvaluationRecord& r) { return r.trans_mean_m; }, true},
       {"mean rotational error (deg)", [](const optim::EvaluationRecord& r) { return r.rot_mean_deg; }, true},
   };
-  const std::string x_label = parameter + (ShortParamName(parameter) != parameter ? " (" + ShortParamName(parameter) + ")" : "");
+  const std::string x_label =
+      parameter + (ShortParamName(parameter) != parameter ? " (" + ShortParamName(parameter) + ")" : "");
   std::vector<cv::Mat> panels;
   for (std::size_t k = 0; k < quantities.size(); ++k) {
     const Quantity& q = quantities[k];
@@ -96,7 +109,8 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
   }
   GridOptions g;
   g.columns = 3;
-  const int failed = static_cast<int>(std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return !Ok(p.record); }));
+  const int failed =
+      static_cast<int>(std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return !Ok(p.record); }));
   g.title = fmt::format("Sweep of {}{}", parameter,
                         failed ? fmt::format(" ({} failed run{} not shown)", failed, failed == 1 ? "" : "s") : "");
   return ComposeGrid(panels, g);
@@ -114,9 +128,10 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
                       const std::vector<std::uint8_t>& png, const SweepReportOptions& options) {
   HtmlPage page("slamtune sweep: " + parameter);
   page.Heading(1, "slamtune sweep: " + parameter);
-  std::vector<std::pair<std::string, std::string>> run = {{"log", options.log_path.empty() ? "(not given)" : options.log_path},
-                                                          {"varied", parameter},
-                                                          {"points", std::to_string(points.size())}};
+  std::vector<std::pair<std::string, std::string>> run = {
+      {"log", options.log_path.empty() ? "(not given)" : options.log_path},
+      {"varied", parameter},
+      {"points", std::to_string(points.size())}};
   for (const auto& row : io::InputRows(options.log_input)) run.push_back(row);
   std::string held;
   for (const auto& [name, value] : points.front().record.params) {
@@ -155,7 +170,8 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
 }  // namespace
 
 void SweepReportOptions::Validate() const {
-  if (panel_width < 160) throw InputError(fmt::format("SweepReportOptions.panel_width = {}: must be >= 160 px", panel_width));
+  if (panel_width < 160)
+    throw InputError(fmt::format("SweepReportOptions.panel_width = {}: must be >= 160 px", panel_width));
   if (panel_height < 120) {
     throw InputError(fmt::format("SweepReportOptions.panel_height = {}: must be >= 120 px", panel_height));
   }
@@ -176,7 +192,8 @@ SweepReportSummary WriteSweepReport(const std::string& parameter, const std::vec
     }
   }
   std::vector<SweepPoint> sorted = points;
-  std::stable_sort(sorted.begin(), sorted.end(), [](const SweepPoint& a, const SweepPoint& b) { return a.value < b.value; });
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const SweepPoint& a, const SweepPoint& b) { return a.value < b.value; });
 
   SweepReportSummary summary;
   summary.dir = dir;

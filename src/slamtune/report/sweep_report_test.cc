@@ -31,7 +31,8 @@ std::vector<SweepPoint> Points(bool gt) {
   for (int g = 20; g >= 6; g -= 2) {  // given out of order: the report sorts them
     points.push_back({static_cast<double>(g), testing::FakeRecord(2.0, g, (g - 6) / 14.0, gt)});
   }
-  points.push_back({7.0, optim::EvaluationRecord::Failed("k7", {{"loop_match_minimum_chain_size", 7}}, "matcher threw")});
+  points.push_back(
+      {7.0, optim::EvaluationRecord::Failed("k7", {{"loop_match_minimum_chain_size", 7}}, "matcher threw")});
   return points;
 }
 
@@ -46,12 +47,14 @@ TEST(WriteSweepReport, WritesCsvFigureAndPage) {
   const std::string csv = Slurp(dir / "sweep.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "parameter,value,status,reason,loop_closures,occupied_ratio,corner_pixels,enclosed_areas,"
-            "occupied_ratio_known,corners,contours,unbacked_hits,nodes,wall_s,trans_mean_m,trans_std_m,rot_mean_deg,rot_std_deg,"
+            "occupied_ratio_known,corners,contours,unbacked_hits,nodes,wall_s,trans_mean_m,trans_std_m,rot_mean_deg,"
+            "rot_std_deg,"
             "relations_used,loop_scans");
   // Sorted by value: 6 first (12 loop closures, error 0.02), then the failed 7, then 8.
   const auto expected6 = testing::FakeRecord(2.0, 6, 0.0, true);
   EXPECT_THAT(csv, HasSubstr("\nloop_match_minimum_chain_size,6,ok,,12,0.05,900,22,"));
-  EXPECT_LT(csv.find("\nloop_match_minimum_chain_size,6,"), csv.find("\nloop_match_minimum_chain_size,7,failed,matcher threw,"));
+  EXPECT_LT(csv.find("\nloop_match_minimum_chain_size,6,"),
+            csv.find("\nloop_match_minimum_chain_size,7,failed,matcher threw,"));
   EXPECT_LT(csv.find(",7,failed,"), csv.find("\nloop_match_minimum_chain_size,8,"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 10);
   EXPECT_EQ(expected6.loop_closures, 12);

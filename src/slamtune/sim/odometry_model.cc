@@ -15,7 +15,8 @@ void RequireNonNegative(const char* field, double value) {
 }
 
 void RequireBelow(const char* field, double value, double bound) {
-  if (!(std::fabs(value) < bound)) throw InputError(fmt::format("odometry {} = {}: must be in (-{}, {})", field, value, bound, bound));
+  if (!(std::fabs(value) < bound))
+    throw InputError(fmt::format("odometry {} = {}: must be in (-{}, {})", field, value, bound, bound));
 }
 
 }  // namespace

@@ -68,8 +68,8 @@ TEST(OdometryNoiseOptions, ValidateNamesFieldValueAndRule) {
   OdometryNoiseOptions options;
   EXPECT_NO_THROW(options.Validate());
   options.translation_noise = -1;
-  EXPECT_THAT([&] { options.Validate(); }, testing::ThrowsMessage<InputError>(
-                                               testing::HasSubstr("odometry translation_noise = -1: must be finite and >= 0")));
+  EXPECT_THAT([&] { options.Validate(); }, testing::ThrowsMessage<InputError>(testing::HasSubstr(
+                                               "odometry translation_noise = -1: must be finite and >= 0")));
   options = OdometryNoiseOptions();
   options.rotation_scale_bias = 0.7;
   EXPECT_THAT([&] { options.Validate(); },

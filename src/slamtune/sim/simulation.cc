@@ -20,7 +20,8 @@ constexpr uint64_t kOdometryStream = 2;
 
 void RequireRange(const char* field, double value, double low, double high, bool low_open) {
   const bool ok = std::isfinite(value) && (low_open ? value > low : value >= low) && value <= high;
-  if (!ok) throw InputError(fmt::format("{} = {}: must be in {}{}, {}]", field, value, low_open ? "(" : "[", low, high));
+  if (!ok)
+    throw InputError(fmt::format("{} = {}: must be in {}{}, {}]", field, value, low_open ? "(" : "[", low, high));
 }
 
 // Rounds to 6 decimals: k / 1e6 is the double nearest to the decimal that "%.6f" prints, so
@@ -114,8 +115,8 @@ void WriteLogHeader(const LaserOptions& laser, const Pose2& offset, io::LaserLog
 // step_length_m and a scan at scan_rate_hz (ODOM first at equal times).
 class Recorder {
  public:
-  Recorder(const SimulationOptions& options, const Route& route, const World& world, const OdometryNoiseOptions& odometry,
-           Simulation& sim)
+  Recorder(const SimulationOptions& options, const Route& route, const World& world,
+           const OdometryNoiseOptions& odometry, Simulation& sim)
       : options_(options),
         route_(route),
         caster_(world.walls),
@@ -251,10 +252,12 @@ Simulation Simulate(const SimulationOptions& options) {
   const Route route(sim.world.waypoints, sim.world.turn_radius);
   const double duration = route.length() / options.speed_mps;
   const std::size_t num_scans = static_cast<std::size_t>(std::floor(duration * options.scan_rate_hz + 1e-9)) + 1;
-  const std::size_t num_odometry = static_cast<std::size_t>(std::floor(route.length() / options.step_length_m + 1e-9)) + 1;
+  const std::size_t num_odometry =
+      static_cast<std::size_t>(std::floor(route.length() / options.step_length_m + 1e-9)) + 1;
   if (num_scans > options.max_scans) {
-    throw InputError(fmt::format("scan_rate_hz = {}, speed_mps = {}: world '{}' would give {} scans, above max_scans = {}",
-                                 options.scan_rate_hz, options.speed_mps, options.world, num_scans, options.max_scans));
+    throw InputError(
+        fmt::format("scan_rate_hz = {}, speed_mps = {}: world '{}' would give {} scans, above max_scans = {}",
+                    options.scan_rate_hz, options.speed_mps, options.world, num_scans, options.max_scans));
   }
   sim.odometry = options.odometry;
   if (options.plant_world_faults) {

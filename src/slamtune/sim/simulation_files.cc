@@ -70,7 +70,8 @@ std::vector<std::string> DescribeSimulation(const Simulation& simulation, const 
   return lines;
 }
 
-SimulationFiles WriteSimulation(const std::string& dir, const Simulation& simulation, const SimulationOptions& options) {
+SimulationFiles WriteSimulation(const std::string& dir, const Simulation& simulation,
+                                const SimulationOptions& options) {
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error) throw InputError(dir, 0, "cannot create the output folder: " + error.message());

@@ -42,7 +42,8 @@ TEST(WorldCatalog, ListsOfficeFirstThenHallCorridorAndTheFaultWorlds) {
 // Plain worlds have no planted faults; each fault world has its fault inside its route, and
 // office-slip and office-jump drive exactly the office's walls and route.
 TEST(WorldCatalog, FaultWorldsPlantValidFaultsOnTheirRoute) {
-  for (const char* plain : {"office", "hall", "corridor"}) EXPECT_TRUE(MakeWorld(plain).odometry_faults.empty()) << plain;
+  for (const char* plain : {"office", "hall", "corridor"})
+    EXPECT_TRUE(MakeWorld(plain).odometry_faults.empty()) << plain;
   const World office = MakeWorld("office");
   for (const char* name : {"office-slip", "office-jump", "corridor-long"}) {
     const World world = MakeWorld(name);

@@ -61,7 +61,8 @@ CorrelationGrid::CorrelationGrid(double search_dimension, double resolution, dou
       // Karto computes the kernel from the grid's resolution read back as 1/scale (the
       // same value as rho for the usual resolutions); the half-size of the border from rho.
       kernel_(MakeSmearKernel(smear_deviation, 1.0 / scale_)) {
-  SLAMTUNE_CHECK(kernel_.size() == static_cast<std::size_t>((2 * geometry_.kernel_half + 1) * (2 * geometry_.kernel_half + 1)));
+  SLAMTUNE_CHECK(kernel_.size() ==
+                 static_cast<std::size_t>((2 * geometry_.kernel_half + 1) * (2 * geometry_.kernel_half + 1)));
   const int side = 2 * geometry_.kernel_half + 1;
   padded_side_ = (side + 15) / 16 * 16;
   padded_kernel_.assign(static_cast<std::size_t>(padded_side_) * side, 0);

@@ -184,8 +184,8 @@ std::string BreakSummary(const std::vector<const SuspectStretch*>& strong) {
       what += fmt::format("{}{} with a collapsed response (down to {:.2f})", what.empty() ? "" : ", ", s.low_response,
                           s.min_response);
     }
-    parts += fmt::format("{}scans {}-{}, {:.1f}-{:.1f} s into the log: {}", k ? "; " : "", s.first_log_index, s.last_log_index,
-                         s.first_time, s.last_time, what);
+    parts += fmt::format("{}scans {}-{}, {:.1f}-{:.1f} s into the log: {}", k ? "; " : "", s.first_log_index,
+                         s.last_log_index, s.first_time, s.last_time, what);
   }
   if (strong.size() > shown) parts += fmt::format("; {} more", strong.size() - shown);
   return fmt::format("front end: {} stretch{} where sequential matching lost its place ({})", strong.size(),

@@ -127,7 +127,8 @@ struct FrontEndEvidence {
   std::string Summary() const;
 };
 
-FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps, const FrontEndEvidenceOptions& options = {});
+FrontEndEvidence AssessFrontEnd(const std::vector<SequentialMatchStep>& steps,
+                                const FrontEndEvidenceOptions& options = {});
 
 // True when a step is suspect given the run's median response.
 bool IsSuspect(const SequentialMatchStep& step, double median_response, const FrontEndEvidenceOptions& options);

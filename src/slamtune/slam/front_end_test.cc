@@ -85,7 +85,8 @@ TEST(TrimRunningBuffer, ByCountAndByFrontBackDistance) {
 // Karto's ComputeWeightedMean divides the sums of cosines and sines by the number of means
 // before atan2; on these three headings that gives a result one ulp below atan2 of the sums.
 TEST(WeightedMean, HeadingIsAtan2OfTheMeanCosineAndSine) {
-  const std::vector<Pose2> means{{0, 0, 0.14000000000000001}, {0, 0, -0.050000000000000003}, {0, 0, 1.3899999999999999}};
+  const std::vector<Pose2> means{
+      {0, 0, 0.14000000000000001}, {0, 0, -0.050000000000000003}, {0, 0, 1.3899999999999999}};
   const std::vector<Eigen::Matrix3d> covs(3, Eigen::Matrix3d::Identity());
   double sum_cos = 0.0, sum_sin = 0.0;
   for (const Pose2& m : means) {

@@ -116,7 +116,9 @@ class LaserScan {
   // contents before using it, so any value, stale or copied, is safe; it only saves a hash
   // lookup. Relaxed atomic access, so scans shared by threads stay race-free.
   static constexpr std::uint32_t kNoMatchKeyHint = 0xffffffffu;
-  std::uint32_t match_key_hint() const { return std::atomic_ref<std::uint32_t>(match_key_hint_).load(std::memory_order_relaxed); }
+  std::uint32_t match_key_hint() const {
+    return std::atomic_ref<std::uint32_t>(match_key_hint_).load(std::memory_order_relaxed);
+  }
   void set_match_key_hint(std::uint32_t id) const {
     std::atomic_ref<std::uint32_t>(match_key_hint_).store(id, std::memory_order_relaxed);
   }

@@ -74,8 +74,8 @@ ProcessResult LogRunner::Step() {
     result = mapper_.Process(std::move(scan));
     state_of_log_scan_[index] = result.state_id;
     if (result.sequential_response >= 0.0) {
-      sequential_matches_.push_back(StepOf(result, static_cast<int>(index), record.ipc_time - log_->scans.front().ipc_time,
-                                           mapper_.params()));
+      sequential_matches_.push_back(
+          StepOf(result, static_cast<int>(index), record.ipc_time - log_->scans.front().ipc_time, mapper_.params()));
     }
   }
   wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

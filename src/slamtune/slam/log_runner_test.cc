@@ -118,7 +118,8 @@ TEST(LogRunner, MitKillianFirstLoopsMatchReferenceKarto) {
   LogRunner runner(std::make_shared<const io::LaserLog>(std::move(log)), p);
   runner.RunToEnd();
   const std::vector<LoopClosureRecord> loops = runner.Summary().loop_closures;
-  const std::vector<std::pair<int, double>> expected{{1132, 0.8465}, {2642, 0.7565}, {4149, 0.748889}, {6314, 0.722444}};
+  const std::vector<std::pair<int, double>> expected{
+      {1132, 0.8465}, {2642, 0.7565}, {4149, 0.748889}, {6314, 0.722444}};
   ASSERT_EQ(loops.size(), expected.size());
   for (std::size_t k = 0; k < loops.size(); ++k) {
     EXPECT_EQ(loops[k].log_index, expected[k].first) << k;

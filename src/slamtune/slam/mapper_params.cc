@@ -513,7 +513,9 @@ void AssignOverride(MapperParams& copy, std::string_view assignment, UnknownChoi
 
 }  // namespace
 
-void ApplyOverride(MapperParams& params, std::string_view assignment) { ApplyOverrides(params, {std::string(assignment)}); }
+void ApplyOverride(MapperParams& params, std::string_view assignment) {
+  ApplyOverrides(params, {std::string(assignment)});
+}
 
 void ApplyOverrides(MapperParams& params, const std::vector<std::string>& assignments) {
   MapperParams copy = params;

@@ -69,7 +69,8 @@ TEST_P(RecordingRuns, BagGivesTheCarmenLogsScansAndPoses) {
 // quaternions, the CARMEN laser poses and the offset derived from them through 12-decimal
 // text; measured 1.1e-8 m at most).
 TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
-  static const RunResult reference = RunLog(std::make_shared<const io::LaserLog>(WorldLog()), MapperParams::Preset("slam_karto"));
+  static const RunResult reference =
+      RunLog(std::make_shared<const io::LaserLog>(WorldLog()), MapperParams::Preset("slam_karto"));
   const RunResult run = RunLog(std::make_shared<const io::LaserLog>(io::ReadLaserLog(kFixtures + GetParam())),
                                MapperParams::Preset("slam_karto"));
   EXPECT_EQ(run.summary.nodes, reference.summary.nodes);
@@ -78,7 +79,8 @@ TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
   EXPECT_GE(reference.summary.loop_closures.size(), 1u);
   for (std::size_t k = 0; k < run.summary.loop_closures.size(); ++k) {
     EXPECT_EQ(run.summary.loop_closures[k].log_index, reference.summary.loop_closures[k].log_index);
-    EXPECT_NEAR(run.summary.loop_closures[k].coarse_response, reference.summary.loop_closures[k].coarse_response, 1e-12);
+    EXPECT_NEAR(run.summary.loop_closures[k].coarse_response, reference.summary.loop_closures[k].coarse_response,
+                1e-12);
   }
   ASSERT_EQ(run.trajectory.size(), reference.trajectory.size());
   double largest = 0.0;

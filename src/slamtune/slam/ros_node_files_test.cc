@@ -150,7 +150,8 @@ TEST(MakeNodeFiles, ABareRos2MapIsWrappedForTheNodeAndOtherNodesAreKept) {
   const std::string bare = "ros__parameters:\n  loop_search_maximum_distance: 3.0  # r\n  mode: mapping\n";
   NodeFiles files = MakeNodeFiles(RosNode::kSlamToolbox, Inputs(Meaning(RosNode::kSlamToolbox, bare), bare), true);
   EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox, files.full), IsEmpty()) << files.full;
-  EXPECT_THAT(files.full, HasSubstr("slam_toolbox:\n  ros__parameters:\n    loop_search_maximum_distance: 5.25  # r\n"));
+  EXPECT_THAT(files.full,
+              HasSubstr("slam_toolbox:\n  ros__parameters:\n    loop_search_maximum_distance: 5.25  # r\n"));
 
   const std::string two = "amcl:\n  ros__parameters:\n    alpha1: 0.2\n/**:\n  ros__parameters:\n"
                           "    loop_search_maximum_distance: 3.0\n";
@@ -161,7 +162,8 @@ TEST(MakeNodeFiles, ABareRos2MapIsWrappedForTheNodeAndOtherNodesAreKept) {
 }
 
 TEST(MakeNodeFiles, AFlowMapIsWrittenAgainWhole) {
-  const std::string flow = "slam_toolbox: {ros__parameters: {loop_search_maximum_distance: 3.0, scan_buffer_size: 10}}\n";
+  const std::string flow =
+      "slam_toolbox: {ros__parameters: {loop_search_maximum_distance: 3.0, scan_buffer_size: 10}}\n";
   const NodeFiles files =
       MakeNodeFiles(RosNode::kSlamToolbox, Inputs(Meaning(RosNode::kSlamToolbox, flow), flow), true);
   EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox, files.full), IsEmpty()) << files.full;

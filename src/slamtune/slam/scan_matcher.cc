@@ -396,7 +396,8 @@ MatchResult ScanMatcher::Match(const LaserScan& scan, std::span<const LaserScan*
   const double resolution = 1.0 / m.grid.scale();
   const CorrelationGridGeometry& g = m.grid.geometry();
   // §4.2 items 2-3: centre the ROI on the sensor position and draw the base scans.
-  m.grid.SetRoiOrigin({center.x - (0.5 * (g.roi_side - 1) * resolution), center.y - (0.5 * (g.roi_side - 1) * resolution)});
+  m.grid.SetRoiOrigin(
+      {center.x - (0.5 * (g.roi_side - 1) * resolution), center.y - (0.5 * (g.roi_side - 1) * resolution)});
   m.grid.AddScans(base_scans, {center.x, center.y});
 
   // §4.2 item 4: coarse pass over every second cell of the window, starting at its edge. With

@@ -122,7 +122,8 @@ bool IsStepTwoLattice(const CandidateCells& cells, std::int32_t stride) {
   const std::int64_t origin = cells.index[0];
   for (int y = 0; y < cells.ny; ++y) {
     for (int x = 0; x < cells.nx; ++x) {
-      if (cells.index[static_cast<std::size_t>(y) * cells.nx + x] != origin + 2 * x + 2 * static_cast<std::int64_t>(y) * stride) {
+      if (cells.index[static_cast<std::size_t>(y) * cells.nx + x] !=
+          origin + 2 * x + 2 * static_cast<std::int64_t>(y) * stride) {
         return false;
       }
     }

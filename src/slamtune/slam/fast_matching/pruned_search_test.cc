@@ -23,13 +23,15 @@ struct LoopPass {
     const auto room = testing::AsymmetricRoom();
     const auto laser = testing::CarmenLikeLaser();
     std::vector<LaserScan> base;
-    for (int i = 0; i < 10; ++i) base.push_back(testing::CastScan(room, laser, {2.0 + 0.5 * i, 1.5 + 0.3 * i, 0.4 * i}));
+    for (int i = 0; i < 10; ++i)
+      base.push_back(testing::CastScan(room, laser, {2.0 + 0.5 * i, 1.5 + 0.3 * i, 0.4 * i}));
     std::vector<const LaserScan*> ptrs;
     for (const LaserScan& s : base) ptrs.push_back(&s);
     const LaserScan query = testing::CastScan(room, laser, query_pose);
     grid.SetRoiOrigin({query_pose.x - 320 * 0.05, query_pose.y - 320 * 0.05});
     grid.AddScans(ptrs, {query_pose.x, query_pose.y});
-    table.Compute(query, query_pose.theta, 0.349066, 0.0349066, grid.roi_origin(), grid.scale(), grid.geometry().stride);
+    table.Compute(query, query_pose.theta, 0.349066, 0.0349066, grid.roi_origin(), grid.scale(),
+                  grid.geometry().stride);
     cells.nx = cells.ny = 81;
     for (int y = 0; y < 81; ++y) {
       for (int x = 0; x < 81; ++x) cells.index.push_back(grid.GridIndex({240 + 2 * x, 240 + 2 * y}));

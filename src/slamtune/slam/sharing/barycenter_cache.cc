@@ -62,7 +62,8 @@ void BarycenterCache::Provide(LaserScan& scan) {
 }
 
 void BarycenterCache::EvictLeastRecentlyUsedHalfLocked() {
-  counters_.evictions += EvictLeastRecentlyUsedHalf(entries_, [](const Entry&) { return kEntryBytes; }, &counters_.bytes);
+  counters_.evictions += EvictLeastRecentlyUsedHalf(
+      entries_, [](const Entry&) { return kEntryBytes; }, &counters_.bytes);
   counters_.entries = entries_.size();
 }
 
