@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
+#include <thread>
 
 namespace slamtune::optim {
 namespace {
@@ -110,7 +114,7 @@ class LoopbackRemote final : public RemoteEvaluators {
       ++served;
     }
   }
-  int served = 0;
+  std::atomic<int> served{0};
 
  private:
   int slots_;
@@ -120,8 +124,21 @@ TEST(BatchEvaluator, RemoteSlotsGiveTheLocalResults) {
   std::vector<Assignment> batch;
   for (int i = 0; i < 30; ++i) batch.push_back({{"r", 0.37 * (i % 17) - 0.5}});  // duplicates and failures
   BatchEvaluator local(Fake, nullptr, 1);
-  BatchEvaluator mixed(Fake, nullptr, 1);
   LoopbackRemote remote(3);
+  // The local thread holds its first set until the remote slots have served one, so both kinds
+  // of slot take part however the threads are scheduled (else the local thread may take all).
+  auto first = std::make_shared<std::atomic<bool>>(true);
+  BatchEvaluator mixed(
+      [&remote, first](const Assignment& a) {
+        if (first->exchange(false)) {
+          const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+          while (remote.served.load() == 0 && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+        }
+        return Fake(a);
+      },
+      nullptr, 1);
   mixed.SetRemote(&remote);
   const auto a = local.Evaluate(batch), b = mixed.Evaluate(batch);
   ASSERT_EQ(a.size(), b.size());
@@ -132,8 +149,8 @@ TEST(BatchEvaluator, RemoteSlotsGiveTheLocalResults) {
     EXPECT_EQ(a[i].reason, b[i].reason);
     EXPECT_EQ(ObjectiveSet().Score(a[i]), ObjectiveSet().Score(b[i]));  // bit-exact through JSON
   }
-  EXPECT_GT(remote.served, 0);
-  EXPECT_EQ(mixed.stats().remote, static_cast<std::size_t>(remote.served));
+  EXPECT_GT(remote.served.load(), 0);
+  EXPECT_EQ(mixed.stats().remote, static_cast<std::size_t>(remote.served.load()));
   EXPECT_EQ(mixed.stats().evaluated, local.stats().evaluated);
   EXPECT_EQ(mixed.stats().failed, local.stats().failed);
 }
@@ -143,7 +160,7 @@ TEST(BatchEvaluator, RemoteOnlyWhenItHasSlots) {
   LoopbackRemote none(0);
   eval.SetRemote(&none);
   eval.Evaluate({{{"r", 1}}, {{"r", 2}}});
-  EXPECT_EQ(none.served, 0);
+  EXPECT_EQ(none.served.load(), 0);
   EXPECT_EQ(eval.stats().evaluated, 2u);
 }
 
