@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh >/dev/null
 
-jobs="${SANITIZE_BUILD_JOBS:-2}"
+jobs="${SANITIZE_BUILD_JOBS:-$(nproc)}"
 build=build-asan
 regex="${1:-}"
 start=$(date +%s)
