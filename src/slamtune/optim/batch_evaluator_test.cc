@@ -7,7 +7,6 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <memory>
 #include <stdexcept>
 #include <thread>
 
@@ -127,10 +126,10 @@ TEST(BatchEvaluator, RemoteSlotsGiveTheLocalResults) {
   LoopbackRemote remote(3);
   // The local thread holds its first set until the remote slots have served one, so both kinds
   // of slot take part however the threads are scheduled (else the local thread may take all).
-  auto first = std::make_shared<std::atomic<bool>>(true);
+  std::atomic<bool> first{true};
   BatchEvaluator mixed(
-      [&remote, first](const Assignment& a) {
-        if (first->exchange(false)) {
+      [&remote, &first](const Assignment& a) {
+        if (first.exchange(false)) {
           const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
           while (remote.served.load() == 0 && std::chrono::steady_clock::now() < deadline) {
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
