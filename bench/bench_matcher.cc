@@ -14,7 +14,8 @@
 //     on or off.
 //   * Reference*: the same with ReferenceScanMatcher, a plain transcription of Karto's loop
 //     (double per pose, bound check per entry) = the "before" of every optimisation.
-//   * OccupancyGrid: the map of all loaded scans at 5 cm.
+//   * OccupancyGrid: the map of all loaded scans at 5 cm; SparseBox: the same and one scan
+//     250 m away (a box of ~300 x 180 m that the beams barely cover), map image included.
 // items_per_second is matches (or maps) per second; each iteration runs the same 30
 // matches. CPU time is the figure to compare on a shared machine.
 //
@@ -233,6 +234,23 @@ void BM_OccupancyGrid(benchmark::State& state) {
   state.counters["scans"] = static_cast<double>(scans.size());
 }
 
+// The same scans with a copy of the last one 250 m away: a box as large as a long building
+// (or a broken trajectory) whose cells no beam ever reaches, where the map's cost should be
+// the cells the beams cross, not its area.
+void BM_OccupancyGridSparseBox(benchmark::State& state) {
+  std::vector<LaserScan> scans = Scans();
+  LaserScan far = scans.back();
+  const Pose2 pose = far.corrected_pose();
+  far.SetCorrectedPose({pose.x + 250.0, pose.y + 150.0, pose.theta});
+  scans.push_back(far);
+  for (auto _ : state) {
+    const auto grid = slamtune::slam::OccupancyGrid::FromScans(std::span<const LaserScan>(scans), {});
+    benchmark::DoNotOptimize(grid.ToMapImage());
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["scans"] = static_cast<double>(scans.size());
+}
+
 BENCHMARK(BM_Sequential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceSequential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SequentialUnpenalised)->Unit(benchmark::kMillisecond);
@@ -246,6 +264,7 @@ BENCHMARK(BM_LoopCoarse)
 BENCHMARK(BM_ReferenceLoopCoarse)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridBuild)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OccupancyGrid)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OccupancyGridSparseBox)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

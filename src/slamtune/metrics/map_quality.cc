@@ -108,19 +108,17 @@ MapQualityDetail AnalyseMapQuality(const io::MapImage& map, const MapQualityOpti
   cv::Mat smoothed;
   cv::GaussianBlur(walls, smoothed, cv::Size(options.blur_size, options.blur_size), options.blur_sigma,
                    options.blur_sigma);
-  const cv::Mat response =
+  const HarrisTiles response =
       TiledHarrisResponse(smoothed, options.harris_block_size, options.harris_aperture, options.harris_k);
   // Only pixels of the map count (the padding outside the map image is not part of it).
   const cv::Rect in_map = cv::Rect(-to_map.x, -to_map.y, map.width, map.height) &
                           cv::Rect(0, 0, walls.cols, walls.rows);
   detail.corner_window = in_map + to_map;
-  const cv::Mat r = response(in_map);
-  double max_response = 0.0;
-  cv::minMaxLoc(r, nullptr, &max_response);
+  const double max_response = response.MaxIn(in_map);
   q.max_corner_response = max_response;
   if (max_response > 0.0) {
     const double threshold = options.corner_threshold * max_response;
-    cv::compare(r, threshold, detail.corner_mask, cv::CMP_GT);
+    detail.corner_mask = response.Above(in_map, threshold);
     q.corner_pixels = cv::countNonZero(detail.corner_mask);
     // Clusters: every 8-connected component has exactly one outer border (Suzuki & Abe 1985),
     // so counting RETR_EXTERNAL borders gives connectedComponents' count (tested) at a

@@ -16,14 +16,37 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace slamtune::metrics {
 
 inline constexpr int kHarrisTileSize = 128;  // pixels per tile side
 
-// Response R = det(M) - k trace(M)^2 of an 8-bit single-channel image, CV_32F, same size,
-// with cv::cornerHarris's arguments and default border. Preconditions (checked):
-// `image` is CV_8UC1 and non-empty, block_size >= 1, aperture in {1, 3, 5, 7}.
-cv::Mat TiledHarrisResponse(const cv::Mat& image, int block_size, int aperture, double k);
+// The response where it was computed: tiles (disjoint, in row-major order) with their CV_32F
+// values; 0 everywhere else. Kept sparse because a dense float image of a building-sized map
+// (30 M pixels) costs more to allocate and zero than the tiles cost to compute.
+struct HarrisTiles {
+  struct Tile {
+    cv::Rect rect;     // in image pixels
+    cv::Mat response;  // CV_32F, rect.size()
+  };
+  cv::Size size;  // of the image
+  std::vector<Tile> tiles;
+
+  // The largest response within `window` (image pixels): over the computed pixels, and 0 if
+  // some pixel of the window lies in no tile; 0 for an empty window. Equal to cv::minMaxLoc's
+  // maximum over Dense()(window).
+  double MaxIn(const cv::Rect& window) const;
+  // 255 where the response inside `window` exceeds `threshold` (> 0), else 0; window-sized
+  // CV_8U. Equal to Dense()(window) > threshold.
+  cv::Mat Above(const cv::Rect& window, double threshold) const;
+  // The whole response as one CV_32F image (tests and pictures).
+  cv::Mat Dense() const;
+};
+
+// Response R = det(M) - k trace(M)^2 of an 8-bit single-channel image, with cv::cornerHarris's
+// arguments and default border. Preconditions (checked): `image` is CV_8UC1 and non-empty,
+// block_size >= 1, aperture in {1, 3, 5, 7}.
+HarrisTiles TiledHarrisResponse(const cv::Mat& image, int block_size, int aperture, double k);
 
 }  // namespace slamtune::metrics

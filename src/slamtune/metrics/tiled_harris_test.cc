@@ -25,7 +25,7 @@ double RelativeDifference(const cv::Mat& image, int block, int aperture, double 
   cv::Mat reference;
   cv::cornerHarris(image, reference, block, aperture, k);
   const double scale = cv::norm(reference, cv::NORM_INF);
-  const double difference = cv::norm(TiledHarrisResponse(image, block, aperture, k), reference, cv::NORM_INF);
+  const double difference = cv::norm(TiledHarrisResponse(image, block, aperture, k).Dense(), reference, cv::NORM_INF);
   return scale > 0.0 ? difference / scale : difference;
 }
 
@@ -43,7 +43,7 @@ TEST_P(TiledHarrisTest, EqualsWholeImageCornerHarrisOnWalls) {
   ASSERT_GT(max_response, 0.0);  // the comparison is not between two empty images
   EXPECT_LE(RelativeDifference(image, block, aperture, k), kRounding);
   // What the metric uses, corner pixels over 1 % of the largest response, is identical.
-  const cv::Mat tiled = TiledHarrisResponse(image, block, aperture, k);
+  const cv::Mat tiled = TiledHarrisResponse(image, block, aperture, k).Dense();
   EXPECT_EQ(cv::countNonZero((tiled > 0.01 * max_response) != (reference > 0.01 * max_response)), 0);
 }
 
@@ -55,6 +55,34 @@ TEST_P(TiledHarrisTest, EqualsWholeImageCornerHarrisOnNoise) {
   EXPECT_LE(RelativeDifference(noise, block, aperture, k), kRounding);
 }
 
+// What the map metric reads: the largest response and the mask above a threshold, on windows
+// that cut through tiles, against the dense image.
+TEST_P(TiledHarrisTest, MaxAndMaskOfAWindowEqualTheDenseImage) {
+  const auto [block, aperture, k] = GetParam();
+  const HarrisTiles tiles = TiledHarrisResponse(SmoothedRooms(), block, aperture, k);
+  const cv::Mat dense = tiles.Dense();
+  for (const cv::Rect window : {cv::Rect(0, 0, dense.cols, dense.rows), cv::Rect(37, 11, 250, 201),
+                                cv::Rect(200, 150, 200, 150), cv::Rect(5, 5, 1, 1)}) {
+    double expected_max = 0.0;
+    cv::minMaxLoc(dense(window), nullptr, &expected_max);
+    EXPECT_EQ(tiles.MaxIn(window), expected_max) << window;
+    for (const double fraction : {0.01, 0.2}) {
+      const double threshold = fraction * std::max(expected_max, 1.0);
+      EXPECT_EQ(cv::countNonZero(tiles.Above(window, threshold) != (dense(window) > threshold)), 0) << window;
+    }
+  }
+  // A window along an edge, inside one tile, where every response is negative: the maximum
+  // is negative too (no uncovered pixel adds a 0).
+  cv::Mat flat(kHarrisTileSize, kHarrisTileSize, CV_8UC1, cv::Scalar(0));
+  cv::line(flat, {10, 64}, {118, 64}, cv::Scalar(255), 3);
+  const HarrisTiles line = TiledHarrisResponse(flat, block, aperture, k);
+  const cv::Rect edge(20, 62, 80, 1);
+  double line_max = 0.0;
+  cv::minMaxLoc(line.Dense()(edge), nullptr, &line_max);
+  ASSERT_LT(line_max, 0.0);
+  EXPECT_EQ(line.MaxIn(edge), line_max);
+}
+
 INSTANTIATE_TEST_SUITE_P(Options, TiledHarrisTest,
                          ::testing::Values(std::make_tuple(2, 3, 0.04), std::make_tuple(3, 5, 0.06),
                                            std::make_tuple(2, 1, 0.04), std::make_tuple(5, 7, 0.1)));
@@ -64,7 +92,10 @@ TEST(TiledHarrisSmallTest, ImageSmallerThanATileAndEmptyImage) {
   cv::rectangle(small, cv::Rect(5, 5, 10, 8), cv::Scalar(255));
   EXPECT_LE(RelativeDifference(small, 2, 3, 0.04), kRounding);
   const cv::Mat empty = cv::Mat::zeros(kHarrisTileSize * 2 + 3, kHarrisTileSize + 1, CV_8UC1);
-  EXPECT_EQ(cv::countNonZero(TiledHarrisResponse(empty, 2, 3, 0.04)), 0);
+  const HarrisTiles none = TiledHarrisResponse(empty, 2, 3, 0.04);
+  EXPECT_TRUE(none.tiles.empty());
+  EXPECT_EQ(cv::countNonZero(none.Dense()), 0);
+  EXPECT_EQ(none.MaxIn(cv::Rect(0, 0, empty.cols, empty.rows)), 0.0);
 }
 
 }  // namespace

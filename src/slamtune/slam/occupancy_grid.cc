@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -69,26 +70,38 @@ OccupancyGrid OccupancyGrid::Build(const ScanRange& scans, const OccupancyGridOp
   grid.width_ = static_cast<int>(width);
   grid.height_ = static_cast<int>(height);
   grid.origin_ = box_min;
-  const std::size_t cells = static_cast<std::size_t>(grid.width_) * grid.height_;
-  grid.pass_.assign(cells, 0);
-  grid.hit_.assign(cells, 0);
+  grid.min_pass_through_ = static_cast<std::uint32_t>(options.min_pass_through);
+  grid.occupancy_threshold_ = options.occupancy_threshold;
+  grid.tiles_x_ = (grid.width_ + kTileMask) >> kTileShift;
+  grid.tiles_y_ = (grid.height_ + kTileMask) >> kTileShift;
+  grid.tile_of_.assign(static_cast<std::size_t>(grid.tiles_x_) * grid.tiles_y_, nullptr);
   grid.summary_.scans = static_cast<int>(scans.size());
   for (std::size_t i = 0; i < scans.size(); ++i) grid.AddScan(scans[i]);
-  grid.UpdateStates(options);
+  grid.Summarise();
   return grid;
 }
 
+OccupancyGrid::CellCounts* OccupancyGrid::NewTile() {
+  // Value-initialised: every count starts at zero.
+  tiles_.push_back(std::make_unique<CellCounts[]>(kTileCells));
+  return tiles_.back().get();
+}
+
+const OccupancyGrid::CellCounts& OccupancyGrid::counts(int x, int y) const {
+  SLAMTUNE_CHECK_MSG(Contains(x, y), "occupancy grid cell out of range");
+  static const CellCounts kNone;
+  const CellCounts* tile = tile_of_[static_cast<std::size_t>(y >> kTileShift) * tiles_x_ + (x >> kTileShift)];
+  return tile == nullptr ? kNone : tile[((y & kTileMask) << kTileShift) | (x & kTileMask)];
+}
+
 void OccupancyGrid::TraceBeam(const Eigen::Vector2i& from, const Eigen::Vector2i& to) {
-  std::uint32_t* pass = pass_.data();
   if (Contains(from.x(), from.y()) && Contains(to.x(), to.y())) {
     // Every traced cell lies in the box of the two ends, hence inside: no per-cell test.
-    const int w = width_;
-    TraceGridLine(from.x(), from.y(), to.x(), to.y(),
-                  [pass, w](int x, int y) { ++pass[static_cast<std::size_t>(y) * w + x]; });
+    TraceGridLine(from.x(), from.y(), to.x(), to.y(), [this](int x, int y) { ++MutableCounts(x, y).pass; });
   } else {
     // Cells outside the grid are skipped; tracing goes on (§8.1).
-    TraceGridLine(from.x(), from.y(), to.x(), to.y(), [this, pass](int x, int y) {
-      if (Contains(x, y)) ++pass[Index(x, y)];
+    TraceGridLine(from.x(), from.y(), to.x(), to.y(), [this](int x, int y) {
+      if (Contains(x, y)) ++MutableCounts(x, y).pass;
     });
   }
 }
@@ -121,8 +134,9 @@ void OccupancyGrid::AddScan(const LaserScan& scan) {
     if (end_valid) {
       if (Contains(to.x(), to.y())) {
         // The end cell was passed by the trace too: a hit cell gets pass +2, hit +1.
-        ++pass_[Index(to.x(), to.y())];
-        ++hit_[Index(to.x(), to.y())];
+        CellCounts& end_cell = MutableCounts(to.x(), to.y());
+        ++end_cell.pass;
+        ++end_cell.hit;
         ++summary_.hits;
       } else {
         ++summary_.hits_outside;
@@ -131,26 +145,30 @@ void OccupancyGrid::AddScan(const LaserScan& scan) {
   }
 }
 
-void OccupancyGrid::UpdateStates(const OccupancyGridOptions& options) {
-  states_.assign(pass_.size(), CellState::kUnknown);
-  const std::uint32_t min_pass = static_cast<std::uint32_t>(options.min_pass_through);
-  for (std::size_t i = 0; i < pass_.size(); ++i) {
-    // §8.1: strictly more than MinPassThrough passes, then hit/pass strictly above the threshold.
-    if (pass_[i] > min_pass) {
-      const double ratio = static_cast<double>(hit_[i]) / static_cast<double>(pass_[i]);
-      if (ratio > options.occupancy_threshold) {
-        states_[i] = CellState::kOccupied;
-        ++summary_.occupied_cells;
-      } else {
-        states_[i] = CellState::kFree;
-        ++summary_.free_cells;
-        summary_.hits_in_free_cells += hit_[i];
+CellState OccupancyGrid::StateOf(const CellCounts& c) const {
+  // §8.1: strictly more than MinPassThrough passes, then hit/pass strictly above the threshold.
+  if (c.pass <= min_pass_through_) return CellState::kUnknown;
+  const double ratio = static_cast<double>(c.hit) / static_cast<double>(c.pass);
+  return ratio > occupancy_threshold_ ? CellState::kOccupied : CellState::kFree;
+}
+
+void OccupancyGrid::Summarise() {
+  // Cells of unreached tiles, and the cells of edge tiles beyond the grid, have no counts:
+  // unknown without hits. Only the known classes need counting.
+  for (const Tile& tile : tiles_) {
+    for (std::size_t i = 0; i < kTileCells; ++i) {
+      const CellCounts& c = tile[i];
+      switch (StateOf(c)) {
+        case CellState::kOccupied: ++summary_.occupied_cells; break;
+        case CellState::kFree:
+          ++summary_.free_cells;
+          summary_.hits_in_free_cells += c.hit;
+          break;
+        case CellState::kUnknown: summary_.hits_in_unknown_cells += c.hit; break;
       }
-    } else {
-      ++summary_.unknown_cells;
-      summary_.hits_in_unknown_cells += hit_[i];
     }
   }
+  summary_.unknown_cells = static_cast<std::int64_t>(width_) * height_ - summary_.occupied_cells - summary_.free_cells;
 }
 
 io::MapImage OccupancyGrid::ToMapImage() const {
@@ -159,15 +177,24 @@ io::MapImage OccupancyGrid::ToMapImage() const {
   image.height = height_;
   image.resolution = resolution_;
   image.origin = {origin_.x(), origin_.y(), 0.0};
-  image.pixels.resize(states_.size());
-  for (int y = 0; y < height_; ++y) {
-    // Image row 0 is the map's top row (map_saver flips y, §8.3).
-    std::uint8_t* row = image.pixels.data() + static_cast<std::size_t>(height_ - 1 - y) * width_;
-    for (int x = 0; x < width_; ++x) {
-      switch (states_[Index(x, y)]) {
-        case CellState::kOccupied: row[x] = io::kMapOccupied; break;
-        case CellState::kFree: row[x] = io::kMapFree; break;
-        case CellState::kUnknown: row[x] = io::kMapUnknown; break;
+  image.pixels.assign(static_cast<std::size_t>(width_) * height_, io::kMapUnknown);
+  for (int ty = 0; ty < tiles_y_; ++ty) {
+    for (int tx = 0; tx < tiles_x_; ++tx) {
+      const CellCounts* tile = tile_of_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+      if (tile == nullptr) continue;
+      const int x0 = tx << kTileShift, y0 = ty << kTileShift;
+      const int x1 = std::min(width_, x0 + kTileSide), y1 = std::min(height_, y0 + kTileSide);
+      for (int y = y0; y < y1; ++y) {
+        // Image row 0 is the map's top row (map_saver flips y, §8.3).
+        std::uint8_t* row = image.pixels.data() + static_cast<std::size_t>(height_ - 1 - y) * width_;
+        const CellCounts* counts = tile + (static_cast<std::size_t>(y & kTileMask) << kTileShift);
+        for (int x = x0; x < x1; ++x) {
+          switch (StateOf(counts[x & kTileMask])) {
+            case CellState::kOccupied: row[x] = io::kMapOccupied; break;
+            case CellState::kFree: row[x] = io::kMapFree; break;
+            case CellState::kUnknown: break;
+          }
+        }
       }
     }
   }

@@ -6,15 +6,19 @@
 // OccupancyThreshold. The map metrics read the result through io::MapImage (occupied 0,
 // free 254, unknown 205, image row 0 = top row), exactly the pixels map_saver would write.
 //
-// Speed matters (one map per SLAM run, thousands of runs per optimisation): counts are flat
-// integer arrays, lines whose two ends are inside the grid are traced without per-cell
-// bounds checks, and nothing is allocated per beam.
+// Speed matters (one map per SLAM run, thousands of runs per optimisation): counts are kept
+// in 64 x 64-cell tiles allocated when a beam first reaches them, so a map whose box is
+// mostly never seen (a long building, a broken trajectory) costs the cells its beams cross,
+// not its area; lines whose two ends are inside the grid are traced without per-cell bounds
+// checks, and nothing is allocated per beam. Cells of tiles no beam reached have no passes:
+// unknown, as Karto's zero counts make them.
 #pragma once
 
 #include <Eigen/Core>
 
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -113,32 +117,58 @@ class OccupancyGrid {
   Eigen::Vector2i WorldToGrid(const Eigen::Vector2d& world) const;
   bool Contains(int x, int y) const { return x >= 0 && x < width_ && y >= 0 && y < height_; }
 
-  CellState state(int x, int y) const { return states_[Index(x, y)]; }
-  std::uint32_t pass_count(int x, int y) const { return pass_[Index(x, y)]; }
-  std::uint32_t hit_count(int x, int y) const { return hit_[Index(x, y)]; }
+  CellState state(int x, int y) const { return StateOf(counts(x, y)); }
+  std::uint32_t pass_count(int x, int y) const { return counts(x, y).pass; }
+  std::uint32_t hit_count(int x, int y) const { return counts(x, y).hit; }
   const OccupancyGridSummary& summary() const { return summary_; }
+  // Tiles some beam reached (for tests and memory accounting).
+  int allocated_tiles() const { return static_cast<int>(tiles_.size()); }
 
   // The map as map_saver writes it (§8.3): occupied 0, free 254, unknown 205; image row 0 is
   // map row height-1; origin (box min x, box min y, 0); resolution as built.
   io::MapImage ToMapImage() const;
 
  private:
+  struct CellCounts {
+    std::uint32_t pass = 0;
+    std::uint32_t hit = 0;
+  };
+  static constexpr int kTileShift = 6;  // tiles of 64 x 64 cells (32 KB of counts)
+  static constexpr int kTileSide = 1 << kTileShift;
+  static constexpr int kTileMask = kTileSide - 1;
+  static constexpr std::size_t kTileCells = static_cast<std::size_t>(kTileSide) * kTileSide;
+  using Tile = std::unique_ptr<CellCounts[]>;
+
   OccupancyGrid() = default;
   template <typename ScanRange>
   static OccupancyGrid Build(const ScanRange& scans, const OccupancyGridOptions& options);
   void AddScan(const LaserScan& scan);
   void TraceBeam(const Eigen::Vector2i& from, const Eigen::Vector2i& to);
-  void UpdateStates(const OccupancyGridOptions& options);
-  std::size_t Index(int x, int y) const { return static_cast<std::size_t>(y) * width_ + x; }
+  void Summarise();
+  CellState StateOf(const CellCounts& c) const;
+  // Counts of an in-grid cell, allocating its tile on first use.
+  CellCounts& MutableCounts(int x, int y) {
+    CellCounts*& tile = tile_of_[static_cast<std::size_t>(y >> kTileShift) * tiles_x_ + (x >> kTileShift)];
+    if (tile == nullptr) tile = NewTile();
+    return tile[((y & kTileMask) << kTileShift) | (x & kTileMask)];
+  }
+  // Counts of an in-grid cell (checked); zero in a tile no beam reached.
+  const CellCounts& counts(int x, int y) const;
+  CellCounts* NewTile();
 
   int width_ = 0;
   int height_ = 0;
   double resolution_ = 0.05;
   double scale_ = 20.0;
   Eigen::Vector2d origin_{0, 0};
-  std::vector<std::uint32_t> pass_;
-  std::vector<std::uint32_t> hit_;
-  std::vector<CellState> states_;
+  std::uint32_t min_pass_through_ = 2;
+  double occupancy_threshold_ = 0.1;
+  int tiles_x_ = 0;
+  int tiles_y_ = 0;
+  // Row-major over tiles; null where no beam has reached. The tiles themselves are owned by
+  // tiles_ (in allocation order) so that moving the grid keeps every pointer valid.
+  std::vector<CellCounts*> tile_of_;
+  std::vector<Tile> tiles_;
   OccupancyGridSummary summary_;
 };
 

@@ -237,6 +237,79 @@ TEST(OccupancyGrid, RoomMapHasWallsAndFreeSpace) {
   EXPECT_EQ(OccupancyGrid::FromScans(ptrs, {}).ToMapImage().pixels, grid.ToMapImage().pixels);
 }
 
+// Counts live in 64 x 64-cell tiles allocated where beams reach: at 1 cm the room spans many
+// tiles. Every cell's state, the image and the summary must agree as if the counts were one
+// array, beams must count across tile edges, and tiles no beam reached must read as unknown.
+TEST(OccupancyGrid, TiledCountsReadAsOneGrid) {
+  const auto room = testing::AsymmetricRoom();
+  const auto laser = testing::CarmenLikeLaser();
+  std::vector<LaserScan> scans;
+  for (int i = 0; i < 6; ++i) scans.push_back(testing::CastScan(room, laser, {1.0 + 0.6 * i, 1.5, 0.7 * i}));
+  // A far-off scan of a lone pillar stretches the box, leaving tiles between no beam crosses.
+  scans.push_back(FanScan({0.5, 0.5, 0.5}, 0.0, 0.05, 0.1, 20.0, 12.0, {30.0, 30.0, 0.0}));
+  OccupancyGridOptions fine;
+  fine.resolution = 0.01;
+  const OccupancyGrid grid = OccupancyGrid::FromScans(std::span<const LaserScan>(scans), fine);
+  const int tiles = ((grid.width() + 63) / 64) * ((grid.height() + 63) / 64);
+  ASSERT_GT(grid.allocated_tiles(), 9);
+  EXPECT_LT(grid.allocated_tiles(), tiles / 2);
+
+  const io::MapImage image = grid.ToMapImage();
+  OccupancyGridSummary counted;
+  std::int64_t passes = 0;
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      const CellState state = grid.state(x, y);
+      const std::uint8_t pixel = image.at(x, grid.height() - 1 - y);
+      counted.hits += grid.hit_count(x, y);
+      passes += grid.pass_count(x, y);
+      switch (state) {
+        case CellState::kOccupied:
+          ++counted.occupied_cells;
+          ASSERT_EQ(pixel, io::kMapOccupied);
+          break;
+        case CellState::kFree:
+          ++counted.free_cells;
+          counted.hits_in_free_cells += grid.hit_count(x, y);
+          ASSERT_EQ(pixel, io::kMapFree);
+          break;
+        case CellState::kUnknown:
+          ++counted.unknown_cells;
+          counted.hits_in_unknown_cells += grid.hit_count(x, y);
+          ASSERT_EQ(pixel, io::kMapUnknown);
+          break;
+      }
+    }
+  }
+  const OccupancyGridSummary& s = grid.summary();
+  EXPECT_GT(s.occupied_cells, 100);
+  EXPECT_EQ(counted.occupied_cells, s.occupied_cells);
+  EXPECT_EQ(counted.free_cells, s.free_cells);
+  EXPECT_EQ(counted.unknown_cells, s.unknown_cells);
+  EXPECT_EQ(counted.hits, s.hits);
+  EXPECT_EQ(counted.hits_in_free_cells, s.hits_in_free_cells);
+  EXPECT_EQ(counted.hits_in_unknown_cells, s.hits_in_unknown_cells);
+  EXPECT_GT(passes, s.beams_traced * 100);
+
+  // One beam of the first scan, traced by hand: every cell on its way counted once more than
+  // the cells beside the path in an otherwise empty grid.
+  const LaserScan ray = FanScan({5.0}, 0.3, 0.1, 0.1, 20.0, 12.0, {0.0, 0.0, 0.0});
+  const LaserScan corner = FanScan({0.2}, kPi, 0.1, 0.1, 20.0, 12.0, {0.0, 0.0, 0.0});
+  const LaserScan* both[] = {&ray, &corner};
+  const OccupancyGrid line = OccupancyGrid::FromScans(both, fine);
+  const Eigen::Vector2i from = line.WorldToGrid({0.0, 0.0});
+  const Eigen::Vector2i to = line.WorldToGrid({5.0 * std::cos(0.3), 5.0 * std::sin(0.3)});
+  int cells = 0;
+  TraceGridLine(from.x(), from.y(), to.x(), to.y(), [&](int x, int y) {
+    if (!line.Contains(x, y)) return;
+    ++cells;
+    const bool at_sensor = x == from.x() && y == from.y();
+    const bool at_end = x == to.x() && y == to.y();
+    EXPECT_EQ(line.pass_count(x, y), at_sensor ? 2u : at_end ? 2u : 1u) << x << "," << y;
+  });
+  EXPECT_GT(cells, 400);  // crosses several 64-cell tiles
+}
+
 TEST(OccupancyGrid, NoScansGiveAnEmptyMap) {
   const OccupancyGrid grid = OccupancyGrid::FromScans(std::span<const LaserScan* const>(), {});
   EXPECT_EQ(grid.width(), 0);
