@@ -40,7 +40,7 @@ struct HarrisTiles {
   // 255 where the response inside `window` exceeds `threshold` (> 0), else 0; window-sized
   // CV_8U. Equal to Dense()(window) > threshold.
   cv::Mat Above(const cv::Rect& window, double threshold) const;
-  // The whole response as one CV_32F image (tests and pictures).
+  // The whole response as one CV_32F image, for comparison with cv::cornerHarris (tests).
   cv::Mat Dense() const;
 };
 

@@ -121,7 +121,8 @@ class OccupancyGrid {
   std::uint32_t pass_count(int x, int y) const { return counts(x, y).pass; }
   std::uint32_t hit_count(int x, int y) const { return counts(x, y).hit; }
   const OccupancyGridSummary& summary() const { return summary_; }
-  // Tiles some beam reached (for tests and memory accounting).
+  // Tiles some beam reached: the cells stored are 4096 times this (tests check that the tiles
+  // no beam reached are not stored).
   int allocated_tiles() const { return static_cast<int>(tiles_.size()); }
 
   // The map as map_saver writes it (§8.3): occupied 0, free 254, unknown 205; image row 0 is
