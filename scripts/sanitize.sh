@@ -17,8 +17,11 @@ build=build-asan
 regex="${1:-}"
 start=$(date +%s)
 
+# -O1, as the sanitizers' documentation advises: it compiles about a third faster than -O2 and
+# keeps the stack traces exact; the line tables come from SLAMTUNE_SANITIZE (-g1).
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
-  nice cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLAMTUNE_SANITIZE=ON \
+  nice cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
+    -DSLAMTUNE_SANITIZE=ON \
     -DSLAMTUNE_BUILD_BENCH=OFF -DSLAMTUNE_WITH_MPI=OFF >/dev/null
 fi
 if [[ -z "$regex" ]]; then

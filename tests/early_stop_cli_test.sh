@@ -18,7 +18,9 @@ trap cleanup EXIT
 failures=0
 fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 
-args=(--world office --population 8 --generations 30 --seed 1 --jobs 2)
+# Seed 4 settles after 8 generations (seed 1 after 23): long enough to interrupt before the stop,
+# short enough to run twice (whole, then cut and resumed) in a test.
+args=(--world office --population 8 --generations 30 --seed 4 --jobs 2)
 
 # stopped_at FILE: N of the line "NSGA-III stopped after generation N of 30: ...", or nothing.
 stopped_at() { sed -n 's/^NSGA-III stopped after generation \([0-9]*\) of 30: .*/\1/p' "$1"; }
