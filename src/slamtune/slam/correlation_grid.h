@@ -72,7 +72,9 @@ class CorrelationGrid {
   // Zeroes every cell written since the previous Clear (all cells start at zero).
   void Clear();
   // Builds the grid from base scans as seen from `viewpoint` (§4.3): clear, then for each
-  // scan in the given order its back-face-filtered unfiltered points in beam order.
+  // scan in the given order its back-face-filtered unfiltered points in beam order. The bytes
+  // are those of that order; when no kernel value off the centre is 100 (so that order cannot
+  // matter) the cells are inserted row by row instead, which keeps the smeared rows in cache.
   void AddScans(std::span<const LaserScan* const> base_scans, const Eigen::Vector2d& viewpoint);
   // Inserts one world point (§4.3): skipped if not finite, outside the ROI or already 100;
   // otherwise set to 100 and smeared by max-merge. Returns whether the cell was set.
@@ -119,6 +121,14 @@ class CorrelationGrid {
   // than zeroing the box.
   int touched_x0_, touched_y0_, touched_x1_, touched_y1_;
   std::vector<std::int32_t> smeared_centres_;
+  // AddScans' row-ordered insertion: the stored cells of the points, the same sorted by row,
+  // and the counting sort's row offsets. order_free_: no kernel value off the centre is 100.
+  struct HitCell {
+    int x, y;
+  };
+  bool order_free_ = false;
+  std::vector<HitCell> hit_cells_, sorted_cells_;
+  std::vector<std::int32_t> row_starts_;
 };
 
 }  // namespace slamtune::slam

@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include "slamtune/common/karto_math.h"
+#include "slamtune/slam/back_face_filter.h"
 #include "slamtune/slam/testing/synthetic_room.h"
 
 namespace slamtune::slam {
@@ -201,6 +203,46 @@ TEST(CorrelationGrid, RebuildAfterClearEqualsFreshGrid) {
   int occupied = 0;
   for (std::int32_t i = 0; i < fresh.data_size(); ++i) occupied += fresh.data()[i] == kCorrelationOccupied;
   EXPECT_GT(occupied, 100);
+}
+
+// AddScans inserts the points row by row when no kernel value off the centre is 100, and in
+// beam order otherwise (§4.3 [QUIRK]): either way the bytes must be those of inserting every
+// back-face-filtered point in scan and beam order, overlapping scans and repeated cells included.
+TEST(CorrelationGrid, AddScansEqualsInsertingEveryPointInBeamOrder) {
+  const auto room = testing::AsymmetricRoom();
+  const auto laser = testing::CarmenLikeLaser();
+  std::vector<LaserScan> scans;
+  for (int i = 0; i < 6; ++i) {
+    scans.push_back(testing::CastScan(room, laser, {2.0 + 0.37 * i, 2.0 + 0.11 * i, 0.2 * i}));
+  }
+  scans.push_back(scans.front());  // every cell of a scan repeated
+  std::vector<const LaserScan*> bases;
+  for (const LaserScan& scan : scans) bases.push_back(&scan);
+  const Eigen::Vector2d viewpoint(3.0, 2.5);
+  struct KernelCase {
+    const char* name;
+    double dimension, resolution, sigma;
+  };
+  const KernelCase cases[] = {{"sequential slam_karto", 0.3, 0.01, 0.03},
+                              {"loop", 8.0, 0.05, 0.03},
+                              {"sequential toolbox: neighbours round to 100", 0.5, 0.01, 0.1}};
+  for (const KernelCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    CorrelationGrid by_scans(c.dimension, c.resolution, c.sigma, 12.0);
+    CorrelationGrid by_points(c.dimension, c.resolution, c.sigma, 12.0);
+    const double half = 0.5 * (by_scans.geometry().roi_side - 1) * c.resolution;
+    by_scans.SetRoiOrigin(viewpoint - Eigen::Vector2d(half, half));
+    by_points.SetRoiOrigin(by_scans.roi_origin());
+    by_scans.AddScans(bases, viewpoint);
+    int inserted = 0;
+    for (const LaserScan* scan : bases) {
+      ForEachValidPoint(scan->unfiltered_points(), viewpoint,
+                        [&](const Eigen::Vector2d& p) { inserted += by_points.AddPoint(p); });
+    }
+    EXPECT_GT(inserted, 300);
+    const std::size_t bytes = static_cast<std::size_t>(by_scans.data_size()) + CorrelationGrid::kPadding;
+    EXPECT_TRUE(std::equal(by_scans.data(), by_scans.data() + bytes, by_points.data()));
+  }
 }
 
 // Clear zeroes only what was written (kernel squares or their box): points on every ROI edge
