@@ -75,13 +75,9 @@ CorrelationGrid::CorrelationGrid(double search_dimension, double resolution, dou
   const std::int64_t padding = std::max<std::int64_t>(kPadding, padded_side_);
   SLAMTUNE_CHECK(geometry_.data_size() + padding < std::numeric_limits<std::int32_t>::max());
   data_.assign(static_cast<std::size_t>(geometry_.data_size() + padding), 0);
-  order_free_ = true;
-  for (int j = 0; j < side; ++j) {
-    for (int i = 0; i < side; ++i) {
-      const bool centre = i == geometry_.kernel_half && j == geometry_.kernel_half;
-      if (!centre && kernel_[static_cast<std::size_t>(i + side * j)] >= kCorrelationOccupied) order_free_ = false;
-    }
-  }
+  // The centre is always 100; order_free_ when no other value is.
+  order_free_ = std::count_if(kernel_.begin(), kernel_.end(),
+                              [](std::uint8_t v) { return v >= kCorrelationOccupied; }) == 1;
   row_starts_.assign(static_cast<std::size_t>(geometry_.stored_side) + 1, 0);
   touched_x0_ = touched_y0_ = std::numeric_limits<int>::max();
   touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();
@@ -206,11 +202,14 @@ bool CorrelationGrid::AddPoint(const Eigen::Vector2d& world) {
 
 void CorrelationGrid::AddScans(std::span<const LaserScan* const> base_scans, const Eigen::Vector2d& viewpoint) {
   Clear();
-  if (!order_free_) {
+  auto for_each_point = [&](auto&& visit) {
     for (const LaserScan* scan : base_scans) {
       SLAMTUNE_CHECK(scan != nullptr);
-      ForEachValidPoint(scan->unfiltered_points(), viewpoint, [this](const Eigen::Vector2d& p) { AddPoint(p); });
+      ForEachValidPoint(scan->unfiltered_points(), viewpoint, visit);
     }
+  };
+  if (!order_free_) {
+    for_each_point([this](const Eigen::Vector2d& p) { AddPoint(p); });
     return;
   }
   // Every kernel value off the centre is below 100, so a cell holds 100 only where a point was
@@ -218,13 +217,10 @@ void CorrelationGrid::AddScans(std::span<const LaserScan* const> base_scans, con
   // the kernels of the distinct cells, in any order. Inserting them row by row (a stable
   // counting sort on the stored row) keeps the rows being smeared in the cache.
   hit_cells_.clear();
-  for (const LaserScan* scan : base_scans) {
-    SLAMTUNE_CHECK(scan != nullptr);
-    ForEachValidPoint(scan->unfiltered_points(), viewpoint, [this](const Eigen::Vector2d& p) {
-      int x, y;
-      if (CellOf(p, &x, &y)) hit_cells_.push_back({x, y});
-    });
-  }
+  for_each_point([this](const Eigen::Vector2d& p) {
+    int x, y;
+    if (CellOf(p, &x, &y)) hit_cells_.push_back({x, y});
+  });
   if (hit_cells_.empty()) return;
   // row_starts_[y] counts the cells of rows below y, then serves as row y's next free slot.
   std::fill(row_starts_.begin(), row_starts_.end(), 0);
