@@ -134,6 +134,7 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
   using namespace slamtune;
   optim::OptimizeSettings settings;
   settings.population = population;
+  settings.divisions = 10;  // the paper's 66 reference points, whatever the population
   settings.generations = generations;
   settings.seed = seed;
   for (const auto& d : settings.space.dimensions) {

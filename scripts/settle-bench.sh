@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The stopping rule against the fixed budget on the shared logs (docs/benchmarks.md, "Stopping
-# once the answer has settled"): for each log, the default `slamtune optimize` (population 66,
-# 60 generations, stops when settled) and the same with --no-early-stop, one after the other,
-# with wall time and peak memory from /usr/bin/time. The relations are given, so each answer's
+# once the answer has settled"): for each log, the default `slamtune optimize` (population 36,
+# at most 60 generations, stops when settled), the same with --no-early-stop, and the seed
+# paper's whole budget (mode `paper`: population 66, 10 divisions, 60 generations), one after
+# the other, with wall time and peak memory from /usr/bin/time. The relations are given, so each answer's
 # translational error is known (they do not steer the search).
 #
 # Resumable: each run works in runs/settle/LOG-MODE; an interrupted run is continued with
@@ -11,6 +12,7 @@
 # largest of them.
 #   scripts/settle-bench.sh [LOG...]      default: aces mit-csail mit-killian intel
 #   SETTLE_MODES="default" scripts/settle-bench.sh intel    one mode only
+#   modes: default, no-early-stop, paper (default: all three)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 data=../shared/datasets
@@ -18,7 +20,7 @@ out=runs/settle
 bin=./build/slamtune
 [[ -x $bin ]] || { echo "build slamtune first (scripts/test.sh or cmake --build build)" >&2; exit 2; }
 logs=("$@"); [[ ${#logs[@]} -gt 0 ]] || logs=(aces mit-csail mit-killian intel)
-read -r -a modes <<< "${SETTLE_MODES:-default no-early-stop}"
+read -r -a modes <<< "${SETTLE_MODES:-default no-early-stop paper}"
 mkdir -p "$out"
 
 run_one() {  # LOG MODE
@@ -30,7 +32,12 @@ run_one() {  # LOG MODE
     cmd+=(--resume "$dir")
   else
     cmd+=("$data/$log.clf.gz" --relations "$data/$log.relations" --out "$dir")
-    [[ $mode == no-early-stop ]] && cmd+=(--no-early-stop)
+    case $mode in
+      default) ;;
+      no-early-stop) cmd+=(--no-early-stop) ;;
+      paper) cmd+=(--no-early-stop --population 66 --divisions 10) ;;
+      *) echo "unknown mode $mode (default, no-early-stop, paper)" >&2; exit 2 ;;
+    esac
   fi
   mkdir -p "$dir"
   echo "== $log $mode: ${cmd[*]}"

@@ -52,6 +52,19 @@ grep -Eq '"set": *"consistency"' "$work/tiny_consistency/results.json" || fail "
 grep -q '^gen 1/1 ' "$work/tiny_noshare.txt" || fail "--no-share run printed no progress line"
 if grep '^gen' "$work/tiny_noshare.txt" | grep -q 'matches:'; then fail "--no-share progress mentions shared matches"; fi
 
+# The default budget: on a log, 36 individuals over the 36 reference points of 7 divisions; on
+# the built-in world, 10 divisions unless --divisions is given.
+setting() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["settings"][sys.argv[2]])' "$@"; }
+"$bin" optimize --out "$work/world_budget" --population 4 --generations 1 --seed 5 --jobs 2 --quiet > /dev/null 2>&1 ||
+  fail "optimize (world budget) failed"
+[[ $(setting "$work/world_budget/results.json" divisions) == 10 ]] || fail "the built-in world's divisions are not 10"
+"$bin" simulate --world office --out "$work/office_log" > /dev/null 2>&1 || fail "simulate failed"
+"$bin" optimize "$work/office_log/office.clf" --max-scans 40 --generations 1 --seed 5 --jobs 2 --quiet \
+  --out "$work/log_budget" > "$work/log_budget.txt" 2>&1 || fail "optimize (log budget) failed: $(tail -3 "$work/log_budget.txt")"
+[[ $(setting "$work/log_budget/results.json" population) == 36 && $(setting "$work/log_budget/results.json" divisions) == 7 ]] ||
+  fail "a log's default budget is not population 36 over 7 divisions"
+"$bin" optimize --help | grep -q 'default 7: 36 points' || fail "optimize --help does not state the default divisions"
+
 # 2. kill -9 in the middle of the run, then --resume: the same tables as the uninterrupted run.
 "$bin" optimize --out "$work/cut" "${small[@]}" > "$work/cut.txt" 2>&1 &
 pid=$!

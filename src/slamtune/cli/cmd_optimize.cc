@@ -19,6 +19,7 @@
 #include "slamtune/common/progress.h"
 #include "slamtune/common/signal_notice.h"
 #include "slamtune/io/content_hash.h"
+#include "slamtune/nsga3/reference_points.h"
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/optimizer.h"
 #include "slamtune/optim/slam_evaluation.h"
@@ -45,17 +46,19 @@ struct OptimizeArgs {
   bool around_base_without_steps = false;
   std::string objectives = kAutomaticObjectives;
   optim::SettlingOptions settling;  // --no-early-stop, --stop-tolerance, --stop-window
-  std::size_t population = 66;
-  unsigned generations = 60;
-  std::size_t divisions = 10;
+  std::size_t population = optim::OptimizeSettings{}.population;
+  unsigned generations = optim::OptimizeSettings{}.generations;
+  std::size_t divisions = optim::OptimizeSettings{}.divisions;
   unsigned seed = 1;
   TuningRunOptions run;
   ResultNeutralOptions result_neutral;  // the options that may accompany --resume
 };
 
-// The budget of the main job on the built-in world: a few minutes on 2 cores.
+// The budget of the main job on the built-in world: a few minutes on 2 cores (20 individuals
+// over the 66 reference points of 10 divisions).
 constexpr std::size_t kBuiltInPopulation = 20;
 constexpr unsigned kBuiltInGenerations = 8;
+constexpr std::size_t kBuiltInDivisions = 10;
 
 // The files whose content the run depends on, by their key in TuningInputOptions::ToJson.
 std::map<std::string, std::string> InputFiles(const TuningInputOptions& in) {
@@ -364,6 +367,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   if (args.inputs.log.empty() && !folder.resume()) {  // the built-in world's budget
     if (app.get_option("--population")->count() == 0) args.population = kBuiltInPopulation;
     if (app.get_option("--generations")->count() == 0) args.generations = kBuiltInGenerations;
+    if (app.get_option("--divisions")->count() == 0) args.divisions = kBuiltInDivisions;
   }
 
   // Preamble: every input is loaded and validated before any work starts.
@@ -449,12 +453,18 @@ const SubcommandRegistrar kRegistrar{{
           ->capture_default_str();
       app.add_option("--stop-window", args->settling.window, "... for this many generations in a row")
           ->capture_default_str();
-      app.add_option("--population", args->population, "population size (default 66; 20 on the built-in world)");
+      app.add_option("--population", args->population,
+                     fmt::format("population size (default {}; 20 on the built-in world; the seed paper's: 66 with "
+                                 "--divisions 10)",
+                                 args->population));
       app.add_option("--generations", args->generations,
-                     "the most generations (default 60; 8 on the built-in world); the run stops earlier once the "
-                     "answer has settled, unless --no-early-stop");
-      app.add_option("--divisions", args->divisions, "Das-Dennis divisions of the reference points")
-          ->capture_default_str();
+                     fmt::format("the most generations (default {}; 8 on the built-in world); the run stops earlier "
+                                 "once the answer has settled, unless --no-early-stop",
+                                 args->generations));
+      app.add_option("--divisions", args->divisions,
+                     fmt::format("Das-Dennis divisions of the reference points (default {}: {} points for the "
+                                 "three objectives; 10 on the built-in world)",
+                                 args->divisions, nsga3::DasDennisCount(3, args->divisions)));
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
       neutral.Add(args->run.AddParallelismTo(app));
       neutral.Add(app.add_flag("--verbose,-v", args->verbose,
