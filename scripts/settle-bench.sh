@@ -3,8 +3,8 @@
 # once the answer has settled"): for each log, the default `slamtune optimize` (population 36,
 # at most 60 generations, stops when settled), the same with --no-early-stop, and the seed
 # paper's whole budget (mode `paper`: population 66, 10 divisions, 60 generations), one after
-# the other, with wall time and peak memory from /usr/bin/time. The relations are given, so each answer's
-# translational error is known (they do not steer the search).
+# the other, with wall time and peak memory from /usr/bin/time. The relations are given, so
+# each answer's translational error is known (they do not steer the search).
 #
 # Resumable: each run works in runs/settle/LOG-MODE; an interrupted run is continued with
 # `optimize --resume` the next time the script runs, and a finished one (results.json written)

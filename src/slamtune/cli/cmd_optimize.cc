@@ -454,17 +454,17 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--stop-window", args->settling.window, "... for this many generations in a row")
           ->capture_default_str();
       app.add_option("--population", args->population,
-                     fmt::format("population size (default {}; 20 on the built-in world; the seed paper's: 66 with "
-                                 "--divisions 10)",
-                                 args->population));
+                     fmt::format("population size (default {}; {} on the built-in world; the seed paper's: 66 "
+                                 "with --divisions 10)",
+                                 args->population, kBuiltInPopulation));
       app.add_option("--generations", args->generations,
-                     fmt::format("the most generations (default {}; 8 on the built-in world); the run stops earlier "
+                     fmt::format("the most generations (default {}; {} on the built-in world); the run stops earlier "
                                  "once the answer has settled, unless --no-early-stop",
-                                 args->generations));
+                                 args->generations, kBuiltInGenerations));
       app.add_option("--divisions", args->divisions,
                      fmt::format("Das-Dennis divisions of the reference points (default {}: {} points for the "
-                                 "three objectives; 10 on the built-in world)",
-                                 args->divisions, nsga3::DasDennisCount(3, args->divisions)));
+                                 "three objectives; {} on the built-in world)",
+                                 args->divisions, nsga3::DasDennisCount(3, args->divisions), kBuiltInDivisions));
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
       neutral.Add(args->run.AddParallelismTo(app));
       neutral.Add(app.add_flag("--verbose,-v", args->verbose,

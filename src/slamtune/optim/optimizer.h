@@ -32,9 +32,9 @@ struct OptimizeSettings {
   ObjectiveSet objectives;  // what NSGA-III minimises and the candidates are ranked by
   Assignment default_assignment;  // the base configuration's values of the varied (and fixed) parameters
   std::string base_label = "slam_karto's defaults";  // what the base is: "your configuration (FILE)", ...
-  // Das-Dennis divisions: M = 3, D = 7 -> 36 reference points, one individual each. The
-  // paper's 66 x 60 (D = 10) gives the same answers on the shared logs in up to twice the time
-  // (docs/benchmarks.md); --population 66 --divisions 10 asks for it.
+  // Das-Dennis divisions: M = 3, D = 7 -> 36 reference points, one individual each. On the
+  // shared logs the paper's 66 individuals (D = 10) find answers within 0.5 mm of error of these
+  // and take up to twice as long (docs/benchmarks.md); --population 66 --divisions 10 asks for them.
   std::size_t divisions = 7;
   std::size_t population = 36;
   unsigned generations = 60;      // the paper's generations: the most that are run
