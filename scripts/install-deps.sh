@@ -8,7 +8,7 @@ PKGS=(
   libcli11-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libsqlite3-dev zlib1g-dev libpng-dev libzstd-dev liblz4-dev libbz2-dev libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
-  sqlite3 python3  # the CLI tests inspect run databases and compute a CRC-32 with them
+  sqlite3 python3  # the CLI tests inspect run databases and results.json and compute a CRC-32 with them
   chromium  # report_browser_cli_test.sh opens report.html in headless Chromium
 )
 missing=()
