@@ -55,17 +55,42 @@ std::string BeamAnglesProblem(double first, double increment, std::size_t n) {
 
 const char* BeamPolicyName(BeamPolicy policy) {
   switch (policy) {
-    case BeamPolicy::kResample: return "resample";
-    case BeamPolicy::kStrict: return "strict";
+    case BeamPolicy::kNode: return "node";
+    case BeamPolicy::kPerGeometry: return "per-geometry";
+    case BeamPolicy::kNearestBeam: return "nearest-beam";
   }
-  return "resample";
+  SLAMTUNE_CHECK(false);
+  return "";
 }
 
 BeamPolicy ParseBeamPolicy(const std::string& text) {
-  if (text == "resample") return BeamPolicy::kResample;
-  if (text == "strict") return BeamPolicy::kStrict;
-  throw InputError("--beams '" + text + "': must be 'resample' (one geometry for all scans) or 'strict' (Karto: "
-                   "scans of another reading count are dropped)");
+  if (text == "node" || text == "strict") return BeamPolicy::kNode;
+  if (text == "per-geometry") return BeamPolicy::kPerGeometry;
+  if (text == "nearest-beam" || text == "resample") return BeamPolicy::kNearestBeam;
+  throw InputError("--beams '" + text + "': must be 'node' (as the ROS node: scans of another reading count than the "
+                   "first are dropped), 'per-geometry' (one Karto laser per beam geometry) or 'nearest-beam' (scans "
+                   "resampled onto the most common geometry, an approximation)");
+}
+
+std::size_t ExpectedReadings(KartoLaserRule rule, const LaserScanRecord& first) {
+  if (!first.angle_max) return first.ranges.size();
+  const double min = first.angle_min, max = *first.angle_max, inc = first.angle_increment;
+  std::size_t residual = 1;
+  if (rule == KartoLaserRule::kSlamToolbox) {
+    // laser_utils.cpp, in its float arithmetic on the message's values.
+    const float fmin = static_cast<float>(min), fmax = static_cast<float>(max), finc = static_cast<float>(inc);
+    const float angular_range = std::fabs(fmax - fmin);
+    bool is_360 = std::fabs(angular_range - 2.0 * kPi) <
+                  (finc - (std::numeric_limits<float>::epsilon() * 2.0f * kPi));
+    if (angular_range > 6.10865 &&
+        static_cast<std::size_t>(std::round(angular_range / finc)) + 1 == first.ranges.size()) {
+      is_360 = false;
+    }
+    if (is_360) residual = 0;
+  }
+  const double steps = std::floor((max - min) / inc + 0.5);  // Karto's math::Round
+  if (!(steps >= 0.0 && steps < 1e9)) return 0;
+  return static_cast<std::size_t>(steps) + residual;
 }
 
 std::size_t ResampleScan(const BeamGeometry& target, LaserScanRecord* scan) {
@@ -101,7 +126,17 @@ void HarmonizeBeams(BeamPolicy policy, LaserLog* log) {
   report = BeamReport{};
   report.policy = BeamPolicyName(policy);
   report.geometries = DistinctGeometries(*log);
-  if (policy == BeamPolicy::kStrict || report.geometries.size() < 2) return;
+  if (log->scans.empty()) return;
+  for (auto [rule, count] : {std::pair{KartoLaserRule::kSlamKarto, &report.slam_karto},
+                             std::pair{KartoLaserRule::kSlamToolbox, &report.slam_toolbox}}) {
+    count->expected = ExpectedReadings(rule, log->scans.front());
+    const std::size_t expected = count->expected;
+    count->dropped = static_cast<std::size_t>(std::count_if(log->scans.begin(), log->scans.end(),
+                                                            [&](const LaserScanRecord& s) {
+                                                              return s.ranges.size() != expected;
+                                                            }));
+  }
+  if (policy != BeamPolicy::kNearestBeam || report.geometries.size() < 2) return;
   const BeamGeometry reference = report.geometries.front().geometry;
   for (LaserScanRecord& scan : log->scans) {
     const BeamGeometry own = GeometryOf(scan);

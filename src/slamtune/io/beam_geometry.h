@@ -6,15 +6,23 @@
 // alternate between 180 and 181 readings with four start angles, cheap lidars whose count
 // varies from turn to turn (slam_toolbox#540, "contains 268 range readings, expected 274").
 //
+// Both nodes make one Karto laser per frame from the first scan they receive, and Karto's
+// LaserRangeFinder::Validate refuses every scan whose reading count differs from the count that
+// laser expects (ExpectedReadings), with no more than a line on the console.
+//
 // Policy (BeamPolicy):
-//   * kResample (default): the reference geometry is the one most scans have (the first seen on
-//     a tie); every scan with another geometry is resampled onto it, each reference beam taking
+//   * kNode (default): nothing is changed; the engine does what the node does (drops the scans of
+//     another count, counted as the run's scans_wrong_reading_count), and the counts of
+//     NodeBeamCount say how many, for each node, wherever the log is described.
+//   * kPerGeometry: nothing is changed; the engine gives each beam geometry a Karto laser of its
+//     own, as Karto does for several lasers (exact angles, no reading changed). For logs where the
+//     driver cannot be made to publish one count; no node runs this way without a frame per
+//     geometry.
+//   * kNearestBeam: an approximation: the geometry most scans have (the first seen on a tie) is
+//     the reference; every scan with another one is resampled onto it, each reference beam taking
 //     the reading of the nearest beam of the scan's own geometry, and +inf (no return) where the
-//     scan has no beam within half of its own increment (outside its field of view). Nearest,
-//     not interpolated: interpolating across an edge would invent points between two walls.
-//     Scans of the reference geometry are untouched, so a log with one geometry is unchanged.
-//   * kStrict: nothing is changed; the engine then does what Karto does (drops scans of another
-//     reading count, counted in the run's scans_wrong_reading_count).
+//     scan has no beam within half of its own increment. The engine then maps scans the node
+//     never sees.
 // Geometries are "the same" when they have the same reading count and their first and last
 // beam angles agree within kSameAngleTolerance (1e-6 rad: float32 rounding of a ROS message
 // is 1e-7).
@@ -46,12 +54,24 @@ inline constexpr double kFovTolerance = 0.01;  // rad
 // can mean (above); otherwise what is wrong, e.g. "first beam at -90 rad is beyond +-2pi".
 std::string BeamAnglesProblem(double first, double increment, std::size_t n);
 
-const char* BeamPolicyName(BeamPolicy policy);  // "resample", "strict"
-// "resample" / "strict"; InputError naming the option otherwise.
+const char* BeamPolicyName(BeamPolicy policy);  // "node", "per-geometry", "nearest-beam"
+// Those names ("strict" and "resample", their names in older run folders, read as "node" and
+// "nearest-beam"); InputError naming the option otherwise.
 BeamPolicy ParseBeamPolicy(const std::string& text);
 
-// Makes the log's scans share one geometry under `policy` and records what was done in
-// log->beams. Idempotent.
+// Whose rule counts the readings a laser expects: open_karto's (slam_karto) or slam_toolbox's.
+enum class KartoLaserRule { kSlamKarto, kSlamToolbox };
+
+// The reading count a node's Karto laser made from `first` expects of every scan
+// (LaserRangeFinder::Update, in double on the message's float32 values): round((angle_max -
+// angle_min) / angle_increment) + 1. slam_toolbox (laser_utils.cpp) makes a laser whose angles
+// span a full turn within one increment a 360-degree one, which expects one reading fewer, unless
+// its span is over 350 deg and round(span / increment) + 1 is the scan's count. Without
+// angle_max (CARMEN records, whose geometry is a convention) the first scan's own count.
+std::size_t ExpectedReadings(KartoLaserRule rule, const LaserScanRecord& first);
+
+// Records the log's geometries and the nodes' counts in log->beams and, with kNearestBeam, makes
+// the scans share one geometry. Idempotent.
 void HarmonizeBeams(BeamPolicy policy, LaserLog* log);
 
 // `scan`'s readings on `target` beams as described above; no_returns recounted against the

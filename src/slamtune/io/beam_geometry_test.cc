@@ -34,10 +34,10 @@ LaserLog LogOf(std::vector<LaserScanRecord> scans) {
 TEST(BeamGeometry, OneGeometryLeavesTheLogUntouched) {
   LaserLog log = LogOf({Scan(181, -90, 1), Scan(181, -90, 1)});
   const LaserLog before = log;
-  HarmonizeBeams(BeamPolicy::kResample, &log);
+  HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   EXPECT_EQ(log.scans[1].ranges, before.scans[1].ranges);
   EXPECT_EQ(log.scans[1].angle_min, before.scans[1].angle_min);
-  EXPECT_EQ(log.beams.policy, "resample");
+  EXPECT_EQ(log.beams.policy, "nearest-beam");
   ASSERT_EQ(log.beams.geometries.size(), 1u);
   EXPECT_FALSE(log.beams.varies());
   EXPECT_EQ(log.beams.scans_resampled, 0u);
@@ -55,7 +55,7 @@ TEST(BeamGeometry, AlternatingCountsAndStartAnglesAreResampledOntoTheMostCommon)
   }
   scans.push_back(Scan(181, -90, 1));  // 7 of 13 are the reference geometry
   LaserLog log = LogOf(scans);
-  HarmonizeBeams(BeamPolicy::kResample, &log);
+  HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   ASSERT_EQ(log.beams.geometries.size(), 3u);
   EXPECT_EQ(log.beams.geometries[0].geometry.readings, 181u);
   EXPECT_EQ(log.beams.geometries[0].scans, 7u);
@@ -81,20 +81,59 @@ TEST(BeamGeometry, AlternatingCountsAndStartAnglesAreResampledOntoTheMostCommon)
   EXPECT_EQ(log.total_readings, 13u * 181u);
 }
 
-TEST(BeamGeometry, StrictKeepsEveryScanAsRecorded) {
-  LaserLog log = LogOf({Scan(181, -90, 1), Scan(180, -90, 1), Scan(181, -90, 1)});
-  HarmonizeBeams(BeamPolicy::kStrict, &log);
+TEST(BeamGeometry, NodeKeepsEveryScanAsRecordedAndCountsWhatTheNodeDrops) {
+  LaserLog log = LogOf({Scan(181, -90, 1), Scan(180, -90, 1), Scan(181, -90, 1), Scan(182, -90, 1)});
+  HarmonizeBeams(BeamPolicy::kNode, &log);
   EXPECT_EQ(log.scans[1].ranges.size(), 180u);
-  EXPECT_EQ(log.beams.policy, "strict");
+  EXPECT_EQ(log.beams.policy, "node");
   EXPECT_TRUE(log.beams.varies());
   EXPECT_EQ(log.beams.scans_resampled, 0u);
+  // CARMEN-like records carry no angle_max: the laser expects the first scan's count.
+  EXPECT_EQ(log.beams.slam_karto.expected, 181u);
+  EXPECT_EQ(log.beams.slam_karto.dropped, 2u);
+  EXPECT_EQ(log.beams.slam_toolbox.dropped, 2u);
+  HarmonizeBeams(BeamPolicy::kPerGeometry, &log);
+  EXPECT_EQ(log.beams.policy, "per-geometry");
+  EXPECT_EQ(log.scans[3].ranges.size(), 182u);
+}
+
+// A ROS scan's angles decide the count the node's laser expects (Karto's LaserRangeFinder::Update).
+TEST(BeamGeometry, ExpectedReadingsFollowEachNodesRule) {
+  LaserScanRecord scan;
+  // 360 readings over a closed circle, -pi .. pi step 2pi/360, as many 360-degree drivers publish.
+  const float inc = static_cast<float>(2.0 * kPi / 360.0);
+  scan.angle_min = static_cast<float>(-kPi);
+  scan.angle_max = static_cast<double>(static_cast<float>(kPi));
+  scan.angle_increment = inc;
+  scan.ranges.assign(360, 1.0);
+  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamKarto, scan), 361u);   // open_karto: + 1 always
+  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamToolbox, scan), 360u);  // laser_utils.cpp: a 360 laser
+  // The same angles with 361 readings (a last beam repeating the first): not a 360 laser to slam_toolbox.
+  scan.ranges.assign(361, 1.0);
+  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamToolbox, scan), 361u);
+  // 180 degrees in 181 readings: both count 181.
+  LaserScanRecord half;
+  half.angle_min = static_cast<float>(-kPi / 2);
+  half.angle_max = static_cast<double>(static_cast<float>(kPi / 2));
+  half.angle_increment = static_cast<float>(kPi / 180);
+  half.ranges.assign(181, 1.0);
+  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamKarto, half), 181u);
+  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamToolbox, half), 181u);
+  // Whole logs: slam_karto drops every scan of the 360 laser, slam_toolbox none.
+  LaserLog log = LogOf({Scan(181, -90, 1)});
+  scan.ranges.assign(360, 1.0);
+  log.scans = {scan, scan, scan};
+  HarmonizeBeams(BeamPolicy::kNode, &log);
+  EXPECT_EQ(log.beams.slam_karto.expected, 361u);
+  EXPECT_EQ(log.beams.slam_karto.dropped, 3u);
+  EXPECT_EQ(log.beams.slam_toolbox.dropped, 0u);
 }
 
 TEST(BeamGeometry, SameCountOtherAnglesAreResampledFloatNoiseIsNot) {
   LaserScanRecord noisy = Scan(181, -90, 1);
   noisy.angle_min = static_cast<double>(static_cast<float>(noisy.angle_min));  // float32 rounding
   LaserLog log = LogOf({Scan(181, -90, 1), Scan(181, -90, 1), noisy, Scan(181, -80, 1)});
-  HarmonizeBeams(BeamPolicy::kResample, &log);
+  HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   EXPECT_EQ(log.beams.geometries.size(), 2u);
   EXPECT_EQ(log.beams.scans_resampled, 1u);
   EXPECT_EQ(log.scans[2].angle_min, noisy.angle_min);  // untouched
@@ -106,16 +145,20 @@ TEST(BeamGeometry, SameCountOtherAnglesAreResampledFloatNoiseIsNot) {
 
 TEST(BeamGeometry, HarmonizeIsIdempotent) {
   LaserLog log = LogOf({Scan(181, -90, 1), Scan(180, -90, 1), Scan(181, -90, 1)});
-  HarmonizeBeams(BeamPolicy::kResample, &log);
+  HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   const LaserLog once = log;
-  HarmonizeBeams(BeamPolicy::kResample, &log);
+  HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   EXPECT_EQ(log.scans[1].ranges.size(), once.scans[1].ranges.size());
   EXPECT_EQ(log.beams.scans_resampled, 0u);
 }
 
 TEST(BeamGeometry, PolicyNamesParseAndUnknownIsAnInputError) {
-  EXPECT_EQ(ParseBeamPolicy("resample"), BeamPolicy::kResample);
-  EXPECT_EQ(ParseBeamPolicy("strict"), BeamPolicy::kStrict);
+  EXPECT_EQ(ParseBeamPolicy("node"), BeamPolicy::kNode);
+  EXPECT_EQ(ParseBeamPolicy("per-geometry"), BeamPolicy::kPerGeometry);
+  EXPECT_EQ(ParseBeamPolicy("nearest-beam"), BeamPolicy::kNearestBeam);
+  // Older run folders' names.
+  EXPECT_EQ(ParseBeamPolicy("resample"), BeamPolicy::kNearestBeam);
+  EXPECT_EQ(ParseBeamPolicy("strict"), BeamPolicy::kNode);
   try {
     ParseBeamPolicy("nearest");
     FAIL();

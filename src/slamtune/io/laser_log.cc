@@ -38,6 +38,11 @@ BeamGeometry GeometryOf(const LaserScanRecord& scan) {
   return {scan.ranges.size(), scan.angle_min, scan.angle_increment};
 }
 
+std::int64_t StampNs(const LaserScanRecord& scan) {
+  if (scan.header_stamp_ns) return *scan.header_stamp_ns;
+  return std::llround(scan.ipc_time * 1e9);
+}
+
 void RecordingReadOptions::Validate() const {
   if (!(max_odom_gap_s > 0.0 && max_odom_gap_s <= 60.0)) {
     throw InputError("--max-odom-gap = " + FormatExact(max_odom_gap_s) + ": must be in (0, 60] seconds");

@@ -27,9 +27,16 @@ struct LaserScanRecord {
   // Beam geometry in the laser frame: beam i is at angle_min + i * angle_increment (rad).
   double angle_min = 0.0;
   double angle_increment = 0.0;
+  // The last beam's angle as the record states it (a ROS LaserScan's angle_max, float32 widened):
+  // a node's Karto derives the reading count it expects from it (slam/node_laser.h). None for
+  // CARMEN records, whose geometry is a convention.
+  std::optional<double> angle_max;
   // The value at or above which a reading means "no return" for this scan (m): the record's
   // own maximum range (ROBOTLASER1, RAWLASER) or the log's no-return value (FLASER).
   double max_range = std::numeric_limits<double>::infinity();
+  // Readings at or below it are not used (m): a ROS LaserScan's range_min, which both nodes give
+  // Karto as the laser's minimum range; 0 for CARMEN records.
+  double range_min = 0.0;
   std::vector<double> ranges;  // as recorded, unchanged (no clipping, no NaN replacement)
   // Odometric poses at the scan: the laser's and the robot base's. FLASER gives both
   // (x y theta = laser, odom_x odom_y odom_theta = robot); RAWLASER takes the robot pose
@@ -40,6 +47,9 @@ struct LaserScanRecord {
   Pose2 laser_offset;
   double ipc_time = 0.0;     // s, the record's ipc_timestamp (relations refer to it)
   double logger_time = 0.0;  // s
+  // A ROS LaserScan's header stamp in nanoseconds, exactly (ipc_time is the same in seconds,
+  // rounded); none for a CARMEN record. StampNs() gives one for either.
+  std::optional<std::int64_t> header_stamp_ns;
   std::size_t no_returns = 0;  // readings >= max_range, NaN, +-inf or negative
 };
 
@@ -59,16 +69,32 @@ struct BeamGeometry {
 
 BeamGeometry GeometryOf(const LaserScanRecord& scan);
 
+// The scan's stamp in nanoseconds as a node sees it: the header stamp of a ROS scan, a CARMEN
+// record's ipc_timestamp rounded to the nanosecond (what a bag made from the log would carry).
+std::int64_t StampNs(const LaserScanRecord& scan);
+
+// How scans whose beam geometry differs from the others' are treated (beam_geometry.h).
+enum class BeamPolicy { kNode, kPerGeometry, kNearestBeam };
+
+// The reading count a node's Karto laser expects, and how many scans of the log it drops for
+// another count (beam_geometry.h ExpectedReadings), for each node.
+struct NodeBeamCount {
+  std::size_t expected = 0;  // readings the laser made from the first scan expects
+  std::size_t dropped = 0;   // scans whose reading count differs: Karto refuses them
+};
+
 // What io::HarmonizeBeams did (beam_geometry.h).
 struct BeamReport {
-  std::string policy;  // "resample", "strict"; empty when not applied
+  std::string policy;  // "node", "per-geometry", "nearest-beam"; empty when not applied
   struct Seen {
     BeamGeometry geometry;
     std::size_t scans = 0;
   };
-  std::vector<Seen> geometries;  // distinct geometries, most scans first; [0] is the reference
-  std::size_t scans_resampled = 0;   // scans put onto the reference geometry
-  std::size_t readings_outside = 0;  // reference beams with no beam of the scan near them (+inf)
+  std::vector<Seen> geometries;  // distinct geometries, most scans first (the first seen on a tie)
+  std::size_t scans_resampled = 0;   // nearest-beam: scans put onto the most common geometry
+  std::size_t readings_outside = 0;  // nearest-beam: beams with no beam of the scan near them (+inf)
+  NodeBeamCount slam_karto;          // before any resampling
+  NodeBeamCount slam_toolbox;
   bool varies() const { return geometries.size() > 1; }
 };
 
@@ -149,9 +175,6 @@ struct LaserLog {
   std::optional<RecordingInfo> recording;  // set when the log was read from a ROS recording
 };
 
-// How scans whose beam geometry differs from the others' are treated (beam_geometry.h).
-enum class BeamPolicy { kResample, kStrict };
-
 // Choices made when turning a ROS recording into a log (recording_log.h); empty = automatic.
 struct RecordingReadOptions {
   std::string scan_topic;   // sensor_msgs/LaserScan topic; "" = the only one
@@ -168,7 +191,7 @@ struct LogReadOptions {
   bool lenient = false;        // skip malformed records (and count them) instead of failing
   double no_return_value = 0;  // > 0 overrides the detected no-return value (m)
   std::size_t max_scans = 0;   // stop after this many laser scans (0 = all); for short slices
-  BeamPolicy beams = BeamPolicy::kResample;  // applied by ReadLaserLog (log_reader.h)
+  BeamPolicy beams = BeamPolicy::kNode;      // applied by ReadLaserLog (log_reader.h)
   RecordingReadOptions recording;            // for ROS recordings
 
   // Throws InputError naming the field if no_return_value is negative, NaN or infinite.

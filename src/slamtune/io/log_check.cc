@@ -116,10 +116,28 @@ void CheckBeams(const LaserLog& log, CheckReport* report) {
   for (const BeamReport::Seen& g : log.beams.geometries) {
     seen += fmt::format("{}{} in {} scans", seen.empty() ? "" : "; ", g.geometry.ToString(), g.scans);
   }
+  const std::size_t first = log.scans.front().ranges.size();
+  std::size_t dropped = 0;
+  for (auto [node, rule] : {std::pair{"slam_karto", KartoLaserRule::kSlamKarto},
+                            std::pair{"slam_toolbox", KartoLaserRule::kSlamToolbox}}) {
+    const std::size_t expected = ExpectedReadings(rule, log.scans.front());
+    const auto refused = static_cast<std::size_t>(std::count_if(
+        log.scans.begin(), log.scans.end(), [&](const LaserScanRecord& s) { return s.ranges.size() != expected; }));
+    if (rule == KartoLaserRule::kSlamToolbox) dropped = refused;
+    if (expected == first) continue;
+    report->problems.push_back(
+        {ProblemKind::kLaserCountMismatch,
+         fmt::format("{} drops {} of {} scans: the Karto laser it makes from the first scan expects {} readings (from "
+                     "angle_min, angle_max and angle_increment) and the first scan has {}; the driver's angles and "
+                     "reading count disagree for that node",
+                     node, refused, log.scans.size(), expected, first),
+         refused, {0}, {log.scans.front().ipc_time}});
+  }
   Report(report, ProblemKind::kBeamGeometryChange, changes,
-         fmt::format("the beam geometry changes {} times between scans ({}); Karto drops scans of another reading "
-                     "count, slamtune resamples them onto the most common geometry (--beams resample)",
-                     changes.count, seen));
+         fmt::format("the beam geometry changes {} times between scans ({}); the node drops the {} of {} scans whose "
+                     "beam count differs from the first scan's, and so does slamtune: make the driver publish a fixed "
+                     "count (or tune with --beams per-geometry, which the node does not do)",
+                     changes.count, seen, dropped, log.scans.size()));
 }
 
 void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report) {
@@ -391,6 +409,7 @@ const char* ProblemKindName(ProblemKind kind) {
     case ProblemKind::kScanStampBackward: return "scan_stamp_backward";
     case ProblemKind::kScanStampDuplicate: return "scan_stamp_duplicate";
     case ProblemKind::kBeamGeometryChange: return "beam_geometry_change";
+    case ProblemKind::kLaserCountMismatch: return "laser_count_mismatch";
     case ProblemKind::kRangeMaxTooLow: return "range_max_too_low";
     case ProblemKind::kRangeMaxTooHigh: return "range_max_too_high";
     case ProblemKind::kMostlyNoReturns: return "mostly_no_returns";
@@ -420,7 +439,7 @@ CheckReport CheckLog(const LaserLog& log, const CheckOptions& options) {
 CheckReport CheckRecording(const std::string& path, const LogReadOptions& read, const CheckOptions& options) {
   options.Validate();
   LogReadOptions attempt = read;
-  attempt.beams = BeamPolicy::kStrict;
+  attempt.beams = BeamPolicy::kNode;
   attempt.Validate();
   if (DetectRecordingKind(path) == RecordingKind::kCarmenLog) return CheckLog(ReadLaserLog(path, attempt), options);
 
@@ -450,7 +469,7 @@ CheckReport CheckRecording(const std::string& path, const LogReadOptions& read, 
     attempt.recording.laser_offset = Pose2{};
     log = RecordingToLog(contents, attempt);
   }
-  HarmonizeBeams(BeamPolicy::kStrict, &log);
+  HarmonizeBeams(BeamPolicy::kNode, &log);
   std::vector<double> stamps;
   for (const RecordedScan& s : contents.scans.at(log.recording->scan_topic)) {
     stamps.push_back(static_cast<double>(s.message.header.stamp_ns) / 1e9);

@@ -50,6 +50,7 @@ enum class ProblemKind {
   kScanStampBackward,
   kScanStampDuplicate,
   kBeamGeometryChange,
+  kLaserCountMismatch,  // a node's Karto laser expects another reading count than the first scan has
   kRangeMaxTooLow,
   kRangeMaxTooHigh,
   kMostlyNoReturns,

@@ -45,24 +45,28 @@ std::string AlternatingLog(int scans) {
   return out.str();
 }
 
-TEST_F(LogReaderTest, CarmenScansOfVaryingCountsShareOneGeometryByDefault) {
+TEST_F(LogReaderTest, CarmenScansOfVaryingCountsAreKeptAsRecordedAndTheNodesDropsCounted) {
   const std::string path = Write("alternating.clf", AlternatingLog(7));
   const LaserLog log = ReadLaserLog(path);
   ASSERT_EQ(log.scans.size(), 7u);
-  for (const LaserScanRecord& s : log.scans) EXPECT_EQ(s.ranges.size(), 181u);
-  EXPECT_EQ(log.beams.scans_resampled, 3u);
-  EXPECT_EQ(log.beams.readings_outside, 3u);  // the +90 deg beam of each 180-reading scan
-  // 180 readings cover -90 .. +89 at 1 deg: the same angles as the first 180 of 181.
-  EXPECT_DOUBLE_EQ(log.scans[1].ranges[179], 2.0 + 0.01 * 179);
-  EXPECT_TRUE(std::isinf(log.scans[1].ranges[180]));
-  const std::vector<std::string> input = DescribeLogInput(log);
-  EXPECT_THAT(input, testing::Contains(testing::HasSubstr("beams: 3 scans resampled onto 181 beams")));
+  EXPECT_EQ(log.scans[1].ranges.size(), 180u);
+  EXPECT_EQ(log.beams.scans_resampled, 0u);
+  EXPECT_EQ(log.beams.slam_karto.dropped, 3u);
+  EXPECT_THAT(DescribeLogInput(log),
+              testing::Contains("beams: the node (slam_karto and slam_toolbox alike) drops 3 of 7 scans: their beam "
+                                "count differs from the first scan's (181); make the driver publish a fixed count"));
 
-  LogReadOptions strict;
-  strict.beams = BeamPolicy::kStrict;
-  const LaserLog kept = ReadLaserLog(path, strict);
-  EXPECT_EQ(kept.scans[1].ranges.size(), 180u);
-  EXPECT_THAT(DescribeLogInput(kept), testing::Contains(testing::HasSubstr("drops the 3 whose reading count differs")));
+  LogReadOptions nearest;
+  nearest.beams = BeamPolicy::kNearestBeam;
+  const LaserLog resampled = ReadLaserLog(path, nearest);
+  for (const LaserScanRecord& s : resampled.scans) EXPECT_EQ(s.ranges.size(), 181u);
+  EXPECT_EQ(resampled.beams.scans_resampled, 3u);
+  EXPECT_EQ(resampled.beams.readings_outside, 3u);  // the +90 deg beam of each 180-reading scan
+  // 180 readings cover -90 .. +89 at 1 deg: the same angles as the first 180 of 181.
+  EXPECT_DOUBLE_EQ(resampled.scans[1].ranges[179], 2.0 + 0.01 * 179);
+  EXPECT_TRUE(std::isinf(resampled.scans[1].ranges[180]));
+  EXPECT_THAT(DescribeLogInput(resampled),
+              testing::Contains(testing::HasSubstr("beams: --beams nearest-beam: 3 scans resampled onto 181 beams")));
 }
 
 TEST_F(LogReaderTest, RecordingsAreToldByContentNotName) {

@@ -1,5 +1,7 @@
 #include "slamtune/io/log_summary.h"
 
+#include "slamtune/io/beam_geometry.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -82,6 +84,50 @@ LogSummary SummarizeLog(const LaserLog& log) {
   return s;
 }
 
+std::vector<std::string> BeamLines(const LaserLog& log) {
+  std::vector<std::string> out;
+  const BeamReport& b = log.beams;
+  if (b.varies()) {
+    std::string seen;
+    for (const BeamReport::Seen& g : b.geometries) {
+      seen += fmt::format("{}{} ({} scans)", seen.empty() ? "" : "; ", g.geometry.ToString(), g.scans);
+    }
+    out.push_back(fmt::format("beams: {} geometries: {}", b.geometries.size(), seen));
+  }
+  const std::size_t n = log.scans.size();
+  const std::size_t first = n == 0 ? 0 : log.scans.front().ranges.size();
+  // "drops N of M scans: why", or "" when the node drops none.
+  const auto dropped = [&](const NodeBeamCount& c) {
+    if (c.dropped == 0) return std::string();
+    if (c.expected != first) {
+      return fmt::format("drops {} of {} scans: the Karto laser it makes from the first scan expects {} readings "
+                         "(from angle_min, angle_max and angle_increment) and the first scan has {}",
+                         c.dropped, n, c.expected, first);
+    }
+    return fmt::format("drops {} of {} scans: their beam count differs from the first scan's ({}); make the driver "
+                       "publish a fixed count",
+                       c.dropped, n, first);
+  };
+  const std::string karto = dropped(b.slam_karto);
+  const std::string toolbox = dropped(b.slam_toolbox);
+  if (!karto.empty() && karto == toolbox) {
+    out.push_back("beams: the node (slam_karto and slam_toolbox alike) " + karto);
+  } else {
+    if (!karto.empty()) out.push_back("beams: slam_karto " + karto);
+    if (!toolbox.empty()) out.push_back("beams: slam_toolbox " + toolbox);
+  }
+  if (b.policy == BeamPolicyName(BeamPolicy::kPerGeometry) && b.varies()) {
+    out.push_back(fmt::format("beams: --beams per-geometry: one Karto laser for each of the {} geometries; no scan "
+                              "dropped or changed (the node does not do this)",
+                              b.geometries.size()));
+  } else if (b.policy == BeamPolicyName(BeamPolicy::kNearestBeam) && b.scans_resampled > 0) {
+    out.push_back(fmt::format("beams: --beams nearest-beam: {} scans resampled onto {} ({} readings outside their own "
+                              "field of view set to no-return): an approximation, the node never sees these scans",
+                              b.scans_resampled, b.geometries[0].geometry.ToString(), b.readings_outside));
+  }
+  return out;
+}
+
 std::vector<std::string> DescribeLogInput(const LaserLog& log) {
   std::vector<std::string> out;
   if (log.recording) {
@@ -118,26 +164,7 @@ std::vector<std::string> DescribeLogInput(const LaserLog& log) {
                                 r.laser_frame, r.laser_frame));
     }
   }
-  const BeamReport& b = log.beams;
-  if (b.varies()) {
-    std::string seen;
-    for (const BeamReport::Seen& g : b.geometries) {
-      seen += fmt::format("{}{} ({} scans)", seen.empty() ? "" : "; ", g.geometry.ToString(), g.scans);
-    }
-    out.push_back(fmt::format("beams: {} geometries: {}", b.geometries.size(), seen));
-    if (b.policy == "strict") {
-      const std::size_t first = log.scans.empty() ? 0 : log.scans.front().ranges.size();
-      const auto other_count = std::count_if(log.scans.begin(), log.scans.end(),
-                                             [&](const LaserScanRecord& scan) { return scan.ranges.size() != first; });
-      out.push_back(fmt::format("beams: --beams strict: the engine reads every scan with the first scan's geometry "
-                                "and drops the {} whose reading count differs, as Karto does",
-                                other_count));
-    } else {
-      out.push_back(fmt::format("beams: {} scans resampled onto {} (nearest beam; {} readings outside their own "
-                                "field of view set to no-return); --beams strict keeps Karto's behaviour",
-                                b.scans_resampled, b.geometries[0].geometry.ToString(), b.readings_outside));
-    }
-  }
+  for (const std::string& line : BeamLines(log)) out.push_back(line);
   if (log.scans_without_odometry > 0) {
     out.push_back(fmt::format("not used: {} RAWLASER scans outside the time span of the ODOM records, no pose to "
                               "interpolate (first: {})",

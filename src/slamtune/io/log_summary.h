@@ -71,6 +71,9 @@ LogSummary SummarizeLog(const LaserLog& log);
 // the rule that chose it); for any log the beam geometries seen and what was done about them,
 // and records skipped under --lenient. Commands print these before they work on the log.
 std::vector<std::string> DescribeLogInput(const LaserLog& log);
+// The "beams:" lines of DescribeLogInput: the geometries seen, the scans each node drops for their
+// reading count (beam_geometry.h ExpectedReadings) and what --beams did.
+std::vector<std::string> BeamLines(const LaserLog& log);
 // Those lines as (name, value) rows, split at their first ": ", for tables and reports.
 std::vector<std::pair<std::string, std::string>> InputRows(const std::vector<std::string>& lines);
 

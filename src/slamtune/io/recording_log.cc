@@ -234,17 +234,21 @@ LaserScanRecord ToRecord(const RecordedScan& scan, std::size_t index, const Reco
   LaserScanRecord r;
   r.line = index + 1;
   r.kind = RecordKind::kRosLaserScan;
+  // The message's float32 values widened to double, as both nodes hand them to Karto.
   r.angle_min = m.angle_min;
   r.angle_increment = m.angle_increment;
+  r.angle_max = static_cast<double>(m.angle_max);
   r.ranges.assign(m.ranges.begin(), m.ranges.end());
   if (info.upside_down) {
-    // Reversed readings on beams mirrored about the laser's x axis: the first is at -angle_max.
+    // As both nodes do: the readings reversed, the angles as the message gives them (right for a
+    // scan symmetric about the laser's x axis, as upside-down mounts are used).
     std::reverse(r.ranges.begin(), r.ranges.end());
-    r.angle_min = -(r.angle_min + static_cast<double>(r.ranges.size() - 1) * r.angle_increment);
   }
   r.max_range = (m.range_max > 0.0f && std::isfinite(m.range_max)) ? static_cast<double>(m.range_max)
                                                                     : std::numeric_limits<double>::infinity();
+  r.range_min = std::isfinite(m.range_min) && m.range_min > 0.0f ? static_cast<double>(m.range_min) : 0.0;
   r.ipc_time = static_cast<double>(m.header.stamp_ns) / 1e9;
+  r.header_stamp_ns = static_cast<std::int64_t>(m.header.stamp_ns);
   r.logger_time = static_cast<double>(scan.log_time_ns) / 1e9;
   return r;
 }

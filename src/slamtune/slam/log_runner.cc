@@ -13,6 +13,10 @@ namespace slamtune::slam {
 
 int RunSummary::total_edges() const { return std::accumulate(edges.begin(), edges.end(), 0); }
 
+int RunSummary::scans_refused_by_node_total() const {
+  return std::accumulate(scans_refused_by_node.begin(), scans_refused_by_node.end(), 0);
+}
+
 OdometryFrame OdometryFrameOf(const io::LaserLog& log) {
   OdometryFrame frame;
   if (log.scans.empty()) return frame;
@@ -57,12 +61,12 @@ ProcessResult LogRunner::Step() {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t index = next_++;
   ProcessResult result;
-  const int throttle = mapper_.params().throttle_scans;
-  if (index % static_cast<std::size_t>(throttle) != 0) {
-    ++throttled_;
-    result.outcome = ProcessResult::Outcome::kNotMoved;
+  const io::LaserScanRecord& record = log_->scans[index];
+  const NodeVerdict verdict = node_filter_.Offer(mapper_.params(), record.robot_pose, io::StampNs(record));
+  if (verdict != NodeVerdict::kPass) {
+    ++refused_by_node_[static_cast<int>(verdict)];
+    result.outcome = ProcessResult::Outcome::kRefusedByNode;
   } else {
-    const io::LaserScanRecord& record = log_->scans[index];
     // The record's readings are shared with the log (aliasing pointer keeps the log alive).
     std::shared_ptr<const std::vector<double>> ranges(log_, &record.ranges);
     std::shared_ptr<const LaserGeometry> geometry = geometry_;
@@ -94,7 +98,7 @@ RunSummary LogRunner::Summary() const {
   const MapperCounters& c = mapper_.counters();
   s.scans_read = static_cast<int>(log_->scans.size());
   s.scans_offered = c.scans_offered;
-  s.scans_throttled = throttled_;
+  s.scans_refused_by_node = refused_by_node_;
   s.nodes = c.scans_processed;
   s.scans_not_moved = c.scans_not_moved;
   s.scans_wrong_reading_count = c.scans_wrong_reading_count;

@@ -3,7 +3,8 @@
 // odometric poses and mounting offset of OdometryFrameOf (for CARMEN FLASER logs: the laser pose
 // with a zero offset), readings unchanged,
 // maxRange = min(laser_max_range_cap, the scan's no-return value), rangeThreshold by the rule
-// of §9.2, time = ipc timestamp, throttle_scans keeping every n-th scan.
+// of §9.2, time = ipc timestamp; the node's own choice of scans first (node_scan_filter.h: the
+// node mode, throttle_scans, the synchronous node's filter).
 //
 // LogRunner is a value with a step API: Step() processes one log scan, so the state after log
 // scan k can be copied (with SetParams() on the copy) and both copies continued; results do not
@@ -19,6 +20,7 @@
 #include "slamtune/io/trajectory.h"
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/mapper.h"
+#include "slamtune/slam/node_scan_filter.h"
 
 namespace slamtune::slam {
 
@@ -36,8 +38,10 @@ struct LoopClosureRecord {
 
 struct RunSummary {
   int scans_read = 0;       // laser scans in the log
-  int scans_offered = 0;    // passed to Process (after throttle_scans)
-  int scans_throttled = 0;
+  int scans_offered = 0;    // passed to Process (after the node's own filter)
+  // Scans the node itself did not hand to Karto, by verdict (node_scan_filter.h; kPass unused).
+  std::array<int, kNumNodeVerdicts> scans_refused_by_node{};
+  int scans_refused_by_node_total() const;
   int nodes = 0;            // processed scans
   int scans_not_moved = 0;
   int scans_wrong_reading_count = 0;
@@ -84,8 +88,8 @@ class LogRunner {
   bool Done() const { return next_ >= log_->scans.size(); }
   std::size_t next_index() const { return next_; }
   std::size_t size() const { return log_->scans.size(); }
-  // Processes log scan next_index() (or skips it when throttled). Returns what Process did;
-  // a throttled scan reports Outcome::kNotMoved with state_id -1.
+  // Processes log scan next_index() (or skips it when the node would not hand it to Karto).
+  // Returns what Process did; a scan the node refused reports Outcome::kRefusedByNode.
   ProcessResult Step();
   // Steps to the end; `progress(done, total)` is called after every step when set.
   void RunToEnd(const std::function<void(std::size_t, std::size_t)>& progress = {});
@@ -120,7 +124,8 @@ class LogRunner {
   std::size_t next_ = 0;
   std::vector<int> state_of_log_scan_;  // state id per log scan, -1 if not processed
   std::vector<SequentialMatchStep> sequential_matches_;
-  int throttled_ = 0;
+  NodeScanFilter node_filter_;
+  std::array<int, kNumNodeVerdicts> refused_by_node_{};
   double wall_s_ = 0.0;
 };
 

@@ -64,7 +64,7 @@ TEST(LogRunner, TrajectoryComposesOdometryOfSkippedScans) {
   EXPECT_NEAR(t[3].pose.theta, 0.05, 1e-12);
 }
 
-TEST(LogRunner, ThrottleKeepsEveryNthScan) {
+TEST(LogRunner, ThrottleKeepsEveryNthScanAsSlamKarto) {
   auto log = std::make_shared<io::LaserLog>();
   for (int i = 0; i < 9; ++i) log->scans.push_back(Record({0.5 * i, 0, 0}, i));
   MapperParams p;
@@ -73,9 +73,37 @@ TEST(LogRunner, ThrottleKeepsEveryNthScan) {
   LogRunner runner(log, p);
   runner.RunToEnd();
   EXPECT_EQ(runner.Summary().scans_offered, 3);
-  EXPECT_EQ(runner.Summary().scans_throttled, 6);
+  EXPECT_EQ(runner.Summary().scans_refused_by_node[static_cast<int>(NodeVerdict::kThrottled)], 6);
   EXPECT_EQ(runner.Summary().nodes, 3);
-  EXPECT_NEAR(runner.Trajectory()[4].pose.x, 2.0, 1e-12);
+  EXPECT_EQ(runner.Summary().loop_closures.size(), 0u);
+  // slam_karto keeps the 3rd, 6th and 9th message.
+  const std::vector<io::TimedPose> t = runner.Trajectory();
+  EXPECT_NEAR(t[4].pose.x, 2.0, 1e-12);
+}
+
+TEST(LogRunner, SynchronousNodeKeepsRotationsFromKarto) {
+  // Five scans driving 1 m each, then ten turning in place: the synchronous node hands Karto
+  // the first and the fifth only (the counter, then no travel), the asynchronous node every one.
+  auto log = std::make_shared<io::LaserLog>();
+  for (int i = 0; i < 5; ++i) log->scans.push_back(Record({1.0 * i, 0, 0}, i));
+  for (int i = 5; i < 15; ++i) log->scans.push_back(Record({4.0, 0, 0.3 * (i - 4)}, i));
+  MapperParams sync = MapperParams::Preset("slam_toolbox_sync");
+  sync.use_scan_matching = false;
+  LogRunner filtered(log, sync);
+  filtered.RunToEnd();
+  const RunSummary s = filtered.Summary();
+  EXPECT_EQ(s.scans_offered, 2);
+  EXPECT_EQ(s.nodes, 2);
+  EXPECT_EQ(s.scans_refused_by_node[static_cast<int>(NodeVerdict::kWarmingUp)], 3);
+  EXPECT_EQ(s.scans_refused_by_node[static_cast<int>(NodeVerdict::kNotMoved)], 10);
+  EXPECT_EQ(s.scans_refused_by_node_total(), 13);
+  MapperParams async = MapperParams::Preset("slam_toolbox");
+  async.use_scan_matching = false;
+  LogRunner every(log, async);
+  every.RunToEnd();
+  EXPECT_EQ(every.Summary().scans_offered, 15);
+  EXPECT_EQ(every.Summary().scans_refused_by_node_total(), 0);
+  EXPECT_GT(every.Summary().nodes, s.nodes);  // Karto's own heading test accepts the turns
 }
 
 TEST(LogRunner, EmptyLogIsAnInputError) {

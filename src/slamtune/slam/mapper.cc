@@ -28,7 +28,7 @@ bool SameOptions(const ScanMatcherOptions& a, const ScanMatcherOptions& b) {
 
 Mapper::Mapper(const MapperParams& params, SharedWork shared) : params_(params), shared_(std::move(shared)) {
   params_.Validate();
-  solver_ = MakeSolver(params_.solver, params_.ceres_loss_function);
+  solver_ = MakeSolver(params_.solver, params_.Ceres());
 }
 
 void Mapper::SetParams(const MapperParams& params) {
@@ -36,7 +36,7 @@ void Mapper::SetParams(const MapperParams& params) {
   if (params.use_scan_matching != params_.use_scan_matching && last_processed_ >= 0) {
     throw InputError("use_scan_matching cannot change after the first processed scan");
   }
-  auto solver = MakeSolver(params.solver, params.ceres_loss_function);
+  auto solver = MakeSolver(params.solver, params.Ceres());
   const bool barycenter_changed = params.use_scan_barycenter != params_.use_scan_barycenter;
   params_ = params;
   solver_ = std::move(solver);
@@ -293,7 +293,7 @@ int Mapper::CorrectPoses() {
   std::vector<std::uint64_t> key;
   std::optional<SolveCache::Solved> stored;
   if (shared_.solve_cache) {
-    key = SolveCache::KeyOf(NameOf(params_.solver), NameOf(params_.ceres_loss_function), nodes, graph_.edges());
+    key = SolveCache::KeyOf(solver_->Identity(), nodes, graph_.edges());
     key.push_back(params_.robot_pose_graph ? 1 : 0);  // how the values are written back
     // The stored barycentres also depend on the laser (range threshold, ...): key it too.
     AppendGeometryKey(*geometry_, &key);

@@ -54,7 +54,8 @@ struct LoopAttempt {
 
 // What Process() did with one scan.
 struct ProcessResult {
-  enum class Outcome { kProcessed, kNotMoved, kWrongReadingCount };
+  // kRefusedByNode: the ROS node kept it from Karto (LogRunner, node_scan_filter.h).
+  enum class Outcome { kProcessed, kNotMoved, kWrongReadingCount, kRefusedByNode };
   Outcome outcome = Outcome::kProcessed;
   MoveDecision move = MoveDecision::kNotMoved;  // which test of HasMovedEnough accepted it
   int state_id = -1;                             // when processed

@@ -16,7 +16,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 using Member = std::variant<bool MapperParams::*, int MapperParams::*, double MapperParams::*,
-                            RangeThresholdRule MapperParams::*, SolverKind MapperParams::*, CeresLoss MapperParams::*>;
+                            RangeThresholdRule MapperParams::*, NodeMode MapperParams::*, SolverKind MapperParams::*,
+                            CeresLoss MapperParams::*, CeresLinearSolver MapperParams::*,
+                            CeresPreconditioner MapperParams::*, CeresTrustStrategy MapperParams::*,
+                            CeresDoglegType MapperParams::*>;
 
 // Allowed interval of a numeric parameter; open ends are strict.
 struct Bounds {
@@ -120,11 +123,29 @@ const std::vector<Row>& Rows() {
              "a map cell needs more passes than this to be known"),
       ST_NUM(kDouble, occupancy_threshold, true, Closed(0, 1), "in [0, 1]",
              "hit/pass ratio above which a map cell is occupied"),
-      ST_NUM(kInt, throttle_scans, true, AtLeast(1), "an integer >= 1", "keep every n-th log scan"),
+      ST_CHOICE(node_mode, false, "slam_karto, slam_toolbox_async, slam_toolbox_sync or slam_toolbox_offline",
+                "which node feeds Karto, and how (the synchronous node filters scans)", NodeMode::kSlamKarto,
+                NodeMode::kSlamToolboxAsync, NodeMode::kSlamToolboxSync, NodeMode::kSlamToolboxOffline),
+      ST_NUM(kInt, throttle_scans, true, AtLeast(1), "an integer >= 1",
+             "slam_karto and the synchronous node: map every n-th scan"),
+      ST_NUM(kDouble, sync_minimum_time_interval, false, AtLeast(0), ">= 0",
+             "s; the synchronous node skips scans closer in time to the last one it kept"),
       ST_CHOICE(solver, false, "spa or ceres", "pose-graph back-end (spa = slam_karto, ceres = slam_toolbox)",
                 SolverKind::kSpa, SolverKind::kCeres),
       ST_CHOICE(ceres_loss_function, true, "None, HuberLoss or CauchyLoss", "robust loss of the ceres back-end",
                 CeresLoss::kNone, CeresLoss::kHuber, CeresLoss::kCauchy),
+      ST_CHOICE(ceres_linear_solver, true, "SPARSE_NORMAL_CHOLESKY, SPARSE_SCHUR, ITERATIVE_SCHUR or CGNR",
+                "linear solver of the ceres back-end", CeresLinearSolver::kSparseNormalCholesky,
+                CeresLinearSolver::kSparseSchur, CeresLinearSolver::kIterativeSchur, CeresLinearSolver::kCgnr),
+      ST_CHOICE(ceres_preconditioner, true, "JACOBI, IDENTITY or SCHUR_JACOBI",
+                "preconditioner of the ceres back-end's iterative solvers", CeresPreconditioner::kJacobi,
+                CeresPreconditioner::kIdentity, CeresPreconditioner::kSchurJacobi),
+      ST_CHOICE(ceres_trust_strategy, true, "LEVENBERG_MARQUARDT or DOGLEG",
+                "trust-region strategy of the ceres back-end", CeresTrustStrategy::kLevenbergMarquardt,
+                CeresTrustStrategy::kDogleg),
+      ST_CHOICE(ceres_dogleg_type, true, "TRADITIONAL_DOGLEG or SUBSPACE_DOGLEG",
+                "dogleg type of the ceres back-end (with DOGLEG)", CeresDoglegType::kTraditional,
+                CeresDoglegType::kSubspace),
       ST_NUM(kInt, matcher_threads, false, AtLeast(1), "an integer >= 1",
              "threads of the correlative search (results do not depend on it)"),
   };
@@ -284,6 +305,32 @@ const char* NameOf(RangeThresholdRule rule) {
   return "";
 }
 
+const char* NameOf(NodeMode mode) {
+  switch (mode) {
+    case NodeMode::kSlamKarto: return "slam_karto";
+    case NodeMode::kSlamToolboxAsync: return "slam_toolbox_async";
+    case NodeMode::kSlamToolboxSync: return "slam_toolbox_sync";
+    case NodeMode::kSlamToolboxOffline: return "slam_toolbox_offline";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+bool IsSynchronous(NodeMode mode) {
+  return mode == NodeMode::kSlamToolboxSync || mode == NodeMode::kSlamToolboxOffline;
+}
+
+const char* LaunchOf(NodeMode mode) {
+  switch (mode) {
+    case NodeMode::kSlamKarto: return "slam_karto (karto_slam.launch)";
+    case NodeMode::kSlamToolboxAsync: return "slam_toolbox online_async_launch.py (asynchronous node)";
+    case NodeMode::kSlamToolboxSync: return "slam_toolbox online_sync_launch.py (synchronous node)";
+    case NodeMode::kSlamToolboxOffline: return "slam_toolbox offline_launch.py (synchronous node)";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
 const char* ParamTypeName(ParamType type) {
   switch (type) {
     case ParamType::kBool: return "bool";
@@ -364,6 +411,14 @@ void MapperParams::Validate(const UnknownChoices& unknown_choices) const {
     }
     CheckRow(*this, row);
   }
+  if (solver == SolverKind::kCeres && ceres_linear_solver == CeresLinearSolver::kCgnr &&
+      ceres_preconditioner == CeresPreconditioner::kSchurJacobi) {
+    // Ceres 2.1's CGNR solver has no SCHUR_JACOBI preconditioner and aborts the process on it
+    // (cgnr_solver.cc), as slam_toolbox's node does at its first solve.
+    throw InputError(
+        "mapper parameters ceres_linear_solver = CGNR and ceres_preconditioner = SCHUR_JACOBI are inconsistent: Ceres "
+        "aborts on them (slam_toolbox's node crashes at its first loop closure); use JACOBI or IDENTITY with CGNR");
+  }
   CheckMatcher("correlation_search_space", correlation_search_space_dimension, correlation_search_space_resolution,
                correlation_search_space_smear_deviation);
   CheckMatcher("loop_search_space", loop_search_space_dimension, loop_search_space_resolution,
@@ -405,9 +460,35 @@ MapperParams MapperParams::Preset(std::string_view name) {
     p.range_threshold_rule = RangeThresholdRule::kSlamToolbox;
     p.max_laser_range = 20.0;
     p.solver = SolverKind::kCeres;
+    p.ceres_preconditioner = CeresPreconditioner::kSchurJacobi;  // the shipped files' (unused by Cholesky)
+    p.node_mode = NodeMode::kSlamToolboxAsync;
+    p.sync_minimum_time_interval = 0.5;
     return p;
   }
-  throw InputError(fmt::format("unknown preset '{}': must be slam_karto, open_karto or slam_toolbox", name));
+  if (name == "slam_toolbox_sync" || name == "slam_toolbox_offline") {
+    // The three shipped files differ only in node-level keys (map_update_interval, tf_buffer_duration).
+    p = Preset("slam_toolbox");
+    p.node_mode = name == "slam_toolbox_sync" ? NodeMode::kSlamToolboxSync : NodeMode::kSlamToolboxOffline;
+    return p;
+  }
+  throw InputError(fmt::format("unknown preset '{}': must be {}", name, PresetList()));
+}
+
+const std::vector<std::string>& PresetNames() {
+  static const std::vector<std::string> names = {"slam_karto", "open_karto", "slam_toolbox", "slam_toolbox_sync",
+                                                 "slam_toolbox_offline"};
+  return names;
+}
+
+std::string PresetList() {
+  const std::vector<std::string>& names = PresetNames();
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += names[i];
+    if (i + 2 < names.size()) out += ", ";
+    if (i + 2 == names.size()) out += " or ";
+  }
+  return out;
 }
 
 std::vector<NamedParam> ToNamedValues(const MapperParams& params) {

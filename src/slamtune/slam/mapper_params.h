@@ -30,6 +30,22 @@ enum class RangeThresholdRule { kSlamKarto, kSlamToolbox };
 // "slam_karto" or "slam_toolbox", as parameter files name it.
 const char* NameOf(RangeThresholdRule rule);
 
+// Which ROS node, started how, hands the recording's scans to Karto (docs/engine.md §3.4,
+// docs/ros-nodes.md "Node modes"); node_scan_filter.h applies its rule:
+//   kSlamKarto          slam_karto: every throttle_scans-th message;
+//   kSlamToolboxAsync   slam_toolbox's online_async_launch.py: every scan (throttle_scans unused);
+//   kSlamToolboxSync    online_sync_launch.py: the synchronous node's shouldProcessScan filter;
+//   kSlamToolboxOffline offline_launch.py: the same synchronous node and filter, started with
+//                       mapper_params_offline.yaml (whose mapper values are the same).
+enum class NodeMode { kSlamKarto, kSlamToolboxAsync, kSlamToolboxSync, kSlamToolboxOffline };
+// "slam_karto", "slam_toolbox_async", "slam_toolbox_sync", "slam_toolbox_offline".
+const char* NameOf(NodeMode mode);
+// Whether the mode is slam_toolbox's synchronous node, which filters scans before Karto.
+bool IsSynchronous(NodeMode mode);
+// The mode's launch file and parameter file, for comments and the report, e.g.
+// "slam_toolbox online_sync_launch.py (synchronous node)".
+const char* LaunchOf(NodeMode mode);
+
 // Texts read for choice parameters that name none of their choices, by parameter name. A reader
 // that assigns many values keeps them here instead of stopping at the first, so that
 // Validate(unknown_choices) reports every value out of range in one order, the table's.
@@ -82,11 +98,24 @@ struct MapperParams {
   double resolution = 0.05;             // m per map cell
   int min_pass_through = 2;             // a cell needs more passes than this to be known (§8.1)
   double occupancy_threshold = 0.1;     // hit/pass above this is occupied (§8.1)
-  int throttle_scans = 1;               // node level: keep every n-th log scan (§3.4)
+  // --- The node around Karto (§3.4) ---
+  NodeMode node_mode = NodeMode::kSlamKarto;  // which node feeds Karto, and how
+  int throttle_scans = 1;                     // slam_karto and the synchronous node: every n-th scan
+  // s; the synchronous node's own minimum_time_interval (slam_toolbox files' key of that name,
+  // whose undeclared default is transform_timeout's value); the asynchronous node ignores it.
+  double sync_minimum_time_interval = 0.5;
 
   // --- Back-end (§7) ---
   SolverKind solver = SolverKind::kSpa;              // kSpa (slam_karto, SPA LM) or kCeres (slam_toolbox)
   CeresLoss ceres_loss_function = CeresLoss::kNone;  // scale 0.7
+  CeresLinearSolver ceres_linear_solver = CeresLinearSolver::kSparseNormalCholesky;
+  CeresPreconditioner ceres_preconditioner = CeresPreconditioner::kJacobi;  // unused by sparse Cholesky
+  CeresTrustStrategy ceres_trust_strategy = CeresTrustStrategy::kLevenbergMarquardt;
+  CeresDoglegType ceres_dogleg_type = CeresDoglegType::kTraditional;       // with DOGLEG only
+  // The ceres_* choices together, for MakeSolver.
+  CeresChoices Ceres() const {
+    return {ceres_loss_function, ceres_linear_solver, ceres_preconditioner, ceres_trust_strategy, ceres_dogleg_type};
+  }
 
   // --- Engine only ---
   int matcher_threads = 1;  // threads of the correlative search; results do not depend on it
@@ -112,13 +141,21 @@ struct MapperParams {
   // choices reported as out of range where their parameter comes (UnknownChoices).
   void Validate(const UnknownChoices& unknown_choices) const;
 
-  // Presets: "slam_karto" (the defaults above), "open_karto" (Karto's internal defaults,
-  // in ROS units) and "slam_toolbox" (its shipped YAML, Ceres back-end). Throws InputError
-  // for other names.
+  // Presets (PresetNames()): "slam_karto" (the defaults above), "open_karto" (Karto's internal
+  // defaults, in ROS units), "slam_toolbox" (the asynchronous node with its shipped
+  // mapper_params_online_async.yaml, Ceres back-end), "slam_toolbox_sync" and
+  // "slam_toolbox_offline" (the synchronous node with mapper_params_online_sync.yaml /
+  // mapper_params_offline.yaml, whose mapper values are the asynchronous file's). Throws
+  // InputError for other names.
   static MapperParams Preset(std::string_view name);
 
   friend bool operator==(const MapperParams&, const MapperParams&) = default;
 };
+
+// The presets' names, in the order help texts list them.
+const std::vector<std::string>& PresetNames();
+// "slam_karto, open_karto, slam_toolbox, slam_toolbox_sync or slam_toolbox_offline".
+std::string PresetList();
 
 // Options of the occupancy grid these parameters draw (§8.1, §9.2): resolution, min_pass_through
 // and occupancy_threshold; max_cells keeps its default.
@@ -144,7 +181,7 @@ const ParamInfo* FindParam(std::string_view name);
 // "unknown mapper parameter 'NAME'", with the closest known name when it looks like a typo.
 std::string UnknownParamMessage(std::string_view name);
 
-// Choice parameters (range_threshold_rule, solver, ceres_loss_function) read and write as text:
+// Choice parameters (range_threshold_rule, node_mode, solver, ceres_*) read and write as text:
 // the name of their value, as parameter files have it.
 using ParamValue = std::variant<bool, int, double, std::string>;
 

@@ -225,5 +225,38 @@ TEST(MapperParams, NamedValuesCoverTheTableAndRoundTrip) {
   EXPECT_EQ(FindParam("nope"), nullptr);
 }
 
+TEST(MapperParams, CeresCombinationThatAbortsCeresIsRefused) {
+  MapperParams p = MapperParams::Preset("slam_toolbox");
+  p.ceres_linear_solver = CeresLinearSolver::kCgnr;
+  p.ceres_preconditioner = CeresPreconditioner::kSchurJacobi;
+  EXPECT_THROW(p.Validate(), InputError);
+  p.ceres_preconditioner = CeresPreconditioner::kJacobi;
+  EXPECT_NO_THROW(p.Validate());
+  p.ceres_preconditioner = CeresPreconditioner::kSchurJacobi;
+  p.solver = SolverKind::kSpa;  // the SPA back-end reads none of them
+  EXPECT_NO_THROW(p.Validate());
+}
+
+TEST(MapperParams, NodeModesAndPresets) {
+  EXPECT_EQ(MapperParams::Preset("slam_karto").node_mode, NodeMode::kSlamKarto);
+  EXPECT_EQ(MapperParams::Preset("open_karto").node_mode, NodeMode::kSlamKarto);
+  EXPECT_EQ(MapperParams::Preset("slam_toolbox").node_mode, NodeMode::kSlamToolboxAsync);
+  MapperParams sync = MapperParams::Preset("slam_toolbox_sync");
+  EXPECT_EQ(sync.node_mode, NodeMode::kSlamToolboxSync);
+  EXPECT_TRUE(IsSynchronous(sync.node_mode));
+  sync.node_mode = NodeMode::kSlamToolboxAsync;
+  EXPECT_EQ(sync, MapperParams::Preset("slam_toolbox"));  // the shipped files' mapper values are the same
+  MapperParams offline = MapperParams::Preset("slam_toolbox_offline");
+  EXPECT_TRUE(IsSynchronous(offline.node_mode));
+  offline.node_mode = NodeMode::kSlamToolboxAsync;
+  EXPECT_EQ(offline, MapperParams::Preset("slam_toolbox"));
+  for (const std::string& name : PresetNames()) EXPECT_NO_THROW(MapperParams::Preset(name).Validate()) << name;
+  EXPECT_EQ(PresetList(), "slam_karto, open_karto, slam_toolbox, slam_toolbox_sync or slam_toolbox_offline");
+  MapperParams p;
+  SetFromString(p, "node_mode", "slam_toolbox_offline");
+  EXPECT_EQ(p.node_mode, NodeMode::kSlamToolboxOffline);
+  EXPECT_THROW(SetFromString(p, "node_mode", "slam_toolbox_fast"), InputError);
+}
+
 }  // namespace
 }  // namespace slamtune::slam

@@ -1,6 +1,7 @@
 #include "slamtune/slam/backend/ceres_solver.h"
 
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 
 #include <Eigen/Cholesky>
 #include <cmath>
@@ -63,7 +64,74 @@ ceres::LossFunction* MakeLoss(CeresLoss loss) {
   return nullptr;
 }
 
+ceres::LinearSolverType LinearSolverOf(CeresLinearSolver solver) {
+  switch (solver) {
+    case CeresLinearSolver::kSparseNormalCholesky: return ceres::SPARSE_NORMAL_CHOLESKY;
+    case CeresLinearSolver::kSparseSchur: return ceres::SPARSE_SCHUR;
+    case CeresLinearSolver::kIterativeSchur: return ceres::ITERATIVE_SCHUR;
+    case CeresLinearSolver::kCgnr: return ceres::CGNR;
+  }
+  return ceres::SPARSE_NORMAL_CHOLESKY;
+}
+
+ceres::PreconditionerType PreconditionerOf(CeresPreconditioner preconditioner) {
+  switch (preconditioner) {
+    case CeresPreconditioner::kJacobi: return ceres::JACOBI;
+    case CeresPreconditioner::kIdentity: return ceres::IDENTITY;
+    case CeresPreconditioner::kSchurJacobi: return ceres::SCHUR_JACOBI;
+  }
+  return ceres::JACOBI;
+}
+
+// The solver options of slam_toolbox's CeresSolver::Configure for these choices.
+ceres::Solver::Options SolverOptionsOf(const CeresOptions& options) {
+  const CeresChoices& c = options.choices;
+  ceres::Solver::Options o;
+  o.linear_solver_type = LinearSolverOf(c.linear_solver);
+  o.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
+  o.preconditioner_type = PreconditionerOf(c.preconditioner);
+  o.trust_region_strategy_type = c.trust_strategy == CeresTrustStrategy::kDogleg ? ceres::DOGLEG
+                                                                                  : ceres::LEVENBERG_MARQUARDT;
+  if (o.trust_region_strategy_type == ceres::DOGLEG) {
+    o.dogleg_type = c.dogleg_type == CeresDoglegType::kSubspace ? ceres::SUBSPACE_DOGLEG : ceres::TRADITIONAL_DOGLEG;
+  }
+  o.dynamic_sparsity = o.linear_solver_type == ceres::SPARSE_NORMAL_CHOLESKY;
+  o.max_num_iterations = options.max_iterations;
+  o.function_tolerance = options.function_tolerance;
+  o.gradient_tolerance = options.gradient_tolerance;
+  o.parameter_tolerance = options.parameter_tolerance;
+  o.min_relative_decrease = options.min_relative_decrease;
+  o.use_nonmonotonic_steps = true;
+  o.max_consecutive_nonmonotonic_steps = options.max_consecutive_nonmonotonic_steps;
+  o.max_num_consecutive_invalid_steps = options.max_consecutive_invalid_steps;
+  o.jacobi_scaling = true;
+  o.initial_trust_region_radius = options.initial_trust_region_radius;
+  o.max_trust_region_radius = options.max_trust_region_radius;
+  o.min_trust_region_radius = options.min_trust_region_radius;
+  o.min_lm_diagonal = options.min_lm_diagonal;
+  o.max_lm_diagonal = options.max_lm_diagonal;
+  // The node runs 50 threads; the solvers' results do not depend on it, and the tuner runs
+  // one SLAM run per core.
+  o.num_threads = 1;
+  o.logging_type = ceres::SILENT;
+  o.minimizer_progress_to_stdout = false;
+  return o;
+}
+
 }  // namespace
+
+std::string CeresChoicesProblem(const CeresChoices& choices) {
+  CeresOptions options;
+  options.choices = choices;
+  std::string why;
+  return SolverOptionsOf(options).IsValid(&why) ? "" : why;
+}
+
+std::string CeresSolver::Identity() const {
+  const CeresChoices& c = options_.choices;
+  return fmt::format("ceres {} {} {} {} {}", NameOf(c.loss), NameOf(c.linear_solver), NameOf(c.preconditioner),
+                     NameOf(c.trust_strategy), NameOf(c.dogleg_type));
+}
 
 CeresSolver::CeresSolver(const CeresOptions& options) : options_(options) {}
 
@@ -91,7 +159,7 @@ SolveSummary CeresSolver::Solve(std::vector<Pose2>& nodes, std::span<const Edge>
         new EdgeResidual(e.constraint.measurement, u));
     double* a = &values[3 * e.source];
     double* b = &values[3 * e.target];
-    problem.AddResidualBlock(cost, MakeLoss(options_.loss), a, a + 1, a + 2, b, b + 1, b + 2);
+    problem.AddResidualBlock(cost, MakeLoss(options_.choices.loss), a, a + 1, a + 2, b, b + 1, b + 2);
   }
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     double* theta = &values[3 * k + 2];
@@ -105,27 +173,7 @@ SolveSummary CeresSolver::Solve(std::vector<Pose2>& nodes, std::span<const Edge>
     if (problem.HasParameterBlock(&values[k])) problem.SetParameterBlockConstant(&values[k]);
   }
 
-  ceres::Solver::Options o;
-  o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  o.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
-  o.preconditioner_type = ceres::SCHUR_JACOBI;
-  o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  o.dynamic_sparsity = true;
-  o.max_num_iterations = options_.max_iterations;
-  o.function_tolerance = options_.function_tolerance;
-  o.gradient_tolerance = options_.gradient_tolerance;
-  o.parameter_tolerance = options_.parameter_tolerance;
-  o.min_relative_decrease = options_.min_relative_decrease;
-  o.use_nonmonotonic_steps = true;
-  o.max_consecutive_nonmonotonic_steps = options_.max_consecutive_nonmonotonic_steps;
-  o.initial_trust_region_radius = options_.initial_trust_region_radius;
-  o.max_trust_region_radius = options_.max_trust_region_radius;
-  o.min_trust_region_radius = options_.min_trust_region_radius;
-  o.min_lm_diagonal = options_.min_lm_diagonal;
-  o.max_lm_diagonal = options_.max_lm_diagonal;
-  o.num_threads = 1;
-  o.logging_type = ceres::SILENT;
-  o.minimizer_progress_to_stdout = false;
+  const ceres::Solver::Options o = SolverOptionsOf(options_);
   ceres::Solver::Summary s;
   ceres::Solve(o, &problem, &s);
 

@@ -40,10 +40,49 @@ const char* NameOf(CeresLoss loss) {
   return "";
 }
 
-std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, CeresLoss ceres_loss) {
+const char* NameOf(CeresLinearSolver solver) {
+  switch (solver) {
+    case CeresLinearSolver::kSparseNormalCholesky: return "SPARSE_NORMAL_CHOLESKY";
+    case CeresLinearSolver::kSparseSchur: return "SPARSE_SCHUR";
+    case CeresLinearSolver::kIterativeSchur: return "ITERATIVE_SCHUR";
+    case CeresLinearSolver::kCgnr: return "CGNR";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+const char* NameOf(CeresPreconditioner preconditioner) {
+  switch (preconditioner) {
+    case CeresPreconditioner::kJacobi: return "JACOBI";
+    case CeresPreconditioner::kIdentity: return "IDENTITY";
+    case CeresPreconditioner::kSchurJacobi: return "SCHUR_JACOBI";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+const char* NameOf(CeresTrustStrategy strategy) {
+  switch (strategy) {
+    case CeresTrustStrategy::kLevenbergMarquardt: return "LEVENBERG_MARQUARDT";
+    case CeresTrustStrategy::kDogleg: return "DOGLEG";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+const char* NameOf(CeresDoglegType type) {
+  switch (type) {
+    case CeresDoglegType::kTraditional: return "TRADITIONAL_DOGLEG";
+    case CeresDoglegType::kSubspace: return "SUBSPACE_DOGLEG";
+  }
+  SLAMTUNE_CHECK(false);
+  return "";
+}
+
+std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, const CeresChoices& ceres) {
   if (kind == SolverKind::kSpa) return std::make_shared<const SpaSolver>();
   CeresOptions options;
-  options.loss = ceres_loss;
+  options.choices = ceres;
   return std::make_shared<const CeresSolver>(options);
 }
 

@@ -50,21 +50,49 @@ class PoseGraphSolver {
  public:
   virtual ~PoseGraphSolver() = default;
   virtual const char* name() const = 0;
+  // Everything a solve's result depends on besides the graph: the back-end and its options, as
+  // text (e.g. "ceres None SPARSE_NORMAL_CHOLESKY JACOBI LEVENBERG_MARQUARDT TRADITIONAL_DOGLEG").
+  // Solves are shared between runs under it (sharing/solve_cache.h).
+  virtual std::string Identity() const { return name(); }
   // Optimises `nodes` (index = vertex id) in place; node 0 is fixed. Deterministic.
   virtual SolveSummary Solve(std::vector<Pose2>& nodes, std::span<const Edge> edges) const = 0;
 };
 
 // The back-ends: slam_karto's SPA (§7.3) and slam_toolbox's Ceres (§7.4).
 enum class SolverKind { kSpa, kCeres };
-// The robust loss of the Ceres back-end on every edge (scale 0.7), slam_toolbox's
-// ceres_loss_function.
+// The options of slam_toolbox's Ceres back-end, as its CeresSolver::Configure
+// (solvers/ceres_solver.cpp) reads them from ceres_loss_function, ceres_linear_solver,
+// ceres_preconditioner, ceres_trust_strategy and ceres_dogleg_type. The first value of each enum
+// is what the node uses for a text it does not know (slam/params_yaml.h reads them that way).
+// The robust loss on every edge has scale 0.7.
 enum class CeresLoss { kNone, kHuber, kCauchy };
+enum class CeresLinearSolver { kSparseNormalCholesky, kSparseSchur, kIterativeSchur, kCgnr };
+enum class CeresPreconditioner { kJacobi, kIdentity, kSchurJacobi };
+enum class CeresTrustStrategy { kLevenbergMarquardt, kDogleg };
+enum class CeresDoglegType { kTraditional, kSubspace };
 
-// Their names in parameter files: "spa", "ceres"; "None", "HuberLoss", "CauchyLoss".
+// Their names in parameter files: "spa", "ceres"; "None", "HuberLoss", "CauchyLoss";
+// "SPARSE_NORMAL_CHOLESKY", ...; "JACOBI", ...; "LEVENBERG_MARQUARDT", "DOGLEG";
+// "TRADITIONAL_DOGLEG", "SUBSPACE_DOGLEG" (Ceres's own names, as the node's YAML has them).
 const char* NameOf(SolverKind kind);
 const char* NameOf(CeresLoss loss);
+const char* NameOf(CeresLinearSolver solver);
+const char* NameOf(CeresPreconditioner preconditioner);
+const char* NameOf(CeresTrustStrategy strategy);
+const char* NameOf(CeresDoglegType type);
 
-// The back-end of `kind`; `ceres_loss` applies to kCeres.
-std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, CeresLoss ceres_loss = CeresLoss::kNone);
+// The Ceres back-end's choices together; the defaults are the node's for keys a file leaves out.
+struct CeresChoices {
+  CeresLoss loss = CeresLoss::kNone;
+  CeresLinearSolver linear_solver = CeresLinearSolver::kSparseNormalCholesky;
+  CeresPreconditioner preconditioner = CeresPreconditioner::kJacobi;
+  CeresTrustStrategy trust_strategy = CeresTrustStrategy::kLevenbergMarquardt;
+  CeresDoglegType dogleg_type = CeresDoglegType::kTraditional;  // used with kDogleg only
+
+  friend bool operator==(const CeresChoices&, const CeresChoices&) = default;
+};
+
+// The back-end of `kind`; `ceres` applies to kCeres.
+std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, const CeresChoices& ceres = {});
 
 }  // namespace slamtune::slam

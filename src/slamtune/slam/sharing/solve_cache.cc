@@ -23,12 +23,11 @@ SolveCache::SolveCache(std::size_t byte_budget) : byte_budget_(byte_budget) {
   if (byte_budget_ == 0) throw InputError("solve cache byte_budget = 0 is out of range: must be > 0");
 }
 
-std::vector<std::uint64_t> SolveCache::KeyOf(const std::string& backend, const std::string& loss,
-                                             std::span<const Pose2> nodes, std::span<const Edge> edges) {
+std::vector<std::uint64_t> SolveCache::KeyOf(const std::string& solver, std::span<const Pose2> nodes,
+                                             std::span<const Edge> edges) {
   std::vector<std::uint64_t> key;
-  key.reserve(8 + backend.size() + loss.size() + nodes.size() * 3 + edges.size() * 14);
-  AppendKeyString(backend, &key);
-  AppendKeyString(loss, &key);
+  key.reserve(8 + solver.size() + nodes.size() * 3 + edges.size() * 14);
+  AppendKeyString(solver, &key);
   key.push_back(nodes.size());
   for (const Pose2& p : nodes) AppendKeyPose(p, &key);
   key.push_back(edges.size());

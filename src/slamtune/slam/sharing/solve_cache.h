@@ -5,8 +5,8 @@
 // run whose scan matches all come from the MatchCache, the solves are about half of the time.
 //
 // Exactness, as in match_cache.h: an entry is keyed by everything the solve depends on,
-// compared word for word (the hash only picks the bucket): the back-end's name and loss (the
-// solvers are built from those alone, slam/backend/pose_graph_solver.h), the bits of every node value, and
+// compared word for word (the hash only picks the bucket): the back-end's identity (its kind
+// and every option, PoseGraphSolver::Identity()), the bits of every node value, and
 // every edge's source, target, measurement and information bits in order. An entry holds the
 // optimised node values and SolveSummary (its wall_s is the caller's to set) and, when the
 // caller gives them, the barycentres of the scans at those poses, so that a run taking the
@@ -61,9 +61,9 @@ class SolveCache {
     std::vector<Pose2> barycenters;  // of the scans at `nodes`, or empty
   };
 
-  // `backend` and `loss` name the solver as MakeSolver() was given them; nodes before the solve.
-  static std::vector<std::uint64_t> KeyOf(const std::string& backend, const std::string& loss,
-                                          std::span<const Pose2> nodes, std::span<const Edge> edges);
+  // `solver` is the back-end's PoseGraphSolver::Identity(); nodes before the solve.
+  static std::vector<std::uint64_t> KeyOf(const std::string& solver, std::span<const Pose2> nodes,
+                                          std::span<const Edge> edges);
   // The stored solve of `key`, if any (counted as a hit or a miss).
   std::optional<Solved> Find(const std::vector<std::uint64_t>& key);
   void Store(std::vector<std::uint64_t> key, Solved solved);

@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cmath>
+#include <set>
 #include <vector>
 
 #include "slamtune/common/testing/same_bits.h"
@@ -38,7 +39,7 @@ TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
   ASSERT_TRUE(expected.updated);
 
   SolveCache cache;
-  const auto key = SolveCache::KeyOf("spa", "None", g.nodes, g.edges);
+  const auto key = SolveCache::KeyOf("spa", g.nodes, g.edges);
   EXPECT_FALSE(cache.Find(key).has_value());
   std::vector<Pose2> first = g.nodes;
   const SolveSummary summary = solver->Solve(first, g.edges);
@@ -57,33 +58,50 @@ TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
 
 TEST(SolveCache, KeyNamesBackendNodesAndEveryEdgeField) {
   Graph g;
-  const auto key = SolveCache::KeyOf("spa", "None", g.nodes, g.edges);
-  EXPECT_NE(key, SolveCache::KeyOf("ceres", "None", g.nodes, g.edges));
-  EXPECT_NE(key, SolveCache::KeyOf("ceres", "HuberLoss", g.nodes, g.edges));
+  const std::string spa = MakeSolver(SolverKind::kSpa)->Identity();
+  const auto key = SolveCache::KeyOf(spa, g.nodes, g.edges);
+  EXPECT_NE(key, SolveCache::KeyOf(MakeSolver(SolverKind::kCeres)->Identity(), g.nodes, g.edges));
+  EXPECT_NE(key, SolveCache::KeyOf(MakeSolver(SolverKind::kCeres, {.loss = CeresLoss::kHuber})->Identity(), g.nodes,
+                                   g.edges));
+  // Every option of the Ceres back-end is part of its identity.
+  const CeresChoices lm;
+  CeresChoices dogleg;
+  dogleg.trust_strategy = CeresTrustStrategy::kDogleg;
+  CeresChoices subspace = dogleg;
+  subspace.dogleg_type = CeresDoglegType::kSubspace;
+  CeresChoices cgnr;
+  cgnr.linear_solver = CeresLinearSolver::kCgnr;
+  CeresChoices identity;
+  identity.preconditioner = CeresPreconditioner::kIdentity;
+  std::set<std::string> identities;
+  for (const CeresChoices& c : {lm, dogleg, subspace, cgnr, identity}) {
+    identities.insert(MakeSolver(SolverKind::kCeres, c)->Identity());
+  }
+  EXPECT_EQ(identities.size(), 5u);
   Graph moved = g;
   moved.nodes[2].theta = std::nextafter(moved.nodes[2].theta, 10.0);
-  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", moved.nodes, moved.edges));
+  EXPECT_NE(key, SolveCache::KeyOf("spa", moved.nodes, moved.edges));
   Graph reweighted = g;
   reweighted.edges[1].constraint.information(0, 2) += 1e-12;
-  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", reweighted.nodes, reweighted.edges));
+  EXPECT_NE(key, SolveCache::KeyOf("spa", reweighted.nodes, reweighted.edges));
   Graph remeasured = g;
   remeasured.edges[3].constraint.measurement.y += 1e-12;
-  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", remeasured.nodes, remeasured.edges));
+  EXPECT_NE(key, SolveCache::KeyOf("spa", remeasured.nodes, remeasured.edges));
   Graph fewer = g;
   fewer.edges.pop_back();
-  EXPECT_NE(key, SolveCache::KeyOf("spa", "None", fewer.nodes, fewer.edges));
+  EXPECT_NE(key, SolveCache::KeyOf("spa", fewer.nodes, fewer.edges));
 }
 
 // A hit counts as a use: eviction drops the least recently used entries first.
 TEST(SolveCache, EvictionKeepsRecentlyUsedSolves) {
   Graph g;
-  const std::size_t one_entry = SolveCache::KeyOf("spa", "None", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
+  const std::size_t one_entry = SolveCache::KeyOf("spa", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
   SolveCache cache(2 * one_entry + one_entry / 2);  // room for two
   std::vector<std::vector<std::uint64_t>> keys;
   for (int k = 0; k < 3; ++k) {
     Graph v = g;
     v.nodes[1].x += 0.01 * k;
-    keys.push_back(SolveCache::KeyOf("spa", "None", v.nodes, v.edges));
+    keys.push_back(SolveCache::KeyOf("spa", v.nodes, v.edges));
   }
   cache.Store(keys[0], {{}, g.nodes, {}});
   cache.Store(keys[1], {{}, g.nodes, {}});
@@ -98,14 +116,14 @@ TEST(SolveCache, EvictionKeepsRecentlyUsedSolves) {
 TEST(SolveCache, BudgetEvictsButResultsStayExact) {
   const auto solver = MakeSolver(SolverKind::kSpa);
   Graph g;
-  const std::size_t one_entry = SolveCache::KeyOf("spa", "None", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
+  const std::size_t one_entry = SolveCache::KeyOf("spa", g.nodes, g.edges).size() * 8 + 4 * sizeof(Pose2) + 256;
   SolveCache cache(one_entry + one_entry / 2);  // room for one
   std::vector<Pose2> direct = g.nodes;
   solver->Solve(direct, g.edges);
   Graph other = g;
   other.nodes[1].x += 0.01;
-  const auto key_g = SolveCache::KeyOf("spa", "None", g.nodes, g.edges);
-  const auto key_other = SolveCache::KeyOf("spa", "None", other.nodes, other.edges);
+  const auto key_g = SolveCache::KeyOf("spa", g.nodes, g.edges);
+  const auto key_other = SolveCache::KeyOf("spa", other.nodes, other.edges);
   for (int round = 0; round < 3; ++round) {
     for (const auto* key : {&key_g, &key_other}) {
       const auto hit = cache.Find(*key);
