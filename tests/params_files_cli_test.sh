@@ -18,7 +18,7 @@ small=("${common[@]}" --generations 2)
 short=("${common[@]}" --generations 1 --quiet)
 
 # The engine's values of a stack of parameter files (sorted lines "name value").
-meaning() { "$bin" params "$@" --all | awk '/^  /{print $1, $2}' | sort; }
+meaning() { "$bin" params "$@" --all | awk '/^engine parameters over/{p = 1; next} p && /^  /{print $1, $2}' | sort; }
 
 for case in toolbox:slam_toolbox_online_async.yaml:best.yaml:best_change.yaml \
             karto:slam_karto_mapper_params.yaml:best_slam_karto.yaml:best_slam_karto_change.yaml; do
@@ -34,7 +34,7 @@ for case in toolbox:slam_toolbox_online_async.yaml:best.yaml:best_change.yaml \
   grep -q "your configuration ($base)" "$out/report.html" || fail "$name: the report does not name the baseline"
   grep -q "ros2 launch slam_toolbox online_async_launch.py slam_params_file:=" "$out/report.html" ||
     fail "$name: the report does not say how to load the files"
-  head -1 "$out/$full" | grep -qE '^# slamtune optimize: (the recommendation|NOT better)' ||
+  head -1 "$out/$full" | grep -qE '^# slamtune optimize, tuned for [a-z_]+ \(.*\): (the recommendation|NOT better)' ||
     fail "$name: $full does not open with the verdict"
   # The user's own lines are kept in the full file written for their node.
   if [[ $name == toolbox ]]; then

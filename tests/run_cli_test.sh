@@ -83,9 +83,11 @@ slam_toolbox:
 EOF
 "$bin" run "$log" --out "$work/c" --params "$work/params.yaml" --no-loop-closure --quiet >/dev/null 2>&1 ||
   fail "run with --params and --no-loop-closure failed"
+"$bin" run "$log" --out "$work/c2" --params "$work/params.yaml" --quiet >/dev/null 2>&1 || fail "run with --params failed"
 [[ "$(json_int "$work/c/run.json" loop_closures)" == "0" ]] || fail "--no-loop-closure still closed loops"
-[[ "$(json_int "$work/c/run.json" nodes)" == "$(json_int "$work/a/run.json" nodes)" ]] ||
+[[ "$(json_int "$work/c/run.json" nodes)" == "$(json_int "$work/c2/run.json" nodes)" ]] ||
   fail "node count depends on loop closure (it must depend on odometry only)"
+grep -q '"node_mode": "slam_toolbox_async"' "$work/c/run.json" || fail "a slam_toolbox file does not run its node"
 
 # 4. Bad input: exit 2 with a message naming the problem.
 expect_error() {  # PATTERN ARGS...

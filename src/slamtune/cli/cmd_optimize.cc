@@ -248,6 +248,7 @@ void DescribeBase(const TuningInputs& inputs, const TuningInputOptions& input_op
     settings.default_assignment[name] = slam::GetNumeric(inputs.base, name);
   }
   settings.base_label = inputs.base_label;
+  settings.node_mode = inputs.base.node_mode;
   settings.log_path = inputs.log_label;
   settings.log_input = inputs.log_input;
   settings.relations_path = inputs.relations_label;
@@ -350,7 +351,7 @@ void PrintOutcome(const optim::OptimizeResult& result, const RecommendationFiles
       "slam_toolbox; best_slam_karto.yaml, best_slam_karto_change.yaml for slam_karto) and %zu report files "
       "(report.html, results.json, tables, maps, figures) to %s\n",
       result.evaluation_count, result.cache_hits, result.wall_s, report_files, dir.c_str());
-  for (const std::string& line : HowToLoad(dir)) std::printf("%s\n", line.c_str());
+  for (const std::string& line : HowToLoad(dir, result.node_mode)) std::printf("%s\n", line.c_str());
 }
 
 int RunOptimize(OptimizeArgs args, const CLI::App& app) {
@@ -404,7 +405,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   const RecommendationFiles files = WriteRecommendationFiles(folder.dir(), inputs, best_params, result);
   for (const std::string& warning : files.warnings) std::fprintf(stderr, "slamtune: warning: %s\n", warning.c_str());
   if (result.verdict_kind == optim::VerdictKind::kBetter) result.changes = files.changes;
-  result.how_to_load = HowToLoad(folder.dir());
+  result.how_to_load = HowToLoad(folder.dir(), inputs.base.node_mode);
   const auto summary = report::WriteOptimizeReport(result, folder.dir());
   if (!args.run.quiet) {
     PrintOutcome(result, files, summary.files.size(), settings.space, inputs.base_label, folder.dir());

@@ -15,7 +15,8 @@
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/metrics/map_quality.h"
-#include "slamtune/slam/params_yaml.h"
+#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/slam/base_configuration.h"
 #include "slamtune/slam/pose_map.h"
 
 namespace slamtune::cli {
@@ -28,9 +29,9 @@ struct RenderArgs {
 };
 
 int RunRender(const RenderArgs& args) {
-  slam::MapperParams params = args.preset.empty() ? slam::MapperParams{} : slam::MapperParams::Preset(args.preset);
-  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
-  for (const auto& s : args.sets) slam::ApplyOverride(params, s);
+  const slam::BaseConfiguration base = slam::LoadBaseConfiguration(args.params_file, args.preset, args.sets);
+  PrintParamsWarnings(base);
+  const slam::MapperParams& params = base.params;
   EnsureOutputDir(args.out);  // before the work
   const io::LaserLog log = ReadLog(args.log, args.input);
   for (const std::string& line : io::DescribeLogInput(log)) std::fprintf(stderr, "%s\n", line.c_str());
@@ -60,8 +61,9 @@ const SubcommandRegistrar kRegistrar{{
       app.add_option("--poses", args->poses, "trajectory file (timestamp x y theta per scan) or 'odometry'")
           ->required();
       app.add_option("--out", args->out, "output folder")->required();
-      app.add_option("--preset", args->preset, "parameter preset (map resolution, laser range rules)");
-      app.add_option("--params", args->params_file, "parameter YAML");
+      AddPresetOption(app, args->preset);
+      app.add_option("--params", args->params_file,
+                     "slam_toolbox or slam_karto parameter file (map resolution, laser range rules)");
       app.add_option("--set", args->sets, "NAME=VALUE override (repeatable)");
       app.footer(
           "Examples:\n"

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -48,7 +49,7 @@ struct RunArgs {
   std::string log;
   std::string out;
   std::string params_file;
-  std::string preset = "slam_karto";
+  std::string preset;  // "" = slam_karto, or the node of --params in its default mode
   std::vector<std::string> sets;
   std::string relations;
   std::string world = sim::kDefaultWorld;  // simulated when no LOG is given
@@ -102,10 +103,15 @@ void WriteFrontEndCsv(const std::string& path, const std::vector<slam::Sequentia
   WriteFileAtomically(path, csv);
 }
 
+// The base configuration every command loads (slam/base_configuration.h), with --no-loop-closure.
 slam::MapperParams ResolveParams(const RunArgs& args) {
-  slam::MapperParams params = slam::MapperParams::Preset(args.preset);
-  if (!args.params_file.empty()) slam::ApplyParamsYamlFile(params, args.params_file);
-  for (const std::string& s : args.sets) slam::ApplyOverride(params, s);
+  const slam::BaseConfiguration base = slam::LoadBaseConfiguration(args.params_file, args.preset, args.sets);
+  PrintParamsWarnings(base);
+  if (!args.quiet) {
+    std::fprintf(stderr, "base: %s, modelling %s (mode: %s)\n", base.label.c_str(),
+                 slam::LaunchOf(base.params.node_mode), base.mode_source.c_str());
+  }
+  slam::MapperParams params = base.params;
   if (args.no_loop_closure) params.do_loop_closing = false;
   params.Validate();
   return params;
@@ -227,6 +233,30 @@ nlohmann::json MapJson(const metrics::MapQuality& quality) {
           {"message", quality.message}};
 }
 
+// The scans the node kept from Karto, by verdict (slam/node_scan_filter.h).
+nlohmann::json RefusedByNodeJson(const slam::RunSummary& summary) {
+  nlohmann::json out = nlohmann::json::object();
+  for (int v = 1; v < slam::kNumNodeVerdicts; ++v) {
+    out[slam::NameOf(static_cast<slam::NodeVerdict>(v))] = summary.scans_refused_by_node[v];
+  }
+  return out;
+}
+
+// "; slam_toolbox online_sync_launch.py (synchronous node) kept 120 scans from Karto (100 not
+// moved, 16 too soon, 4 warming up)", or "" when the node handed every scan on.
+std::string RefusedByNodeText(const slam::RunSummary& summary, slam::NodeMode mode) {
+  if (summary.scans_refused_by_node_total() == 0) return "";
+  std::string reasons;
+  for (int v = 1; v < slam::kNumNodeVerdicts; ++v) {
+    if (summary.scans_refused_by_node[v] == 0) continue;
+    std::string name = slam::NameOf(static_cast<slam::NodeVerdict>(v));
+    std::replace(name.begin(), name.end(), '_', ' ');
+    reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", summary.scans_refused_by_node[v], name);
+  }
+  return fmt::format("; {} kept {} scans from Karto ({})", slam::LaunchOf(mode), summary.scans_refused_by_node_total(),
+                     reasons);
+}
+
 // run.json's counts, timing, laser, input, parameters and map metrics.
 nlohmann::json RunJson(const slam::RunSummary& summary, const io::LaserLog& log, const std::string& log_label,
                        const slam::MapperParams& params, const RunMap& map) {
@@ -238,7 +268,9 @@ nlohmann::json RunJson(const slam::RunSummary& summary, const io::LaserLog& log,
   return {
       {"log", log_label},
       {"scans", summary.scans_read},
+      {"node_mode", slam::NameOf(params.node_mode)},
       {"scans_offered", summary.scans_offered},
+      {"scans_refused_by_node", RefusedByNodeJson(summary)},
       {"scans_not_moved", summary.scans_not_moved},
       {"scans_wrong_reading_count", summary.scans_wrong_reading_count},
       {"nodes", summary.nodes},
@@ -278,15 +310,15 @@ std::string AddGtError(const std::vector<io::TimedPose>& trajectory, const RunIn
                      e.rot_mean_deg, e.rot_std_deg, e.relations_used);
 }
 
-void PrintRunSummary(const slam::RunSummary& summary, const std::string& gt_line, const std::string& out,
-                     const slam::FrontEndEvidence& front_end) {
+void PrintRunSummary(const slam::RunSummary& summary, slam::NodeMode mode, const std::string& gt_line,
+                     const std::string& out, const slam::FrontEndEvidence& front_end) {
   const std::string dropped = summary.scans_wrong_reading_count > 0
                                   ? fmt::format(", {} scans dropped (reading count differs from the first scan's)",
                                                 summary.scans_wrong_reading_count)
                                   : "";
-  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s; wrote %s\n", summary.scans_read,
-              summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s, dropped.c_str(),
-              gt_line.c_str(), out.c_str());
+  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s%s; wrote %s\n",
+              summary.scans_read, summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s,
+              RefusedByNodeText(summary, mode).c_str(), dropped.c_str(), gt_line.c_str(), out.c_str());
   std::printf("%s\n", front_end.Summary().c_str());
   if (front_end.points_at_front_end()) {
     std::printf("  (front_end_map.png marks them on the map, front_end.csv has every match; the default "
@@ -320,7 +352,7 @@ int Run(const RunArgs& args) {
   WriteFileAtomically(OutFile(args.out, "run.json"), run.dump(2) + "\n");
 
   progress.Finish();
-  PrintRunSummary(summary, gt_line, args.out, front_end);
+  PrintRunSummary(summary, params.node_mode, gt_line, args.out, front_end);
   return 0;
 }
 
@@ -335,9 +367,9 @@ const SubcommandRegistrar kRun(Subcommand{
                      "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag; none: the built-in world --world");
       app.add_option("--out", args->out, "Output folder (created)")->required();
       app.add_option("--params", args->params_file,
-                     "Mapper parameters YAML (slam_toolbox ros__parameters nesting or a flat map)");
-      app.add_option("--preset", args->preset, "Base parameters: slam_karto, open_karto or slam_toolbox")
-          ->capture_default_str();
+                     "your slam_toolbox (ROS 2) or slam_karto (flat) parameter file, or a best.yaml that optimize "
+                     "wrote; keys it does not set take that node's own defaults");
+      AddPresetOption(app, args->preset);
       app.add_option("--set", args->sets, "Override one parameter, name=value (repeatable; applied last)");
       app.add_option("--relations", args->relations, "Freiburg relations file: report the relation error");
       app.add_option("--world", args->world, "built-in world to simulate when no LOG is given (see `simulate --list`)")

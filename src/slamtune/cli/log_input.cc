@@ -14,8 +14,9 @@ void LogInputOptions::AddTo(CLI::App& app, MaxScans max_scans_option) {
     app.add_option("--max-scans", max_scans, "Read only the first N laser scans (0 = all)");
   }
   app.add_option("--beams", beams,
-                 "Scans whose beam count or angles differ from the others': 'resample' onto the most common "
-                 "geometry, or 'strict' (dropped, as Karto does)")
+                 "scans whose beam count changes: node (default: dropped, as the ROS node drops them), per-geometry "
+                 "(one Karto laser per beam geometry) or nearest-beam (resampled onto the most common geometry, an "
+                 "approximation)")
       ->capture_default_str();
   auto* ros = "ROS recordings";
   app.add_option("--scan-topic", scan_topic, "sensor_msgs/LaserScan topic (default: the only one)")->group(ros);
@@ -62,7 +63,7 @@ LogInputOptions LogInputOptions::FromJson(const nlohmann::json& j) {
   o.lenient = j.at("lenient");
   o.no_return = j.at("no_return");
   o.max_scans = j.at("max_scans");
-  o.beams = j.at("beams");
+  o.beams = j.at("beams");  // older folders' "strict" and "resample" kept as written (same policies)
   o.scan_topic = j.at("scan_topic");
   o.odom_topic = j.at("odom_topic");
   o.odom_frame = j.at("odom_frame");

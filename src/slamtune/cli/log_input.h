@@ -18,7 +18,7 @@ struct LogInputOptions {
   bool lenient = false;
   double no_return = 0.0;     // m; 0 = from the log
   std::size_t max_scans = 0;  // 0 = all
-  std::string beams = "resample";
+  std::string beams = "node";  // io::BeamPolicy by name
   std::string scan_topic, odom_topic, odom_frame, base_frame;
   std::vector<double> laser_offset;  // X,Y,YAW when given
   double max_odom_gap_s = 0.5;

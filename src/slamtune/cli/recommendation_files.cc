@@ -53,18 +53,21 @@ std::string BehaviourWarning(const Target& target, const TuningInputs& inputs, c
 std::vector<std::string> Header(const Target& target, const TuningInputs& inputs, const optim::OptimizeResult& result,
                                 const std::string& recommended_summary) {
   std::vector<std::string> lines;
+  // "tuned for MODE" is read back by slam/base_configuration.h, so `run --params` runs that mode.
+  const std::string tuned_for = fmt::format("slamtune optimize, tuned for {} ({})", slam::NameOf(inputs.base.node_mode),
+                                            slam::LaunchOf(inputs.base.node_mode));
   if (result.verdict_kind == optim::VerdictKind::kBetter) {
-    lines.push_back(fmt::format("slamtune optimize: the recommendation ({}) gives a cleaner map than {} on {}",
+    lines.push_back(fmt::format("{}: the recommendation ({}) gives a cleaner map than {} on {}", tuned_for,
                                 recommended_summary, inputs.base_label, inputs.log_label));
   } else {
-    lines.push_back(fmt::format("slamtune optimize: NOT better than {} ({}: {}); keep your values — this file is {} "
+    lines.push_back(fmt::format("{}: NOT better than {} ({}: {}); keep your values — this file is {} "
                                 "unchanged and the change file is empty",
-                                inputs.base_label, optim::VerdictKindName(result.verdict_kind), recommended_summary,
-                                inputs.base_label));
+                                tuned_for, inputs.base_label, optim::VerdictKindName(result.verdict_kind),
+                                recommended_summary, inputs.base_label));
   }
   if (target.node == slam::RosNode::kSlamToolbox) {
-    lines.push_back("slam_toolbox (ROS 2): ros2 launch slam_toolbox online_async_launch.py slam_params_file:=" +
-                    std::string(target.full));
+    lines.push_back(fmt::format("slam_toolbox (ROS 2): ros2 launch slam_toolbox {} slam_params_file:={}",
+                                ToolboxLaunchFile(inputs.base.node_mode), target.full));
   } else {
     lines.push_back(fmt::format("slam_karto (ROS 1): rosparam load {} /slam_karto, or <rosparam file=\"{}\"/> in the "
                                 "slam_karto node of the launch file",
@@ -133,11 +136,21 @@ RecommendationFiles WriteRecommendationFiles(const std::string& dir, const Tunin
   return out;
 }
 
-std::vector<std::string> HowToLoad(const std::string& dir) {
+const char* ToolboxLaunchFile(slam::NodeMode mode) {
+  switch (mode) {
+    case slam::NodeMode::kSlamToolboxSync: return "online_sync_launch.py";
+    case slam::NodeMode::kSlamToolboxOffline: return "offline_launch.py";
+    case slam::NodeMode::kSlamKarto:
+    case slam::NodeMode::kSlamToolboxAsync: return "online_async_launch.py";
+  }
+  return "online_async_launch.py";
+}
+
+std::vector<std::string> HowToLoad(const std::string& dir, slam::NodeMode mode) {
   const std::string d = std::filesystem::absolute(dir).string();
   return {
-      fmt::format(
-          "slam_toolbox (ROS 2): ros2 launch slam_toolbox online_async_launch.py slam_params_file:={}/best.yaml", d),
+      fmt::format("slam_toolbox (ROS 2): ros2 launch slam_toolbox {} slam_params_file:={}/best.yaml",
+                  ToolboxLaunchFile(mode), d),
       fmt::format("  or merge {}/best_change.yaml into your own file", d),
       fmt::format("slam_karto (ROS 1):   rosparam load {}/best_slam_karto.yaml /slam_karto  (before starting it)", d)};
 }

@@ -3,7 +3,8 @@
 // what differs from the base), for slam_karto (ROS 1) best_slam_karto.yaml and
 // best_slam_karto_change.yaml. Each file's first comment line says whether the recommendation
 // is better than the base; when it is not, the full file is the base unchanged and the change
-// file holds no parameter. Each file is checked the way its node reads it before it is written.
+// file holds no parameter; it also names the node and mode the engine modelled
+// (slam::NodeMode). Each file is checked the way its node reads it before it is written.
 #pragma once
 
 #include <string>
@@ -24,7 +25,12 @@ RecommendationFiles WriteRecommendationFiles(const std::string& dir, const Tunin
                                              const slam::MapperParams& recommended,
                                              const optim::OptimizeResult& result);
 
-// The lines that tell how to load the files (README, report, the end of `optimize`).
-std::vector<std::string> HowToLoad(const std::string& dir);
+// The lines that tell how to load the files (README, report, the end of `optimize`), with the
+// launch file of the slam_toolbox mode tuned for (online_async_launch.py for slam_karto's).
+std::vector<std::string> HowToLoad(const std::string& dir, slam::NodeMode mode);
+
+// slam_toolbox's launch file for `mode`: online_async_launch.py, online_sync_launch.py or
+// offline_launch.py (online_async_launch.py when the mode is slam_karto's).
+const char* ToolboxLaunchFile(slam::NodeMode mode);
 
 }  // namespace slamtune::cli

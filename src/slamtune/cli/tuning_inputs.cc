@@ -23,9 +23,7 @@ void TuningInputOptions::AddTo(CLI::App& app) {
   app.add_option("--world", world, "built-in world to simulate when no LOG is given (see `simulate --list`)")
       ->capture_default_str();
   app.add_option("--world-seed", world_seed, "seed of the simulated world")->capture_default_str();
-  app.add_option("--preset", preset,
-                 "base parameters and behaviour: slam_karto (default), open_karto or slam_toolbox (its Karto: "
-                 "Ceres, robot-pose graph, response expansion); with --params, the defaults under the file");
+  AddPresetOption(app, preset);
   app.add_option("--params", params_file,
                  "your slam_toolbox (ROS 2) or slam_karto (ROS 1) parameter file: the base of every run and the "
                  "baseline; keys it does not set take that node's own defaults");
@@ -33,9 +31,22 @@ void TuningInputOptions::AddTo(CLI::App& app) {
   input.AddTo(app);
 }
 
+CLI::Option* AddPresetOption(CLI::App& app, std::string& preset) {
+  return app.add_option("--preset", preset,
+                        "the node and its defaults: slam_karto (default), open_karto, slam_toolbox (asynchronous "
+                        "node), slam_toolbox_sync or slam_toolbox_offline (synchronous node, which filters scans); "
+                        "with --params, only the node's mode: the file's keys go over that node's declared "
+                        "defaults");
+}
+
+void PrintParamsWarnings(const slam::BaseConfiguration& base) {
+  for (const std::string& w : base.file_report.warnings) std::fprintf(stderr, "slamtune: warning: %s\n", w.c_str());
+}
+
 nlohmann::json TuningInputOptions::ToJson() const {
   nlohmann::json j{{"log", log},       {"relations", relations}, {"world", world}, {"world_seed", world_seed},
-                   {"preset", preset}, {"params", params_file}, {"sets", sets},   {"input", input.ToJson()}};
+                   {"preset", preset}, {"params", params_file}, {"sets", sets},   {"input", input.ToJson()},
+                   {"base_rule", base_rule == slam::BaseRule::kNodeDefaults ? "node_defaults" : "preset_then_file"}};
   // A file's identity: its size and modification time, so a changed file is noticed on --resume.
   for (const char* key : {"log", "relations", "params"}) {
     const std::string path = j[key];
@@ -57,34 +68,23 @@ TuningInputOptions TuningInputOptions::FromJson(const nlohmann::json& j) {
   o.params_file = j.at("params");
   o.sets = j.at("sets").get<std::vector<std::string>>();
   o.input = LogInputOptions::FromJson(j.at("input"));
+  // Folders written before the rule applied --params over --preset's values.
+  o.base_rule = j.value("base_rule", std::string("preset_then_file")) == "node_defaults"
+                    ? slam::BaseRule::kNodeDefaults
+                    : slam::BaseRule::kPresetThenFile;
   return o;
-}
-
-BaseConfiguration LoadBaseConfiguration(const std::string& params_file, const std::string& preset,
-                                        const std::vector<std::string>& sets) {
-  BaseConfiguration base;
-  if (params_file.empty()) {
-    const std::string name = preset.empty() ? "slam_karto" : preset;
-    base.params = slam::MapperParams::Preset(name);
-    base.node = name == "slam_toolbox" ? slam::RosNode::kSlamToolbox : slam::RosNode::kSlamKarto;
-    base.label = name + "'s defaults";
-  } else {
-    base.file_text = ReadTextFile(params_file);
-    base.node = slam::NodeOfParamsFile(base.file_text, params_file);
-    base.params = preset.empty() ? slam::NodeDefaults(base.node) : slam::MapperParams::Preset(preset);
-    slam::ApplyParamsYaml(base.params, base.file_text, params_file);
-    base.label = "your configuration (" + std::filesystem::path(params_file).filename().string() + ")";
-  }
-  slam::ApplyOverrides(base.params, sets);
-  if (!sets.empty()) base.label += " with --set";
-  base.params.Validate();
-  return base;
 }
 
 namespace {
 
-void LoadBase(const TuningInputOptions& options, TuningInputs* in) {
-  BaseConfiguration base = LoadBaseConfiguration(options.params_file, options.preset, options.sets);
+void LoadBase(const TuningInputOptions& options, bool quiet, TuningInputs* in) {
+  slam::BaseConfiguration base =
+      slam::LoadBaseConfiguration(options.params_file, options.preset, options.sets, options.base_rule);
+  if (!quiet) {
+    PrintParamsWarnings(base);
+    std::fprintf(stderr, "base: %s, modelling %s (mode: %s)\n", base.label.c_str(),
+                 slam::LaunchOf(base.params.node_mode), base.mode_source.c_str());
+  }
   in->base = std::move(base.params);
   in->base_label = std::move(base.label);
   in->base_file_text = std::move(base.file_text);
@@ -100,7 +100,7 @@ void WarnPartialRelations(const std::string& relations_file, const metrics::Rela
 
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
   TuningInputs in;
-  LoadBase(options, &in);
+  LoadBase(options, quiet, &in);
 
   if (options.log.empty()) {
     sim::SimulationOptions sim_options;

@@ -24,6 +24,7 @@
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/slam/base_configuration.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/ros_node_files.h"
 
@@ -37,6 +38,9 @@ struct TuningInputOptions {
   std::string preset;
   std::string params_file;
   std::vector<std::string> sets;
+  // How --params and --preset combine (slam/base_configuration.h); folders written before the
+  // rule resume with the old one.
+  slam::BaseRule base_rule = slam::BaseRule::kNodeDefaults;
   LogInputOptions input;  // how the log is read (--lenient, --no-return, --beams, bag choices)
 
   void AddTo(CLI::App& app);
@@ -57,18 +61,12 @@ struct TuningInputs {
   std::vector<std::string> log_input;  // what was read and chosen (io::DescribeLogInput)
 };
 
-// The configuration runs start from: the user's parameter file (`params_file`) over the
-// defaults of the node it is written for (slam::NodeOfParamsFile; `preset` instead when given),
-// else `preset`'s own defaults (slam_karto when empty); then each `sets` NAME=VALUE. The label
-// names it for the report: "your configuration (FILE)" or "<preset>'s defaults".
-struct BaseConfiguration {
-  slam::MapperParams params;
-  std::string label;
-  std::string file_text;  // the user's file, "" without one
-  slam::RosNode node = slam::RosNode::kSlamKarto;  // the node the base is written for
-};
-BaseConfiguration LoadBaseConfiguration(const std::string& params_file, const std::string& preset,
-                                        const std::vector<std::string>& sets);
+// The --preset option of every command that starts from a base configuration
+// (slam/base_configuration.h), with one help text.
+CLI::Option* AddPresetOption(CLI::App& app, std::string& preset);
+// "slamtune: warning: ..." on stderr for each warning of the parameter file's reading (values the
+// node reads otherwise than written, keys whose effect is not modelled).
+void PrintParamsWarnings(const slam::BaseConfiguration& base);
 
 // Loads and validates everything; throws InputError naming the file and problem (relations
 // that match no scan of the log among them, metrics::RequireMatchingRelations).

@@ -16,6 +16,7 @@
 #include "slamtune/io/trajectory.h"
 #include "slamtune/optim/candidate_selection.h"
 #include "slamtune/optim/equivalent_region.h"
+#include "slamtune/slam/mapper_params.h"
 #include "slamtune/optim/evaluation_record.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/optimization_history.h"
@@ -81,6 +82,7 @@ struct OptimizeResult {
   std::string verdict;                // plain words: is the recommendation better than the base?
   VerdictKind verdict_kind = VerdictKind::kFailed;
   std::string base_label;             // the base configuration ("your configuration (FILE)", ...)
+  slam::NodeMode node_mode = slam::NodeMode::kSlamKarto;  // the node and mode every run models
   // Set by the command that writes the parameter files, for the report: "name: base -> tuned"
   // (empty when the recommendation is not better) and the commands that load the files.
   std::vector<std::string> changes;

@@ -102,9 +102,26 @@ nlohmann::json OptimizeSettings::ToJson() const {
 
 namespace {
 
+// Adds to `stored` every key of `current` it lacks, at any depth of objects.
+void AddMissingKeys(const nlohmann::json& current, nlohmann::json& stored) {
+  if (!current.is_object() || !stored.is_object()) return;
+  for (const auto& [key, value] : current.items()) {
+    if (!stored.contains(key)) {
+      stored[key] = value;
+    } else {
+      AddMissingKeys(value, stored[key]);
+    }
+  }
+}
+
 // Stored settings as today's ToJson writes them: folders written before objective sets
-// existed were optimised on the paper's objectives.
-nlohmann::json UpgradedSettings(nlohmann::json stored) {
+// existed were optimised on the paper's objectives; a parameter or input option that did not
+// exist when the folder was written had the value it has today (the engine's behaviour then;
+// `current` gives it).
+nlohmann::json UpgradedSettings(nlohmann::json stored, const nlohmann::json& current) {
+  if (stored.is_object() && stored.contains("engine") && current.contains("engine")) {
+    AddMissingKeys(current.at("engine"), stored["engine"]);
+  }
   if (stored.is_object() && !stored.contains("objectives")) {
     stored["objectives"] = ObjectiveSet::NameOf(ObjectiveSetKind::kPaper);
   }
@@ -134,7 +151,7 @@ nlohmann::json OpenRun(const OptimizeSettings& settings, EvaluationStore& store,
   const nlohmann::json settings_json = settings.ToJson();
   const auto stored_raw = store.Settings();
   const std::optional<nlohmann::json> stored =
-      stored_raw ? std::optional<nlohmann::json>(UpgradedSettings(*stored_raw)) : std::nullopt;
+      stored_raw ? std::optional<nlohmann::json>(UpgradedSettings(*stored_raw, settings_json)) : std::nullopt;
   if (start == OptimizationStart::kResume) {
     if (!stored) throw InputError(store.path(), 0, "--resume: this folder holds no slamtune optimisation");
     if (*stored != settings_json) {
@@ -383,6 +400,7 @@ void ChooseAnswer(const OptimizeSettings& settings, const std::vector<Evaluation
   result.verdict = verdict.text;
   result.verdict_kind = verdict.kind;
   result.base_label = settings.base_label;
+  result.node_mode = settings.node_mode;
 }
 
 // The candidate with the lowest translational error, when there is ground truth.

@@ -21,6 +21,7 @@
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/optim/search_space.h"
 #include "slamtune/optim/settling.h"
+#include "slamtune/slam/mapper_params.h"
 
 namespace slamtune::optim {
 
@@ -32,6 +33,8 @@ struct OptimizeSettings {
   ObjectiveSet objectives;  // what NSGA-III minimises and the candidates are ranked by
   Assignment default_assignment;  // the base configuration's values of the varied (and fixed) parameters
   std::string base_label = "slam_karto's defaults";  // what the base is: "your configuration (FILE)", ...
+  // The node and mode the base is for (its node_mode, also in `engine`); for the report.
+  slam::NodeMode node_mode = slam::NodeMode::kSlamKarto;
   // Das-Dennis divisions: M = 3, D = 7 -> 36 reference points, one individual each. On the
   // shared logs the paper's 66 individuals (D = 10) find answers within 0.5 mm of error of these
   // and take up to twice as long (docs/benchmarks.md); --population 66 --divisions 10 asks for them.

@@ -68,6 +68,7 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Run");
   std::vector<std::pair<std::string, std::string>> items = {
       {"log", r.log_path},
+      {"node modelled", slam::LaunchOf(r.node_mode)},
   };
   for (const auto& row : io::InputRows(r.log_input)) items.push_back(row);
   items.insert(items.end(), {

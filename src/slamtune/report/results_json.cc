@@ -75,6 +75,7 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   j["verdict"] = result.verdict;
   j["verdict_kind"] = optim::VerdictKindName(result.verdict_kind);
   j["base"] = result.base_label;
+  j["node_mode"] = slam::NameOf(result.node_mode);
   j["changes"] = result.changes;
   j["how_to_load"] = result.how_to_load;
   j["recommended_share"] = result.recommended_share;

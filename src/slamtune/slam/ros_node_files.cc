@@ -60,7 +60,7 @@ const std::vector<NodeParam>& ToolboxParams() {
       {"resolution", kDouble, "resolution"},
       {"min_laser_range", kDouble, "min_laser_range"},
       {"max_laser_range", kDouble, "max_laser_range"},
-      {"minimum_time_interval", kDouble, ""},
+      {"minimum_time_interval", kDouble, "sync_minimum_time_interval"},
       {"transform_timeout", kDouble, ""},
       {"tf_buffer_duration", kDouble, ""},
       {"stack_size_to_use", kInt, ""},
@@ -77,10 +77,10 @@ const std::vector<NodeParam>& ToolboxParams() {
       {"min_pass_through", kInt, "min_pass_through"},
       {"occupancy_threshold", kDouble, "occupancy_threshold"},
       {"solver_plugin", kString, "solver"},
-      {"ceres_linear_solver", kString, ""},
-      {"ceres_preconditioner", kString, ""},
-      {"ceres_trust_strategy", kString, ""},
-      {"ceres_dogleg_type", kString, ""},
+      {"ceres_linear_solver", kString, "ceres_linear_solver"},
+      {"ceres_preconditioner", kString, "ceres_preconditioner"},
+      {"ceres_trust_strategy", kString, "ceres_trust_strategy"},
+      {"ceres_dogleg_type", kString, "ceres_dogleg_type"},
       {"ceres_loss_function", kString, "ceres_loss_function"},
       MAPPER_PARAMS};
   return params;
@@ -134,6 +134,14 @@ std::string NodeValue(const NodeParam& param, const MapperParams& p) {
   return Typed(param.type, EngineValue(p, param.engine));
 }
 
+// Whether a file made or completed by slamtune writes `param`: slam_toolbox's minimum_time_interval
+// only for the synchronous node, the one that reads it (the asynchronous node never does, and
+// a value written there would only mislead).
+bool Writes(const NodeParam& param, const MapperParams& p) {
+  return param.engine[0] != '\0' &&
+         (std::string_view(param.name) != "minimum_time_interval" || IsSynchronous(p.node_mode));
+}
+
 bool Differs(const NodeParam& param, const MapperParams& a, const MapperParams& b) {
   return param.engine[0] != '\0' && std::string_view(param.name) != "solver_plugin" &&
          EngineValue(a, param.engine) != EngineValue(b, param.engine);
@@ -171,7 +179,7 @@ std::string ScratchFile(RosNode node, const MapperParams& p, const std::map<std:
     const std::string name = param.name;
     auto it = ros_level.find(name);
     if (it != ros_level.end() && param.engine[0] == '\0') entries.emplace_back(name, it->second);
-    if (param.engine[0] == '\0') continue;
+    if (!Writes(param, p)) continue;
     entries.emplace_back(name, NodeValue(param, p));
   }
   if (node == RosNode::kSlamToolbox) entries.insert(entries.begin(), {"mode", "mapping"});
@@ -183,7 +191,8 @@ std::string ScratchFile(RosNode node, const MapperParams& p, const std::map<std:
 std::string ReEmitted(RosNode node, YAML::Node root, const ParamsSection& section, const MapperParams& p) {
   YAML::Node map = section.map;
   for (const NodeParam& param : NodeParams(node)) {
-    if (param.engine[0] == '\0') continue;
+    const bool present = static_cast<const YAML::Node&>(map)[param.name].IsDefined();
+    if (param.engine[0] == '\0' || (!Writes(param, p) && !present)) continue;
     map[param.name] = NodeValue(param, p);
   }
   if (node == RosNode::kSlamToolbox && section.node_key.empty()) {
@@ -278,7 +287,7 @@ std::string FromBaseFile(RosNode node, const std::string& text, const MapperPara
   for (const LineEdit& e : edits) lines[e.line].replace(e.begin, e.end - e.begin, e.text);
   std::vector<std::string> added;
   for (const NodeParam& param : NodeParams(node)) {
-    if (param.engine[0] == '\0' || std::find(present.begin(), present.end(), param.name) != present.end()) continue;
+    if (!Writes(param, p) || std::find(present.begin(), present.end(), param.name) != present.end()) continue;
     added.push_back(fmt::format("{}{}: {}", std::string(indent, ' '), param.name, NodeValue(param, p)));
   }
   lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(last_line) + 1, added.begin(), added.end());
@@ -330,6 +339,8 @@ MapperParams NodeDefaults(RosNode node) {
   MapperParams p = MapperParams::Preset("slam_toolbox");
   p.minimum_distance_penalty = 0.05;  // slam_mapper.cpp's declared default (its YAML writes 0.5)
   p.max_laser_range = 25.0;           // laser_utils.cpp's declared default (its YAML writes 20.0)
+  p.ceres_preconditioner = CeresPreconditioner::kJacobi;  // ceres_solver.cpp's (its YAML: SCHUR_JACOBI)
+  p.sync_minimum_time_interval = 0.5;  // transform_timeout's declared 0.5 (slam_toolbox_common.cpp)
   return p;
 }
 

@@ -6,8 +6,8 @@
 //     for it (the literal of its declare_parameter default: ROS 2 refuses an override of
 //     another type, so an int written 19.0 or a double written 3 stops the node);
 //     `solver_plugin: solver_plugins::CeresSolver`, the plugin it registers; no
-//     `minimum_time_interval` unless the base file sets one (it is a node-level scan filter,
-//     not Karto's: 3600 would keep one scan).
+//     `minimum_time_interval` unless the base file sets one or the node is the synchronous one
+//     (it is that node's scan filter, not Karto's: 3600 would keep one scan).
 //   slam_karto (ROS 1, `rosparam load F /slam_karto` or <rosparam file=F/> in the node): a
 //     flat map with the names slam_karto.cpp reads (it has no minimum_time_interval, range
 //     threshold or map thresholds). The three variance values are written as the node passes

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# End-to-end test that a parameter file `slamtune optimize` writes runs, with `slamtune run
+# --params FILE` (and no other option), exactly the candidate optimize recommended: the same nodes,
+# loop closures and error against the truth as results.json records. For a slam_toolbox base in
+# the synchronous node's mode (best.yaml, whose first comment names the mode) and for a
+# slam_karto base (best_slam_karto.yaml).
+# Usage: reproduce_cli_test.sh SLAMTUNE_BINARY. Exit 0 pass, 1 fail, 77 skip.
+set -u
+bin=${1:?usage: reproduce_cli_test.sh SLAMTUNE_BINARY}
+[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
+command -v python3 >/dev/null || { echo "SKIP: python3 is needed to read results.json" >&2; exit 77; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_reproduce_cli.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+# On the hall world (drift doubles walls) both bases are improved with this small budget.
+"$bin" simulate --world hall --seed 2 --out "$work/sim" >/dev/null 2>&1 || { echo "FAIL: simulate failed" >&2; exit 1; }
+log="$work/sim/hall.clf"
+rel="$work/sim/hall.relations"
+
+# The candidate the parameter files hold (the recommendation when better, else the base
+# configuration, "default") and run.json, as "nodes loops error" lines.
+written() {
+  python3 - "$1" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+c = r["recommended" if r["verdict_kind"] == "better" else "default"]
+print(c["nodes"], c["loop_closures"], "%.9g" % c["gt_error"]["trans_mean_m"])
+PY
+}
+ran() {
+  python3 - "$1" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+print(r["nodes"], r["loop_closures"], "%.9g" % r["gt_error"]["trans_mean_m"])
+PY
+}
+
+for case in slam_toolbox_sync:best.yaml slam_karto:best_slam_karto.yaml; do
+  IFS=: read -r preset file <<<"$case"
+  out="$work/opt_$preset"
+  "$bin" optimize "$log" --relations "$rel" --preset "$preset" --out "$out" --population 8 --divisions 3 \
+    --generations 2 --seed 5 --jobs 2 --quiet >"$out.txt" 2>&1 || { fail "$preset: optimize failed: $(tail -3 "$out.txt")"; continue; }
+  grep -q "\"node_mode\": \"$preset\"" "$out/results.json" ||
+    fail "$preset: results.json does not name the node mode"
+  grep -q '"verdict_kind": "better"' "$out/results.json" || fail "$preset: no better recommendation to reproduce"
+  "$bin" run "$log" --relations "$rel" --params "$out/$file" --out "$work/run_$preset" --quiet >"$work/run_$preset.txt" 2>&1 ||
+    { fail "$preset: run --params $file failed: $(cat "$work/run_$preset.txt")"; continue; }
+  expected=$(written "$out/results.json")
+  got=$(ran "$work/run_$preset/run.json")
+  [[ "$got" == "$expected" ]] || fail "$preset: run --params $file gives '$got', optimize recorded '$expected'"
+done
+# The mode comes from best.yaml's first comment; --preset overrides it.
+grep -q '"node_mode": "slam_toolbox_sync"' "$work/run_slam_toolbox_sync/run.json" ||
+  fail "run --params best.yaml did not take the mode best.yaml was tuned for"
+
+if ((failures > 0)); then
+  echo "$failures failure(s)" >&2
+  exit 1
+fi
+echo "reproduce_cli_test: all passed"
