@@ -283,7 +283,10 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
   plan.context =
       probed && settings.space.fixed.empty() ? probed : MakeEvaluationContext(inputs, settings.space.fixed, args.run);
   optim::DrawWall(*plan.context, optim::WallDrawingFor(settings.objectives));
+  // Runs that differ in their front end may break where others hold: stop them there.
+  plan.context->stop_broken_runs = settings.space.VariesFrontEnd();
   DescribeBase(inputs, args.inputs, settings);
+  settings.engine["stop_broken_runs"] = plan.context->stop_broken_runs;
   return plan;
 }
 
@@ -377,7 +380,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   const optim::OptimizeSettings& settings = plan.settings;
   folder.EnsureLocked();
   if (!folder.resume()) plan.settings.invocation = InvocationJson(args);
-  process.SetupWorkers(args.inputs, settings.space.fixed, args.run, optim::WallDrawingFor(settings.objectives));
+  process.SetupWorkers(args.inputs, settings.space.fixed, args.run, optim::WallDrawingFor(settings.objectives),
+                       plan.context->stop_broken_runs);
 
   optim::EvaluationStore store(folder.db_path());
   Progress progress(args.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);

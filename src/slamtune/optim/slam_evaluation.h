@@ -38,6 +38,12 @@ struct SlamEvaluationContext {
   // The fixed scans every run's path draws for the drawn wall (metrics/trajectory_map.h,
   // objective n_w); null: EvaluationRecord::drawn_wall_cells stays 0 (the map is not drawn).
   std::shared_ptr<const metrics::TrajectoryMap> trajectory_map;
+  // Stop a run as soon as its own sequential matches show a break (slam::BreakWatch) and record
+  // it as failed, with where and why, instead of mapping the rest of the log: a broken map is
+  // never the recommendation. The base configuration is always mapped to the end (every answer is
+  // judged against it). Only meaningful when runs differ in their front end
+  // (SearchSpace::VariesFrontEnd); it changes which runs are scored, so it is a setting.
+  bool stop_broken_runs = false;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;
