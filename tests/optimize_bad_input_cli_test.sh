@@ -47,6 +47,17 @@ expect_line "slamtune: error: $s:4: mapper parameter loop_match_minimum_chain_si
 expect_line "slamtune: error: unknown mapper parameter 'loop_search_maximum_distanse' (did you mean 'loop_search_maximum_distance'?)" \
   "$bin" optimize --set loop_search_maximum_distanse=3
 
+# A folder given as the search-space file is refused naming it.
+mkdir -p "$work/space_dir"
+expect_line "slamtune: error: $work/space_dir: cannot open: is a directory" "$bin" optimize --space "$work/space_dir"
+# --set values are validated together after the last; a conflict with a value the user did not
+# give says that value is the base's.
+expect_line "slamtune: error: mapper parameters correlation_search_space_resolution = 1 and correlation_search_space_smear_deviation = 0.03 are inconsistent: the smear deviation must be in [0.5, 10] x the resolution = [0.5, 10] (correlation_search_space_smear_deviation is not given with --set: the base configuration's value; set it too, or choose values that fit it)" \
+  "$bin" optimize --set correlation_search_space_dimension=2 --set correlation_search_space_resolution=1.0
+"$bin" run --out "$work/run_set" --quiet --set correlation_search_space_dimension=2 \
+  --set correlation_search_space_resolution=1.0 --set correlation_search_space_smear_deviation=1.0 >/dev/null 2>"$work/run_set.err" ||
+  fail "run refused a consistent --set of the matcher: $(cat "$work/run_set.err")"
+
 # A consistent set is taken whatever the order, from --set, --params and a space's fix: alike.
 matcher=(correlation_search_space_smear_deviation=0.2 correlation_search_space_resolution=0.1
          correlation_search_space_dimension=0.6)

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/io/yaml_text.h"
 
 namespace slamtune::optim {
@@ -117,11 +118,10 @@ SearchSpace SearchSpace::Loop(const slam::MapperParams& base) {
 }
 
 SearchSpace SearchSpace::FromYaml(const std::string& path) {
+  const std::string text = ReadTextFile(path);  // a folder or unreadable path: InputError naming it
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw InputError(path, 0, "cannot open search-space file");
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, fmt::format("not valid YAML: {}", e.msg));
   }

@@ -145,6 +145,17 @@ fix:
   EXPECT_DOUBLE_EQ(s.fixed.at("loop_match_maximum_variance_coarse"), 0.4);
 }
 
+// A folder or a missing file given as --space is refused naming it, as every text input is
+// (common/text_file.h), not with the stream library's own words.
+TEST(SearchSpace, AFolderOrAMissingFileIsRefusedNamingIt) {
+  const auto folder = std::filesystem::temp_directory_path() / "slamtune_space_folder";
+  std::filesystem::create_directories(folder);
+  EXPECT_EQ(ErrorMessageOf([&] { SearchSpace::FromYaml(folder.string()); }),
+            folder.string() + ": cannot open: is a directory");
+  EXPECT_EQ(ErrorMessageOf([&] { SearchSpace::FromYaml((folder / "none.yaml").string()); }),
+            (folder / "none.yaml").string() + ": cannot open: no such file");
+}
+
 TEST(SearchSpace, KeysAndTypesThatAreNotTextAreInputErrors) {
   EXPECT_EQ(ErrorMessageOf([] { SearchSpace::FromYaml(WriteTemp("err", "[vary]: 1\n")); }),
             WriteTemp("err", "[vary]: 1\n") + ":1: a top-level key must be plain text, not a YAML sequence");

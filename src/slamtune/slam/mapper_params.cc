@@ -6,6 +6,8 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <set>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
@@ -257,22 +259,50 @@ void CheckRow(const MapperParams& params, const Row& row) {
   if (!InBounds(v, row.bounds)) OutOfRange(row, FormatValue(value));
 }
 
+// A rule between parameters that a set of values breaks: the parameters it involves and the
+// message Validate() gives.
+struct Conflict {
+  std::vector<std::string> names;
+  std::string message;
+};
+
 // §4.1 [DECIDE]: D/rho must be an even integer (n = D/rho + 1 odd) and 0.5 rho <= sigma <= 10 rho.
-void CheckMatcher(const char* prefix, double dimension, double resolution, double smear) {
+std::optional<Conflict> MatcherConflict(const std::string& prefix, double dimension, double resolution,
+                                        double smear) {
   const double cells = dimension / resolution;
   const double rounded = KartoRound(cells);
   if (std::fabs(cells - rounded) > 1e-6 || static_cast<long long>(rounded) % 2 != 0) {
-    throw InputError(fmt::format(
-        "mapper parameters {0}_dimension = {1} and {0}_resolution = {2} are inconsistent: "
-        "dimension / resolution = {3} must be an even integer",
-        prefix, dimension, resolution, cells));
+    return Conflict{{prefix + "_dimension", prefix + "_resolution"},
+                    fmt::format("mapper parameters {0}_dimension = {1} and {0}_resolution = {2} are inconsistent: "
+                                "dimension / resolution = {3} must be an even integer",
+                                prefix, dimension, resolution, cells)};
   }
   if (smear < 0.5 * resolution - 1e-12 || smear > 10.0 * resolution + 1e-12) {
-    throw InputError(fmt::format(
-        "mapper parameter {0}_smear_deviation = {1} is out of range: must be in [0.5, 10] x {0}_resolution = "
-        "[{2}, {3}]",
-        prefix, smear, 0.5 * resolution, 10.0 * resolution));
+    return Conflict{{prefix + "_resolution", prefix + "_smear_deviation"},
+                    fmt::format("mapper parameters {0}_resolution = {1} and {0}_smear_deviation = {2} are "
+                                "inconsistent: the smear deviation must be in [0.5, 10] x the resolution = [{3}, {4}]",
+                                prefix, resolution, smear, 0.5 * resolution, 10.0 * resolution)};
   }
+  return std::nullopt;
+}
+
+// The first rule between parameters that `p` breaks, in the order Validate() checks them.
+std::optional<Conflict> FirstConflict(const MapperParams& p) {
+  if (p.solver == SolverKind::kCeres && p.ceres_linear_solver == CeresLinearSolver::kCgnr &&
+      p.ceres_preconditioner == CeresPreconditioner::kSchurJacobi) {
+    // Ceres 2.1's CGNR solver has no SCHUR_JACOBI preconditioner and aborts the process on it
+    // (cgnr_solver.cc), as slam_toolbox's node does at its first solve.
+    return Conflict{{"ceres_linear_solver", "ceres_preconditioner"},
+                    "mapper parameters ceres_linear_solver = CGNR and ceres_preconditioner = SCHUR_JACOBI are "
+                    "inconsistent: Ceres aborts on them (slam_toolbox's node crashes at its first loop closure); use "
+                    "JACOBI or IDENTITY with CGNR"};
+  }
+  if (auto c = MatcherConflict("correlation_search_space", p.correlation_search_space_dimension,
+                               p.correlation_search_space_resolution, p.correlation_search_space_smear_deviation)) {
+    return c;
+  }
+  return MatcherConflict("loop_search_space", p.loop_search_space_dimension, p.loop_search_space_resolution,
+                         p.loop_search_space_smear_deviation);
 }
 
 bool ParseBool(std::string_view text, bool* out) {
@@ -411,18 +441,7 @@ void MapperParams::Validate(const UnknownChoices& unknown_choices) const {
     }
     CheckRow(*this, row);
   }
-  if (solver == SolverKind::kCeres && ceres_linear_solver == CeresLinearSolver::kCgnr &&
-      ceres_preconditioner == CeresPreconditioner::kSchurJacobi) {
-    // Ceres 2.1's CGNR solver has no SCHUR_JACOBI preconditioner and aborts the process on it
-    // (cgnr_solver.cc), as slam_toolbox's node does at its first solve.
-    throw InputError(
-        "mapper parameters ceres_linear_solver = CGNR and ceres_preconditioner = SCHUR_JACOBI are inconsistent: Ceres "
-        "aborts on them (slam_toolbox's node crashes at its first loop closure); use JACOBI or IDENTITY with CGNR");
-  }
-  CheckMatcher("correlation_search_space", correlation_search_space_dimension, correlation_search_space_resolution,
-               correlation_search_space_smear_deviation);
-  CheckMatcher("loop_search_space", loop_search_space_dimension, loop_search_space_resolution,
-               loop_search_space_smear_deviation);
+  if (const auto conflict = FirstConflict(*this)) throw InputError(conflict->message);
 }
 
 MapperParams MapperParams::Preset(std::string_view name) {
@@ -601,8 +620,27 @@ void ApplyOverride(MapperParams& params, std::string_view assignment) {
 void ApplyOverrides(MapperParams& params, const std::vector<std::string>& assignments) {
   MapperParams copy = params;
   UnknownChoices unknown_choices;
-  for (const std::string& a : assignments) AssignOverride(copy, a, &unknown_choices);
-  copy.Validate(unknown_choices);
+  std::set<std::string, std::less<>> given;
+  for (const std::string& a : assignments) {
+    AssignOverride(copy, a, &unknown_choices);
+    given.insert(RequireRow(Trim(std::string_view(a).substr(0, a.find('=')))).info.name);
+  }
+  try {
+    copy.Validate(unknown_choices);
+  } catch (const InputError& e) {
+    // A rule between parameters broken by an override and a value it left as it was: say which
+    // value is the base's, so that the message does not read as if the user had given it.
+    const std::optional<Conflict> conflict = FirstConflict(copy);
+    if (!conflict || e.message() != conflict->message) throw;
+    std::string kept;
+    for (const std::string& name : conflict->names) {
+      if (given.count(name) == 0) kept += (kept.empty() ? "" : " and ") + name;
+    }
+    if (kept.empty()) throw;
+    throw InputError(fmt::format("{} ({} {} not given with --set: the base configuration's value; set it too, or "
+                                 "choose values that fit it)",
+                                 e.message(), kept, kept.find(" and ") == std::string::npos ? "is" : "are"));
+  }
   params = copy;
 }
 

@@ -197,6 +197,30 @@ TEST(MapperParams, ConsistentSetsAreValidatedTogether) {
   EXPECT_EQ(r, MapperParams{});
 }
 
+// An override that breaks a rule with a value the user did not give says which value is the
+// base's; a consistent set names nothing; overrides alone in conflict name only themselves.
+TEST(MapperParams, AnOverrideInConflictWithABaseValueSaysWhichIsTheBases) {
+  MapperParams p;
+  ApplyOverrides(p, {"correlation_search_space_dimension=2", "correlation_search_space_resolution=1.0",
+                     "correlation_search_space_smear_deviation=1.0"});
+  EXPECT_EQ(p.correlation_search_space_smear_deviation, 1.0);
+  MapperParams q;
+  EXPECT_EQ(ErrorMessageOf([&] {
+              ApplyOverrides(q, {"correlation_search_space_dimension=2", "correlation_search_space_resolution=1.0"});
+            }),
+            "mapper parameters correlation_search_space_resolution = 1 and correlation_search_space_smear_deviation "
+            "= 0.03 are inconsistent: the smear deviation must be in [0.5, 10] x the resolution = [0.5, 10] "
+            "(correlation_search_space_smear_deviation is not given with --set: the base configuration's value; set "
+            "it too, or choose values that fit it)");
+  EXPECT_EQ(ErrorMessageOf([&] {
+              ApplyOverrides(q, {"correlation_search_space_dimension=2.5", "correlation_search_space_resolution=1.0",
+                                 "correlation_search_space_smear_deviation=1.0"});
+            }),
+            "mapper parameters correlation_search_space_dimension = 2.5 and correlation_search_space_resolution = 1 "
+            "are inconsistent: dimension / resolution = 2.5 must be an even integer");
+  EXPECT_EQ(q, MapperParams{});
+}
+
 TEST(MapperParams, UnknownNamesGetTheClosestKnownOne) {
   MapperParams p;
   EXPECT_THAT([&] { ApplyOverride(p, "loop_search_maximum_distanse=3"); },
