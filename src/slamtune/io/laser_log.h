@@ -139,6 +139,8 @@ struct RecordingInfo {
   std::vector<std::string> tf_edges;           // "parent -> child (static)" / "(N samples)"
   std::size_t tf_parent_conflicts = 0;         // transforms giving a frame a second parent, ignored
   std::size_t tf_bad_rotations = 0;            // transforms refused for a bad quaternion
+  std::size_t tf_refused_frames = 0;           // refused: a frame its own parent, or an empty frame id
+  std::vector<std::string> tf_loops;           // loops of the tree not on the frames used, "a -> b -> a"
 };
 
 struct LaserLog {

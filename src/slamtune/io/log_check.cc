@@ -314,9 +314,16 @@ void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
             fmt::format("the recording ends in a corrupt or truncated part: {} bytes not read ({})",
                         r.dropped_tail_bytes, r.dropped_tail_reason));
   }
-  if (r.tf_parent_conflicts + r.tf_bad_rotations > 0) {
-    report->facts.push_back(fmt::format("tf: {} transforms ignored (second parent), {} refused (bad rotation)",
-                                        r.tf_parent_conflicts, r.tf_bad_rotations));
+  for (const std::string& loop : r.tf_loops) {
+    Problem(report, ProblemKind::kTfLoop,
+            fmt::format("the tf tree has a loop, {} (not on the frames used here): tf2 refuses every lookup through "
+                        "it",
+                        loop));
+  }
+  if (r.tf_parent_conflicts + r.tf_bad_rotations + r.tf_refused_frames > 0) {
+    report->facts.push_back(fmt::format("tf: {} transforms ignored (second parent), {} refused (bad rotation or "
+                                        "translation), {} refused (a frame its own parent, or no frame id)",
+                                        r.tf_parent_conflicts, r.tf_bad_rotations, r.tf_refused_frames));
   }
 }
 
@@ -420,6 +427,7 @@ const char* ProblemKindName(ProblemKind kind) {
     case ProblemKind::kTfMissing: return "tf_missing";
     case ProblemKind::kTfLate: return "tf_late";
     case ProblemKind::kNoLaserOffset: return "no_laser_offset";
+    case ProblemKind::kTfLoop: return "tf_loop";
     case ProblemKind::kSeveralScanTopics: return "several_scan_topics";
     case ProblemKind::kMalformedMessages: return "malformed_messages";
     case ProblemKind::kTruncatedRecording: return "truncated_recording";
@@ -442,8 +450,16 @@ CheckReport CheckRecording(const std::string& path, const LogReadOptions& read, 
   attempt.beams = BeamPolicy::kNode;
   attempt.Validate();
   if (DetectRecordingKind(path) == RecordingKind::kCarmenLog) return CheckLog(ReadLaserLog(path, attempt), options);
+  return CheckRecordingContents(ReadRecordingContents(path, read.lenient), attempt, options);
+}
 
-  const RecordingContents contents = ReadRecordingContents(path, read.lenient);
+CheckReport CheckRecordingContents(const RecordingContents& contents, const LogReadOptions& read,
+                                   const CheckOptions& options) {
+  options.Validate();
+  const std::string& path = contents.path;
+  LogReadOptions attempt = read;
+  attempt.beams = BeamPolicy::kNode;
+  attempt.Validate();
   std::vector<CheckProblem> early;
   if (attempt.recording.scan_topic.empty() && contents.scans.size() > 1) {
     std::string names, busiest;
@@ -461,6 +477,17 @@ CheckReport CheckRecording(const std::string& path, const LogReadOptions& read, 
   LaserLog log;
   try {
     log = RecordingToLog(contents, attempt);
+  } catch (const TfLoopError& e) {
+    // Nothing can be placed: the report says what the recording holds, and the loop.
+    CheckReport report;
+    report.path = path;
+    for (const RecordedTopic& t : contents.container.topics) {
+      report.facts.push_back(fmt::format("topic: {} ({}), {} messages", t.name, t.type, t.messages));
+    }
+    for (const std::string& e : contents.tf.Describe()) report.facts.push_back("tf: " + e);
+    report.problems = early;
+    report.problems.push_back({ProblemKind::kTfLoop, e.message() + "; nothing else can be checked", 1, {}, {}});
+    return report;
   } catch (const InputError& e) {
     const bool no_offset = std::string(e.what()).find("no laser offset") != std::string::npos;
     if (!no_offset || attempt.recording.laser_offset) throw;

@@ -18,7 +18,9 @@
 //     or the other way round (a logger that integrated |tv|: the map breaks and no SLAM
 //     parameter is to blame);
 //   tf: scans without odometry at their stamp (missing), odometry received more than late_s
-//     after the scan it places (late), no laser offset in the tf tree (/tf_static missing);
+//     after the scan it places (late), no laser offset in the tf tree (/tf_static missing), a
+//     loop in the tree (on the frames used, nothing further can be checked: the report ends
+//     there, as every other command refuses such a recording);
 //   the recording: several LaserScan topics, malformed messages, a truncated tail.
 // Facts (no problem): topics with types and rates, the choices made, the laser offset found.
 #pragma once
@@ -28,6 +30,7 @@
 #include <vector>
 
 #include "slamtune/io/laser_log.h"
+#include "slamtune/io/recording_contents.h"
 
 namespace slamtune::io {
 
@@ -61,6 +64,7 @@ enum class ProblemKind {
   kTfMissing,
   kTfLate,
   kNoLaserOffset,
+  kTfLoop,
   kSeveralScanTopics,
   kMalformedMessages,
   kTruncatedRecording,
@@ -87,6 +91,10 @@ struct CheckReport {
 // Reads `path` with `read` (beams kept as recorded) and checks it. InputError only for what
 // makes the file unreadable (format errors); choices that cannot be made are problems.
 CheckReport CheckRecording(const std::string& path, const LogReadOptions& read, const CheckOptions& options = {});
+
+// CheckRecording on a ROS recording's contents already read.
+CheckReport CheckRecordingContents(const RecordingContents& contents, const LogReadOptions& read,
+                                   const CheckOptions& options = {});
 
 // The checks on a log already read (beams as recorded); no raw-message checks.
 CheckReport CheckLog(const LaserLog& log, const CheckOptions& options = {});

@@ -138,6 +138,55 @@ TEST(LogCheck, RecordingFaultsAreFoundInTheFixtureBags) {
   EXPECT_TRUE(CheckRecording(kFixtures + "fault_inf_nan.mcap", {}, options).Has(ProblemKind::kRangeMaxTooLow));
 }
 
+// A robot driving along x at 0.5 m/s, tf at 20 Hz, a laser at the base and scans at 5 Hz.
+RecordingContents DriveContents() {
+  constexpr std::int64_t kMs = 1000000;
+  RecordingContents c;
+  c.path = "drive.bag";
+  c.container.topics = {{"/scan", "sensor_msgs/LaserScan", MessageSerialization::kRos1, false, 0},
+                        {"/tf", "tf2_msgs/TFMessage", MessageSerialization::kRos1, false, 0}};
+  RigidTransform3 pose;
+  for (int k = 0; k <= 200; ++k) {
+    pose.translation = {0.025 * k, 0.0, 0.0};
+    c.tf.Add("odom", "base_link", k * 50 * kMs, pose, false);
+  }
+  c.tf.Add("base_link", "laser", 0, RigidTransform3{}, true);
+  for (int k = 0; k < 45; ++k) {
+    LaserScanMessage m;
+    m.header.stamp_ns = 100 * kMs + k * 200 * kMs;
+    m.header.frame_id = "laser";
+    m.angle_min = -1.5f;
+    m.angle_increment = 0.5f;
+    m.angle_max = 1.5f;
+    m.range_max = 10.0f;
+    m.ranges = {3.0f, 4.0f, 5.0f, 6.0f, 5.0f, 4.0f, 3.0f};
+    c.scans["/scan"].push_back({m, m.header.stamp_ns, "byte 0"});
+  }
+  return c;
+}
+
+// A loop on the frames used ends the check there with the loop as its problem; a loop elsewhere
+// is one problem among the rest.
+TEST(LogCheck, ATfLoopIsAProblemNamingItsFrames) {
+  RecordingContents loop = DriveContents();
+  loop.tf.Add("laser", "odom", 0, RigidTransform3{}, true);
+  const CheckReport report = CheckRecordingContents(loop, {});
+  EXPECT_EQ(Kinds(report), std::vector<std::string>{"tf_loop"});
+  EXPECT_THAT(report.problems[0].what, testing::HasSubstr("the tf tree has a loop, odom -> base_link -> laser -> odom: "
+                                                         "odom is its own ancestor"));
+  EXPECT_THAT(report.facts, testing::Contains("topic: /scan (sensor_msgs/LaserScan), 0 messages"));
+  EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("verdict: 1 problem: tf_loop"));
+
+  EXPECT_TRUE(CheckRecordingContents(DriveContents(), {}).ok()) << FormatCheckReport(CheckRecordingContents(
+      DriveContents(), {}));
+  RecordingContents elsewhere = DriveContents();
+  elsewhere.tf.Add("camera", "arm", 0, RigidTransform3{}, true);
+  elsewhere.tf.Add("arm", "camera", 0, RigidTransform3{}, true);
+  const CheckReport beside = CheckRecordingContents(elsewhere, {});
+  EXPECT_EQ(Kinds(beside), std::vector<std::string>{"tf_loop"});
+  EXPECT_THAT(beside.problems[0].what, testing::HasSubstr("arm -> camera -> arm (not on the frames used here)"));
+}
+
 TEST(LogCheck, OptionsAreValidated) {
   CheckOptions bad;
   bad.gap_factor = 0.5;

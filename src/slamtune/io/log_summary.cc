@@ -159,6 +159,11 @@ std::vector<std::string> DescribeLogInput(const LaserLog& log) {
     if (r.messages_undecodable > 0) {
       out.push_back(fmt::format("not used: {} undecodable tf / odometry messages, --lenient", r.messages_undecodable));
     }
+    for (const std::string& loop : r.tf_loops) {
+      out.push_back(fmt::format("note: the tf tree has a loop, {}, away from the frames used (tf2 refuses every "
+                                "lookup through it)",
+                                loop));
+    }
     if (r.scans_other_frame > 0) {
       out.push_back(fmt::format("note: {} scans name another frame than {} (read as {})", r.scans_other_frame,
                                 r.laser_frame, r.laser_frame));

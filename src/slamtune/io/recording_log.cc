@@ -88,6 +88,32 @@ void UseOdometryTopic(const RecordingContents& contents, const std::string& topi
   info->odometry_rule = rule;
 }
 
+std::string LoopText(const std::vector<std::string>& loop) {
+  std::string out;
+  for (const std::string& frame : loop) out += (out.empty() ? "" : " -> ") + frame;
+  return out;
+}
+
+// tf2 refuses every lookup through a loop of the tree: so does the reader, for the frames whose
+// transforms it would compose (the odometry's or the laser offset's), naming the loop.
+void RequireNoLoop(const RecordingContents& contents, std::initializer_list<const std::string*> frames,
+                   const std::string& what) {
+  for (const std::string* frame : frames) {
+    const std::vector<std::string> loop = contents.tf.LoopAbove(*frame);
+    if (loop.empty()) continue;
+    std::string edges;
+    for (std::size_t k = 1; k < loop.size(); ++k) {
+      edges += fmt::format("{}{} -> {} ({})", edges.empty() ? "" : ", ", loop[k - 1], loop[k],
+                           contents.tf.IsStatic(loop[k]) ? "static" : "dynamic");
+    }
+    throw TfLoopError(contents.path, 0,
+                      fmt::format("the tf tree has a loop, {}: {} is its own ancestor ({}), so {} cannot be found "
+                                  "(tf2 refuses every lookup through a loop); one of these transforms was published "
+                                  "the wrong way round",
+                                  LoopText(loop), loop.front(), edges, what));
+  }
+}
+
 bool Connected(const TfBuffer& tf, const std::string& ancestor, const std::string& frame) {
   const std::vector<std::string> path = tf.PathToRoot(frame);
   return std::find(path.begin(), path.end(), ancestor) != path.end();
@@ -117,6 +143,7 @@ void ChooseOdometry(const RecordingContents& contents, const RecordingReadOption
     }
   }
   if (!base.empty() && contents.tf.HasFrame(odom) && Connected(contents.tf, odom, base)) {
+    RequireNoLoop(contents, {&odom, &base}, fmt::format("the odometry {} -> {}", odom, base));
     info->odom_frame = odom;
     info->base_frame = base;
     source->tf = &contents.tf;
@@ -156,6 +183,8 @@ RigidTransform3 ChooseLaserOffset(const RecordingContents& contents, const Recor
     info->laser_offset_source = "the scans are in the base frame";
     return offset;
   }
+  RequireNoLoop(contents, {&info->base_frame, &info->laser_frame},
+                fmt::format("the laser offset {} -> {}", info->base_frame, info->laser_frame));
   const TfLookup lookup = contents.tf.Lookup(info->base_frame, info->laser_frame, first_stamp);
   if (!lookup.transform) {
     throw InputError(
@@ -331,6 +360,8 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
   info.tf_edges = contents.tf.Describe();
   info.tf_parent_conflicts = contents.tf.parent_conflicts();
   info.tf_bad_rotations = contents.tf.bad_rotations();
+  info.tf_refused_frames = contents.tf.refused_frames();
+  for (const std::vector<std::string>& loop : contents.tf.Loops()) info.tf_loops.push_back(LoopText(loop));
   FillTopics(contents, &info);
   for (const RecordingInfo::Topic& t : info.topics) log.record_counts[t.name] = t.messages;
 

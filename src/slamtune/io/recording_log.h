@@ -25,15 +25,25 @@
 //     (docs/engine.md §1.4); the engine is given the robot poses and the offset
 //     (slam/log_runner.h OdometryFrameOf).
 //
+//   * a loop in the tf tree on the frames the odometry or the laser offset is composed over is an
+//     error naming the loop (tf2 refuses every lookup through it): TfLoopError.
+//
 // Every choice is recorded in LaserLog::recording with the rule that made it.
 #pragma once
 
 #include <string>
 
+#include "slamtune/common/error.h"
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/recording_contents.h"
 
 namespace slamtune::io {
+
+// The tf tree has a loop where the odometry or the laser offset would be looked up.
+class TfLoopError : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 // Throws InputError for a choice that cannot be made (named topic missing, several scan topics,
 // no odometry, no laser offset) and for malformed scans unless options.lenient.

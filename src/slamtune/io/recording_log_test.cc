@@ -143,6 +143,42 @@ TEST(RecordingToLog, MissingOffsetSaysWhatToDoAndTheOptionSuppliesIt) {
   EXPECT_NEAR(log.scans[2].laser_pose.x, 0.8, 1e-12);
 }
 
+// A loop in the tf tree on the odometry's or the laser offset's frames is refused, naming it:
+// tf2 refuses every lookup through a loop, and a pose composed around it would be made up. A
+// loop elsewhere in the tree is kept for the reports.
+TEST(RecordingToLog, ATfLoopOnTheFramesUsedIsRefusedNamingIt) {
+  RecordingContents odometry_loop = Drive();
+  odometry_loop.tf.Add("laser", "odom", 0, Planar(0, 0, 0), true);  // odom had no parent: closes a loop
+  EXPECT_EQ(ErrorMessageOf([&] { RecordingToLog(odometry_loop, {}); }),
+            "drive.mcap: the tf tree has a loop, odom -> base_footprint -> laser -> odom: odom is its own ancestor "
+            "(odom -> base_footprint (dynamic), base_footprint -> laser (static), laser -> odom (static)), so the "
+            "odometry odom -> base_footprint cannot be found (tf2 refuses every lookup through a loop); one of these "
+            "transforms was published the wrong way round");
+  EXPECT_THROW(RecordingToLog(odometry_loop, {}), TfLoopError);
+
+  RecordingContents offset_loop = Drive();
+  offset_loop.tf = TfBuffer();
+  for (int k = 0; k <= 40; ++k) {
+    offset_loop.tf.Add("odom", "base_footprint", k * 50 * kMs, Planar(0.05 * k, 0, 0), false);
+  }
+  offset_loop.tf.Add("mount", "laser", 0, Planar(0.2, 0, 0), true);
+  offset_loop.tf.Add("laser", "mount", 0, Planar(-0.2, 0, 0), true);
+  EXPECT_THAT(ErrorMessageOf([&] { RecordingToLog(offset_loop, {}); }),
+              ::testing::HasSubstr("loop, laser -> mount -> laser: laser is its own ancestor (laser -> mount (static), "
+                                   "mount -> laser (static)), so the laser offset base_footprint -> laser cannot be "
+                                   "found"));
+  LogReadOptions stated;
+  stated.recording.laser_offset = Pose2{0.2, 0, 0};  // the tree is not used for the offset
+  EXPECT_EQ(RecordingToLog(offset_loop, stated).scans.size(), 9u);
+
+  RecordingContents elsewhere = Drive();
+  elsewhere.tf.Add("camera", "arm", 0, Planar(0, 0, 0), true);
+  elsewhere.tf.Add("arm", "camera", 0, Planar(0, 0, 0), true);
+  const LaserLog log = RecordingToLog(elsewhere, {});
+  EXPECT_EQ(log.scans.size(), 9u);
+  EXPECT_EQ(log.recording->tf_loops, std::vector<std::string>{"arm -> camera -> arm"});
+}
+
 TEST(RecordingToLog, SeveralScanTopicsNeedAChoice) {
   RecordingContents c = Drive();
   c.scans["/scan_rear"] = c.scans["/scan"];

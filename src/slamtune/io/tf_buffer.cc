@@ -52,6 +52,10 @@ bool TfBuffer::Add(const std::string& parent, const std::string& child, std::int
     ++bad_rotations_;
     return false;
   }
+  if (parent.empty() || child.empty() || parent == child) {
+    ++refused_frames_;  // tf2: "TF_NO_FRAME_ID", "TF_NO_CHILD_FRAME_ID", "TF_SELF_TRANSFORM"
+    return false;
+  }
   auto [it, inserted] = edges_.try_emplace(child);
   Edge& edge = it->second;
   if (inserted) {
@@ -119,6 +123,39 @@ std::vector<std::string> TfBuffer::PathToRoot(const std::string& frame) const {
     path.push_back(it->second.parent);
   }
   return path;
+}
+
+std::vector<std::string> TfBuffer::LoopAbove(const std::string& frame) const {
+  std::vector<std::string> up{frame};  // each frame's parent follows it
+  for (auto it = edges_.find(frame); it != edges_.end(); it = edges_.find(up.back())) {
+    const auto seen = std::find(up.begin(), up.end(), it->second.parent);
+    if (seen == up.end()) {
+      up.push_back(it->second.parent);
+      continue;
+    }
+    // up[j] ... up[k] read upwards, and up[k]'s parent is up[j]: as the transforms go, up[j]
+    // is the parent of up[k], up[k] of up[k - 1], ..., up[j + 1] of up[j].
+    const auto j = static_cast<std::size_t>(seen - up.begin());
+    std::vector<std::string> loop{up[j]};
+    for (std::size_t i = up.size(); i-- > j + 1;) loop.push_back(up[i]);
+    loop.push_back(up[j]);
+    return loop;
+  }
+  return {};
+}
+
+std::vector<std::vector<std::string>> TfBuffer::Loops() const {
+  std::vector<std::vector<std::string>> loops;
+  for (const auto& [child, edge] : edges_) {
+    std::vector<std::string> loop = LoopAbove(child);
+    if (loop.empty()) continue;
+    loop.pop_back();
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+    loop.push_back(loop.front());
+    if (std::find(loops.begin(), loops.end(), loop) == loops.end()) loops.push_back(std::move(loop));
+  }
+  std::sort(loops.begin(), loops.end());
+  return loops;
 }
 
 TfLookup TfBuffer::Lookup(const std::string& target, const std::string& source, std::int64_t stamp_ns,

@@ -10,6 +10,12 @@
 // the given maximum gap (a hole in the recording is not bridged). A sample exactly at t is returned as
 // recorded.
 //
+// A loop — a frame that is its own ancestor, e.g. odom -> base_link -> laser -> odom, when a
+// transform was published the wrong way round — makes tf2 refuse every lookup through it
+// ("the tf tree is invalid because it contains a loop"): Loops() names them, and the recording
+// reader refuses a recording whose odometry or laser offset would pass through one. A transform
+// from a frame to itself, or with an empty frame id, is refused at Add as tf2 refuses it.
+//
 // Projection to the plane (ToPose2): x, y and the yaw of the rotation's Z-Y-X Euler angles
 // (tf2::getYaw); the z axis of the rotated frame tells an upside-down sensor (z down).
 #pragma once
@@ -52,7 +58,9 @@ class TfBuffer {
  public:
 
   // Adds parent -> child at `stamp_ns`. Returns false (and counts a conflict) when `child`
-  // already has another parent: tf2 keeps one parent per frame; the first one stays.
+  // already has another parent: tf2 keeps one parent per frame; the first one stays. A
+  // transform whose parent is its child, or with an empty frame id, is refused (false, counted
+  // in refused_frames).
   // A rotation is normalised; one whose squared norm is more than 0.01 from 1, or a non-finite
   // value, is refused as tf2 refuses it (false, counted in bad_rotations).
   // `received_ns` is when the recording received it (its log time), for lateness checks.
@@ -64,8 +72,16 @@ class TfBuffer {
                   double max_gap_s = 0.5) const;
   // Whether `frame` is a parent or child of any transform.
   bool HasFrame(const std::string& frame) const;
-  // Frames on the path from `frame` up to its root, `frame` first.
+  // Frames on the path from `frame` up to its root, `frame` first (up to the first frame seen
+  // twice when the path runs into a loop).
   std::vector<std::string> PathToRoot(const std::string& frame) const;
+  // The loop the path from `frame` up the tree runs into, as its transforms go, parent first and
+  // the first frame again last ("odom", "base_link", "laser", "odom": odom is base_link's parent,
+  // ..., laser is odom's); empty when the path ends at a root.
+  std::vector<std::string> LoopAbove(const std::string& frame) const;
+  // Every loop of the tree, each as LoopAbove gives it starting at its smallest frame name, in
+  // name order.
+  std::vector<std::vector<std::string>> Loops() const;
   // "a -> b (static), b -> c (dynamic, 812 samples)" per edge, for reports.
   std::vector<std::string> Describe() const;
   // The dynamic samples' stamps of the edge parent -> child (empty if none or static), and
@@ -77,6 +93,7 @@ class TfBuffer {
 
   std::size_t parent_conflicts() const { return parent_conflicts_; }
   std::size_t bad_rotations() const { return bad_rotations_; }
+  std::size_t refused_frames() const { return refused_frames_; }
   std::size_t transforms() const { return transforms_; }
 
  private:
@@ -98,6 +115,7 @@ class TfBuffer {
   mutable std::map<std::string, Edge> edges_;  // by child frame
   std::size_t parent_conflicts_ = 0;
   std::size_t bad_rotations_ = 0;
+  std::size_t refused_frames_ = 0;
   std::size_t transforms_ = 0;
 };
 

@@ -57,6 +57,43 @@ TEST(TfBuffer, NoExtrapolationAndNoBridgingOfGaps) {
   EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1.5).transform);  // a wider gap allowed
 }
 
+// A transform published the wrong way round closes a loop: tf2 refuses lookups through it, and
+// the buffer names it, as the transforms go, from any frame whose path up the tree enters it.
+TEST(TfBuffer, LoopsAreNamedAsTheTransformsGo) {
+  TfBuffer tf;
+  tf.Add("odom", "base_link", 0, Planar(1, 0, 0), false);
+  tf.Add("base_link", "laser", 0, Planar(0.1, 0, 0), true);
+  tf.Add("laser", "odom", 0, Planar(0, 0, 0), true);  // odom had no parent yet: accepted
+  tf.Add("map", "camera", 0, Planar(0, 0, 0), true);   // a tree beside it, without a loop
+  tf.Add("laser", "sonar", 0, Planar(0, 0, 0), true);  // a branch off the loop
+  const std::vector<std::string> loop = {"base_link", "laser", "odom", "base_link"};
+  EXPECT_EQ(tf.LoopAbove("base_link"), loop);
+  EXPECT_EQ(tf.LoopAbove("laser"), (std::vector<std::string>{"laser", "odom", "base_link", "laser"}));
+  EXPECT_EQ(tf.LoopAbove("sonar"), (std::vector<std::string>{"laser", "odom", "base_link", "laser"}));
+  EXPECT_TRUE(tf.LoopAbove("camera").empty());
+  EXPECT_TRUE(tf.LoopAbove("unknown").empty());
+  EXPECT_EQ(tf.Loops(), std::vector<std::vector<std::string>>{loop});
+  // Two frames that are each other's parent; and the tree without loops.
+  TfBuffer pair;
+  pair.Add("a", "b", 0, Planar(0, 0, 0), true);
+  pair.Add("b", "a", 0, Planar(0, 0, 0), false);
+  EXPECT_EQ(pair.Loops(), (std::vector<std::vector<std::string>>{{"a", "b", "a"}}));
+  TfBuffer tree;
+  tree.Add("odom", "base_link", 0, Planar(1, 0, 0), false);
+  EXPECT_TRUE(tree.Loops().empty());
+}
+
+// tf2 refuses a frame as its own parent and empty frame ids; so does the buffer, counting them.
+TEST(TfBuffer, SelfTransformsAndEmptyFrameIdsAreRefused) {
+  TfBuffer tf;
+  EXPECT_FALSE(tf.Add("base_link", "base_link", 0, Planar(0, 0, 0), true));
+  EXPECT_FALSE(tf.Add("", "laser", 0, Planar(0, 0, 0), true));
+  EXPECT_FALSE(tf.Add("base_link", "", 0, Planar(0, 0, 0), true));
+  EXPECT_EQ(tf.refused_frames(), 3u);
+  EXPECT_FALSE(tf.HasFrame("base_link"));
+  EXPECT_TRUE(tf.Loops().empty());
+}
+
 TEST(TfBuffer, StaticChainComposesAndProjects) {
   TfBuffer tf;
   tf.Add("base_footprint", "base_link", 0, Planar(0, 0, 0, 0.1), true);
