@@ -52,5 +52,52 @@ grep -q "^problem tf_loop: the tf tree has a loop, odom -> base_link -> laser ->
   fail "check does not name the loop: $(cat "$work/check_loop.txt")"
 grep -q "^verdict: 1 problem: tf_loop" "$work/check_loop.txt" || fail "check verdict: $(tail -1 "$work/check_loop.txt")"
 
+# 2. Scans not used are said on stderr with --quiet too, and counted by kind under
+# `scans_not_used` in run.json, results.json and check --json, and in the report: here 11 scans
+# whose tf (odom -> base_link) is NaN for a second.
+bag tfnan '
+for k, (conn, t, payload) in enumerate(b.messages):
+    if b.connections[conn][0] == "/tf" and b.start_ns + 4e9 <= t <= b.start_ns + 5e9:
+        b.messages[k] = (conn, t, ros1_bag.tf_message([("odom", "base_link", t, (float("nan"), 4.0, 0.0), (0, 0, 0, 1))]))'
+notused="not used: 11 scans without odometry at their stamp (21 tf transforms refused: NaN, inf or a bad rotation, or a bad frame id) (first: scan 40 at 104.025000 s: odom -> base_link at 104.025000 s: no sample for 1.100 s around it (gap 103.950000 s .. 105.050000 s))"
+count() {  # FILE.json PATH...: the value at that path
+  python3 -c 'import json, sys
+v = json.load(open(sys.argv[1]))
+for k in sys.argv[2:]: v = v[k]
+print(json.dumps(v))' "$@"
+}
+"$bin" run "$work/tfnan.bag" --out "$work/run_tfnan" --quiet >/dev/null 2>"$work/run_tfnan.err" || fail "run on tfnan.bag failed"
+[[ "$(cat "$work/run_tfnan.err")" == "$notused" ]] || fail "run --quiet: stderr '$(cat "$work/run_tfnan.err")'"
+[[ $(count "$work/run_tfnan/run.json" scans_not_used no_odometry count) == 11 ]] || fail "run.json: no_odometry count"
+[[ $(count "$work/run_tfnan/run.json" scans_not_used not_moved data_loss) == false ]] || fail "run.json: not_moved"
+for kind in no_odometry malformed cut_off wrong_reading_count filtered_by_node not_moved; do
+  count "$work/run_tfnan/run.json" scans_not_used "$kind" count >/dev/null 2>&1 || fail "run.json lacks scans_not_used.$kind"
+done
+"$bin" optimize "$work/tfnan.bag" --out "$work/opt_tfnan" --quiet --population 4 --generations 1 --jobs 2 >/dev/null \
+  2>"$work/opt_tfnan.err" || fail "optimize on tfnan.bag failed: $(cat "$work/opt_tfnan.err")"
+grep -qxF "$notused" "$work/opt_tfnan.err" || fail "optimize --quiet: stderr '$(cat "$work/opt_tfnan.err")'"
+[[ $(count "$work/opt_tfnan/results.json" scans_not_used no_odometry count) == 11 ]] || fail "results.json: count"
+grep -q '<p class="warning">Not used: 11 scans without odometry' "$work/opt_tfnan/report.html" ||
+  fail "the report does not warn of the scans not used"
+"$bin" check "$work/tfnan.bag" --json > "$work/check_tfnan.json" || fail "check --json on tfnan.bag"
+[[ $(count "$work/check_tfnan.json" scans_not_used no_odometry count) == 11 ]] || fail "check --json: count"
+# A recording cut off after its first chunk (no end marker): read up to there, and said.
+python3 - "$tests/fixtures/recordings/office_zstd.mcap" "$work/first_chunk.mcap" <<'EOF2'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+pos = 8
+while True:
+    opcode, length = data[pos], struct.unpack_from("<Q", data, pos + 1)[0]
+    pos += 9 + length
+    if opcode == 0x06:  # the first Chunk record
+        break
+open(sys.argv[2], "wb").write(data[:pos])
+EOF2
+"$bin" run "$work/first_chunk.mcap" --out "$work/run_first_chunk" --quiet >/dev/null 2>"$work/first_chunk.err" ||
+  fail "run on a recording cut after its first chunk: $(cat "$work/first_chunk.err")"
+grep -q "^not used: whatever was recorded after the file's end: it ends without its end marker" "$work/first_chunk.err" ||
+  fail "run --quiet does not say the recording was cut off: '$(cat "$work/first_chunk.err")'"
+[[ $(count "$work/run_first_chunk/run.json" scans_not_used cut_off count) == null ]] || fail "run.json: cut_off count"
+
 if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
 echo "damaged recordings: all checks passed"

@@ -10,6 +10,7 @@
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/log_input.h"
 #include "slamtune/io/log_check.h"
+#include "slamtune/report/scan_losses_json.h"
 
 namespace slamtune::cli {
 namespace {
@@ -31,7 +32,11 @@ nlohmann::ordered_json ToJson(const io::CheckReport& report) {
                         {"scans", p.scans},
                         {"times_s", p.times_s}});
   }
-  return {{"path", report.path}, {"ok", report.ok()}, {"facts", report.facts}, {"problems", problems}};
+  return {{"path", report.path},
+          {"ok", report.ok()},
+          {"facts", report.facts},
+          {"problems", problems},
+          {"scans_not_used", report::ScanLossesJson(report.scans_not_used)}};
 }
 
 const SubcommandRegistrar kCheck(Subcommand{

@@ -33,9 +33,7 @@ int Convert(const ConvertArgs& args) {
   if (std::filesystem::is_directory(args.out)) throw InputError(args.out, 0, "--out is a folder; give a file name");
   io::LaserLog log = ReadLog(args.log, args.input);
   const std::vector<std::string> input = io::DescribeLogInput(log);
-  if (!args.quiet) {
-    for (const std::string& line : input) std::fprintf(stderr, "%s\n", line.c_str());
-  }
+  PrintLogInput(log, args.quiet);
   const std::size_t replaced = io::PrepareForCarmen(&log);
   io::CarmenWriteOptions options;
   options.comments.push_back("converted by slamtune from " + args.log);

@@ -49,9 +49,7 @@ int Fault(const FaultArgs& args) {
   CheckOut(args.out);
   io::LaserLog log = ReadLog(args.log, args.input);
   const std::vector<std::string> input = io::DescribeLogInput(log);
-  if (!args.quiet) {
-    for (const std::string& line : input) std::fprintf(stderr, "%s\n", line.c_str());
-  }
+  PrintLogInput(log, args.quiet);
   const sim::LogFaultSummary planted = sim::PlantLogFaults(log, faults);
   const std::size_t replaced = io::PrepareForCarmen(&log, /*keep_flaser=*/true);
 

@@ -251,6 +251,7 @@ void DescribeBase(const TuningInputs& inputs, const TuningInputOptions& input_op
   settings.node_mode = inputs.base.node_mode;
   settings.log_path = inputs.log_label;
   settings.log_input = inputs.log_input;
+  settings.scans_not_used = inputs.scans_not_used;
   settings.relations_path = inputs.relations_label;
   settings.engine = {{"inputs", input_options.ToJson()}, {"base", nlohmann::json::object()}};
   for (const auto& p : slam::ToNamedValues(inputs.base)) {
@@ -375,7 +376,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   }
 
   // Preamble: every input is loaded and validated before any work starts.
-  const TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet);
+  const TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet ? InputNotes::kDataLoss : InputNotes::kAll);
   OptimizationPlan plan = PlanOptimization(inputs, folder, args);
   const optim::OptimizeSettings& settings = plan.settings;
   folder.EnsureLocked();

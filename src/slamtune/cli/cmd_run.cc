@@ -35,6 +35,7 @@
 #include "slamtune/report/front_end_json.h"
 #include "slamtune/report/front_end_map.h"
 #include "slamtune/report/png_encoding.h"
+#include "slamtune/report/scan_losses_json.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
@@ -147,9 +148,7 @@ void LoadRunLog(const RunArgs& args, const sim::SimulationOptions& world, RunInp
   } else {
     input.log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
   }
-  if (!args.quiet) {
-    for (const std::string& line : io::DescribeLogInput(*input.log)) std::fprintf(stderr, "%s\n", line.c_str());
-  }
+  PrintLogInput(*input.log, args.quiet);
   if (!args.relations.empty()) {
     const metrics::RelationMatch match = metrics::RequireMatchingRelations(*input.log, input.relations, args.relations);
     if (!args.quiet && !match.complete()) WarnPartialRelations(args.relations, match);
@@ -233,15 +232,6 @@ nlohmann::json MapJson(const metrics::MapQuality& quality) {
           {"message", quality.message}};
 }
 
-// The scans the node kept from Karto, by verdict (slam/node_scan_filter.h).
-nlohmann::json RefusedByNodeJson(const slam::RunSummary& summary) {
-  nlohmann::json out = nlohmann::json::object();
-  for (int v = 1; v < slam::kNumNodeVerdicts; ++v) {
-    out[slam::NameOf(static_cast<slam::NodeVerdict>(v))] = summary.scans_refused_by_node[v];
-  }
-  return out;
-}
-
 // "; slam_toolbox online_sync_launch.py (synchronous node) kept 120 scans from Karto (100 not
 // moved, 16 too soon, 4 warming up)", or "" when the node handed every scan on.
 std::string RefusedByNodeText(const slam::RunSummary& summary, slam::NodeMode mode) {
@@ -270,9 +260,7 @@ nlohmann::json RunJson(const slam::RunSummary& summary, const io::LaserLog& log,
       {"scans", summary.scans_read},
       {"node_mode", slam::NameOf(params.node_mode)},
       {"scans_offered", summary.scans_offered},
-      {"scans_refused_by_node", RefusedByNodeJson(summary)},
-      {"scans_not_moved", summary.scans_not_moved},
-      {"scans_wrong_reading_count", summary.scans_wrong_reading_count},
+      {"scans_not_used", report::ScanLossesJson(slam::RunLosses(log, summary, params.node_mode))},
       {"nodes", summary.nodes},
       {"loop_closures", summary.loop_closures.size()},
       {"loop_attempts", summary.loop_attempts},

@@ -102,7 +102,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   const std::string& name = range.name;
   if (args.out.empty()) throw InputError("--out DIR is required");
 
-  TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet);
+  TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet ? InputNotes::kDataLoss : InputNotes::kAll);
   auto context = MakeEvaluationContext(inputs, {}, args.run);
   const std::vector<optim::Assignment> batch = SweepBatch(range, args.fix, *context);
   CreateOutputFolder(args.out);

@@ -1,8 +1,11 @@
 #include "slamtune/cli/log_input.h"
 
+#include <cstdio>
+
 #include "slamtune/common/error.h"
 #include "slamtune/io/beam_geometry.h"
 #include "slamtune/io/log_reader.h"
+#include "slamtune/io/log_summary.h"
 
 namespace slamtune::cli {
 
@@ -75,6 +78,12 @@ LogInputOptions LogInputOptions::FromJson(const nlohmann::json& j) {
 
 io::LaserLog ReadLog(const std::string& path, const LogInputOptions& options) {
   return io::ReadLaserLog(path, options.ToReadOptions());
+}
+
+void PrintLogInput(const io::LaserLog& log, bool quiet) {
+  for (const std::string& line : quiet ? io::InputLossLines(log) : io::DescribeLogInput(log)) {
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
 }
 
 }  // namespace slamtune::cli

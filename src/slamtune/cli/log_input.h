@@ -37,4 +37,9 @@ struct LogInputOptions {
 // The log at `path` read with `options` (io::ReadLaserLog).
 io::LaserLog ReadLog(const std::string& path, const LogInputOptions& options);
 
+// What was read and chosen (io::DescribeLogInput) on stderr; with `quiet` only the lines that
+// say data of the recording is not used (io::InputLossLines): quiet silences progress, not
+// data loss.
+void PrintLogInput(const io::LaserLog& log, bool quiet);
+
 }  // namespace slamtune::cli

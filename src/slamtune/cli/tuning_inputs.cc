@@ -14,6 +14,7 @@
 #include "slamtune/io/log_summary.h"
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/sim/simulation.h"
+#include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/params_yaml.h"
 
 namespace slamtune::cli {
@@ -98,7 +99,8 @@ void WarnPartialRelations(const std::string& relations_file, const metrics::Rela
                match.Brief().c_str());
 }
 
-TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
+TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes notes) {
+  const bool quiet = notes != InputNotes::kAll;
   TuningInputs in;
   LoadBase(options, quiet, &in);
 
@@ -120,10 +122,9 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet) {
     in.log = std::make_shared<const io::LaserLog>(ReadLog(options.log, options.input));
     in.log_label = options.log;
     in.log_input = io::DescribeLogInput(*in.log);
-    if (!quiet) {
-      for (const std::string& line : in.log_input) std::fprintf(stderr, "%s\n", line.c_str());
-    }
+    if (notes != InputNotes::kNone) PrintLogInput(*in.log, quiet);
   }
+  in.scans_not_used = io::ReadingLosses(*in.log, slam::LaserRuleOf(in.base.node_mode));
   if (!options.relations.empty()) {
     in.relations = io::ReadRelations(options.relations);
     in.relations_label = options.relations;
@@ -210,7 +211,7 @@ void EnsureWritableOutputFolder(const std::string& dir) {
 
 int ServeAsWorker(const optim::MpiWorld& world) {
   optim::ServeEvaluations(world, [](const nlohmann::json& setup) -> optim::EvaluateFn {
-    const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), true);
+    const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), InputNotes::kNone);
     TuningRunOptions run;
     run.no_share = setup.at("no_share").get<bool>();
     run.share_mb = setup.at("share_mb").get<std::size_t>();

@@ -20,6 +20,7 @@
 #include "slamtune/cli/log_input.h"
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/relations.h"
+#include "slamtune/io/scan_losses.h"
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/mpi_evaluation.h"
@@ -59,6 +60,7 @@ struct TuningInputs {
   std::string log_label;        // path, or "built-in world NAME (seed N)"
   std::string relations_label;  // path, "simulated", or empty
   std::vector<std::string> log_input;  // what was read and chosen (io::DescribeLogInput)
+  io::ScanLosses scans_not_used;       // the log's scans no run maps (io::ReadingLosses for the base's node)
 };
 
 // The --preset option of every command that starts from a base configuration
@@ -68,9 +70,13 @@ CLI::Option* AddPresetOption(CLI::App& app, std::string& preset);
 // node reads otherwise than written, keys whose effect is not modelled).
 void PrintParamsWarnings(const slam::BaseConfiguration& base);
 
+// What LoadTuningInputs says on stderr: everything read and chosen; only the data of the
+// recording that is not used (--quiet: quiet silences progress, not data loss); nothing (a
+// worker rank, whose rank 0 says it).
+enum class InputNotes { kAll, kDataLoss, kNone };
 // Loads and validates everything; throws InputError naming the file and problem (relations
 // that match no scan of the log among them, metrics::RequireMatchingRelations).
-TuningInputs LoadTuningInputs(const TuningInputOptions& options, bool quiet);
+TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes notes);
 
 // "slamtune: warning: FILE: N of M relations match scans of the log; ..." on stderr.
 void WarnPartialRelations(const std::string& relations_file, const metrics::RelationMatch& match);

@@ -270,6 +270,9 @@ LaserLog Read(LineReader& reader, const LogReadOptions& options) {
       if (log.skipped_reasons.size() < kMaxSkippedReasons) {
         log.skipped_reasons.push_back(std::to_string(reader.line_number()) + ": " + what);
       }
+      if (fields[0] == "FLASER" || fields[0] == "ROBOTLASER1" || fields[0].starts_with("RAWLASER")) {
+        if (log.skipped_scans++ == 0) log.first_skipped_scan = fmt::format("line {}: {}", reader.line_number(), what);
+      }
     }
     if (draining) {
       if (!log.odometry.empty() && log.odometry.back().ipc_time >= st.latest_raw_time) break;

@@ -154,6 +154,8 @@ struct LaserLog {
   std::size_t unknown_records = 0;  // lines of unknown type, skipped
   std::size_t skipped_records = 0;  // malformed records skipped under --lenient
   std::vector<std::string> skipped_reasons;  // "LINE: reason" for the first few skipped
+  std::size_t skipped_scans = 0;             // of those, laser records (FLASER, ROBOTLASER1, RAWLASER1..4)
+  std::string first_skipped_scan;            // "line N: reason" of the first
   // RAWLASER scans outside the time span of the ODOM records: no pose to interpolate, so they
   // are left out of `scans` (never posed by clamping) and counted here; the first one in
   // words, e.g. "line 12 at 130.5 s; ODOM 100 .. 120 s".

@@ -378,6 +378,7 @@ void AddInputFacts(const LaserLog& log, CheckReport* report) {
 CheckReport CheckParts(const LaserLog& log, const std::vector<double>& stamps, const CheckOptions& options) {
   CheckReport report;
   report.path = log.path;
+  report.scans_not_used = ReadingLosses(log);
   AddInputFacts(log, &report);
   CheckStamps(stamps, options, &report);
   CheckBeams(log, &report);

@@ -31,6 +31,7 @@
 
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/recording_contents.h"
+#include "slamtune/io/scan_losses.h"
 
 namespace slamtune::io {
 
@@ -84,6 +85,7 @@ struct CheckReport {
   std::string path;
   std::vector<std::string> facts;  // "NAME: value" lines
   std::vector<CheckProblem> problems;
+  ScanLosses scans_not_used;  // the kinds the recording decides, for either node (io/scan_losses.h)
   bool ok() const { return problems.empty(); }
   bool Has(ProblemKind kind) const;
 };

@@ -1,7 +1,5 @@
 #include "slamtune/io/log_summary.h"
 
-#include "slamtune/io/beam_geometry.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +7,8 @@
 #include <limits>
 
 #include "slamtune/common/karto_math.h"
+#include "slamtune/io/beam_geometry.h"
+#include "slamtune/io/scan_losses.h"
 
 namespace slamtune::io {
 namespace {
@@ -128,8 +128,17 @@ std::vector<std::string> BeamLines(const LaserLog& log) {
   return out;
 }
 
-std::vector<std::string> DescribeLogInput(const LaserLog& log) {
-  std::vector<std::string> out;
+namespace {
+
+struct InputLine {
+  std::string text;
+  bool loss = false;  // says that data of the recording is not used
+};
+
+std::vector<InputLine> InputLines(const LaserLog& log) {
+  std::vector<InputLine> out;
+  const auto add = [&out](std::string text, bool loss = false) { out.push_back({std::move(text), loss}); };
+  const ScanLosses losses = ReadingLosses(log);
   if (log.recording) {
     const RecordingInfo& r = *log.recording;
     const std::string ending =
@@ -137,47 +146,60 @@ std::vector<std::string> DescribeLogInput(const LaserLog& log) {
             ? fmt::format("{} bytes of a corrupt or truncated tail not read, --lenient ({})", r.dropped_tail_bytes,
                           r.dropped_tail_reason)
             : (r.ending.empty() ? (r.complete ? "complete" : "no end marker") : r.ending);
-    out.push_back(fmt::format("recording: {}, {} file{}; {}", r.format, r.files.size(), r.files.size() == 1 ? "" : "s",
-                              ending));
-    out.push_back(fmt::format("scans: {} ({}), {} messages, {} used", r.scan_topic, r.scan_topic_rule, r.scan_messages,
-                              log.scans.size()));
-    out.push_back(fmt::format("odometry: {} ({})", r.odometry_source, r.odometry_rule));
-    out.push_back(fmt::format("laser offset: x {:.4f} m, y {:.4f} m, yaw {:.3f} deg, {} ({}){}{}", r.laser_offset.x,
-                              r.laser_offset.y, RadToDeg(r.laser_offset.theta),
-                              r.laser_frame == r.base_frame ? r.base_frame : r.base_frame + " -> " + r.laser_frame,
-                              r.laser_offset_source,
-                              r.upside_down ? "; upside down: readings reversed" : "",
-                              r.laser_tilt_deg > 1.0 ? fmt::format("; tilted {:.1f} deg", r.laser_tilt_deg) : ""));
-    if (r.scans_unplaced > 0) {
-      out.push_back(fmt::format("not used: {} scans without odometry at their stamp (first: {})", r.scans_unplaced,
-                                r.unplaced_examples.empty() ? "-" : r.unplaced_examples.front()));
-    }
-    if (r.scans_malformed > 0) {
-      out.push_back(fmt::format("not used: {} malformed scans, --lenient (first: {})", r.scans_malformed,
-                                r.malformed_examples.empty() ? "-" : r.malformed_examples.front()));
-    }
+    add(fmt::format("recording: {}, {} file{}; {}", r.format, r.files.size(), r.files.size() == 1 ? "" : "s", ending));
+    add(fmt::format("scans: {} ({}), {} messages, {} used", r.scan_topic, r.scan_topic_rule, r.scan_messages,
+                    log.scans.size()));
+    add(fmt::format("odometry: {} ({})", r.odometry_source, r.odometry_rule));
+    add(fmt::format("laser offset: x {:.4f} m, y {:.4f} m, yaw {:.3f} deg, {} ({}){}{}", r.laser_offset.x,
+                    r.laser_offset.y, RadToDeg(r.laser_offset.theta),
+                    r.laser_frame == r.base_frame ? r.base_frame : r.base_frame + " -> " + r.laser_frame,
+                    r.laser_offset_source, r.upside_down ? "; upside down: readings reversed" : "",
+                    r.laser_tilt_deg > 1.0 ? fmt::format("; tilted {:.1f} deg", r.laser_tilt_deg) : ""));
+  }
+  // Scans not used, but for their reading count: each node's count is in the beams lines.
+  for (const ScanLoss& k : losses.kinds) {
+    if (k.kind == ScanLossKind::kWrongReadingCount) continue;
+    ScanLosses one;
+    one.kinds.push_back(k);
+    for (const std::string& line : one.LossLines()) add(line, true);
+  }
+  if (log.recording) {
+    const RecordingInfo& r = *log.recording;
     if (r.messages_undecodable > 0) {
-      out.push_back(fmt::format("not used: {} undecodable tf / odometry messages, --lenient", r.messages_undecodable));
+      add(fmt::format("not used: {} undecodable tf / odometry messages, --lenient", r.messages_undecodable), true);
     }
     for (const std::string& loop : r.tf_loops) {
-      out.push_back(fmt::format("note: the tf tree has a loop, {}, away from the frames used (tf2 refuses every "
-                                "lookup through it)",
-                                loop));
+      add(
+          fmt::format("note: the tf tree has a loop, {}, away from the frames used (tf2 refuses every lookup through "
+                      "it)",
+                      loop));
     }
     if (r.scans_other_frame > 0) {
-      out.push_back(fmt::format("note: {} scans name another frame than {} (read as {})", r.scans_other_frame,
-                                r.laser_frame, r.laser_frame));
+      add(fmt::format("note: {} scans name another frame than {} (read as {})", r.scans_other_frame, r.laser_frame,
+                      r.laser_frame));
     }
   }
-  for (const std::string& line : BeamLines(log)) out.push_back(line);
-  if (log.scans_without_odometry > 0) {
-    out.push_back(fmt::format("not used: {} RAWLASER scans outside the time span of the ODOM records, no pose to "
-                              "interpolate (first: {})",
-                              log.scans_without_odometry, log.first_scan_without_odometry));
+  for (const std::string& line : BeamLines(log)) add(line, line.find(" drops ") != std::string::npos);
+  if (log.skipped_records > log.skipped_scans) {
+    add(fmt::format("not used: {} malformed records, --lenient (first: {})", log.skipped_records,
+                    log.skipped_reasons.empty() ? "-" : log.skipped_reasons.front()),
+        true);
   }
-  if (log.skipped_records > 0) {
-    out.push_back(fmt::format("not used: {} malformed records, --lenient (first: {})", log.skipped_records,
-                              log.skipped_reasons.empty() ? "-" : log.skipped_reasons.front()));
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> DescribeLogInput(const LaserLog& log) {
+  std::vector<std::string> out;
+  for (const InputLine& line : InputLines(log)) out.push_back(line.text);
+  return out;
+}
+
+std::vector<std::string> InputLossLines(const LaserLog& log) {
+  std::vector<std::string> out;
+  for (const InputLine& line : InputLines(log)) {
+    if (line.loss) out.push_back(line.text);
   }
   return out;
 }

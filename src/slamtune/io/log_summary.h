@@ -71,6 +71,9 @@ LogSummary SummarizeLog(const LaserLog& log);
 // the rule that chose it); for any log the beam geometries seen and what was done about them,
 // and records skipped under --lenient. Commands print these before they work on the log.
 std::vector<std::string> DescribeLogInput(const LaserLog& log);
+// The lines of DescribeLogInput that say data of the recording is not used (scans not used,
+// and why; records skipped; a recording cut off): what a command prints with --quiet too.
+std::vector<std::string> InputLossLines(const LaserLog& log);
 // The "beams:" lines of DescribeLogInput: the geometries seen, the scans each node drops for their
 // reading count (beam_geometry.h ExpectedReadings) and what --beams did.
 std::vector<std::string> BeamLines(const LaserLog& log);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "slamtune/io/map_image.h"
+#include "slamtune/io/scan_losses.h"
 #include "slamtune/io/trajectory.h"
 #include "slamtune/optim/candidate_selection.h"
 #include "slamtune/optim/equivalent_region.h"
@@ -69,6 +70,8 @@ struct BaseFrontEnd {
 struct OptimizeResult {
   std::string log_path;
   std::vector<std::string> log_input;  // what was read and chosen (recording topics, offset, beams)
+  // The log's scans no run maps, by why: the kinds the recording decides (io/scan_losses.h).
+  io::ScanLosses scans_not_used;
   std::string relations_path;  // empty without --relations
   SearchSpace space;
   ObjectiveSet objectives;     // what was minimised; snapshots' objective vectors follow its order

@@ -459,6 +459,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   OptimizeResult result;
   result.log_path = settings.log_path;
   result.log_input = settings.log_input;
+  result.scans_not_used = settings.scans_not_used;
   result.relations_path = settings.relations_path;
   result.space = settings.space;
   result.objectives = settings.objectives;

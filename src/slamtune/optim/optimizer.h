@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "slamtune/io/map_image.h"
+#include "slamtune/io/scan_losses.h"
 #include "slamtune/optim/batch_evaluator.h"
 #include "slamtune/optim/evaluation_store.h"
 #include "slamtune/optim/objective_set.h"
@@ -28,6 +29,7 @@ namespace slamtune::optim {
 struct OptimizeSettings {
   std::string log_path;        // for the record and the --resume check
   std::vector<std::string> log_input;  // what was read from the log and chosen, for the report
+  io::ScanLosses scans_not_used;       // the log's scans no run maps, by why (io/scan_losses.h)
   std::string relations_path;  // empty without ground truth
   SearchSpace space = SearchSpace::PaperDefault();
   ObjectiveSet objectives;  // what NSGA-III minimises and the candidates are ranked by

@@ -195,6 +195,11 @@ void FirstScreen(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeF
 // Why this set was recommended (with any warning), then what to do and how.
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
+  // Scans of the recording no run maps: the verdict holds for the rest only.
+  for (const std::string& line : r.scans_not_used.LossLines()) {
+    const std::string what = "Not used" + line.substr(line.find(':'));
+    page.Paragraph(what + ". Every map and the recommendation are made without them.", "warning");
+  }
   RecommendationReading reading;
   if (r.Find("recommended") != nullptr) {
     reading = ReadRecommendation(r);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slamtune/report/front_end_json.h"
+#include "slamtune/report/scan_losses_json.h"
 
 namespace slamtune::report {
 
@@ -85,6 +86,7 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   j["search_space"] = SearchSpaceJson(result.space);
   j["log"] = result.log_path;
   j["input"] = result.log_input;
+  j["scans_not_used"] = ScanLossesJson(result.scans_not_used);
   j["relations"] = result.relations_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.relations_path);
   if (result.base_front_end) {
     nlohmann::json front_end = FrontEndEvidenceJson(result.base_front_end->evidence);

@@ -122,6 +122,28 @@ RunSummary LogRunner::Summary() const {
   return s;
 }
 
+io::KartoLaserRule LaserRuleOf(NodeMode mode) {
+  return mode == NodeMode::kSlamKarto ? io::KartoLaserRule::kSlamKarto : io::KartoLaserRule::kSlamToolbox;
+}
+
+io::ScanLosses RunLosses(const io::LaserLog& log, const RunSummary& summary, NodeMode mode) {
+  io::ScanLosses losses = io::ReadingLosses(log, LaserRuleOf(mode));
+  io::ScanLoss& readings = losses.Get(io::ScanLossKind::kWrongReadingCount);
+  readings.count = static_cast<std::size_t>(summary.scans_wrong_reading_count);  // as the run refused them
+  io::ScanLoss& node = losses.Get(io::ScanLossKind::kFilteredByNode);
+  node.count = static_cast<std::size_t>(summary.scans_refused_by_node_total());
+  node.why = fmt::format("scans the node does not hand to Karto (node mode {})", NameOf(mode));
+  for (int v = 1; v < kNumNodeVerdicts; ++v) {
+    node.by[NameOf(static_cast<NodeVerdict>(v))] = static_cast<std::size_t>(summary.scans_refused_by_node[v]);
+  }
+  io::ScanLoss& moved = losses.Get(io::ScanLossKind::kNotMoved);
+  moved.count = static_cast<std::size_t>(summary.scans_not_moved);
+  moved.why =
+      "scans Karto skips: the robot moved less than minimum_travel_distance and minimum_travel_heading "
+      "since the last scan it mapped";
+  return losses;
+}
+
 Pose2 LogRunner::OdometricSensorPose(const io::LaserScanRecord& record) const {
   return frame_.robot_poses ? Compose(record.robot_pose, frame_.offset) : record.laser_pose;
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "slamtune/io/laser_log.h"
+#include "slamtune/io/scan_losses.h"
 #include "slamtune/io/trajectory.h"
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/mapper.h"
@@ -133,6 +134,13 @@ class LogRunner {
 // laser's offset pose.
 LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperParams& params,
                                 const Pose2& offset = {});
+
+// Every scan of the log the run did not map, by why (io/scan_losses.h): what the recording
+// decides for the run's node (`mode`), the reading count as the engine refused it, the node's
+// filter by verdict and Karto's travel gate.
+io::ScanLosses RunLosses(const io::LaserLog& log, const RunSummary& summary, NodeMode mode);
+// The Karto laser rule of the node a mode runs (slam_karto's, or slam_toolbox's for its modes).
+io::KartoLaserRule LaserRuleOf(NodeMode mode);
 
 // The whole log in one call.
 struct RunResult {

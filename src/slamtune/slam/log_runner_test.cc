@@ -106,6 +106,39 @@ TEST(LogRunner, SynchronousNodeKeepsRotationsFromKarto) {
   EXPECT_GT(every.Summary().nodes, s.nodes);  // Karto's own heading test accepts the turns
 }
 
+// Every scan the run did not map, by why: the node's filter by verdict, Karto's travel gate, the
+// reading count as the engine refused it, beside what the recording lost.
+TEST(RunLosses, CountEveryScanNotMappedByWhy) {
+  auto log = std::make_shared<io::LaserLog>();
+  for (int i = 0; i < 5; ++i) log->scans.push_back(Record({1.0 * i, 0, 0}, i));
+  for (int i = 5; i < 15; ++i) log->scans.push_back(Record({4.0, 0, 0.3 * (i - 4)}, i));
+  log->scans[7].ranges.push_back(1.0);  // six readings: the laser expects five
+  log->recording.emplace();
+  log->recording->scans_unplaced = 2;
+  MapperParams async = MapperParams::Preset("slam_toolbox");
+  async.use_scan_matching = false;
+  async.minimum_travel_heading = 10.0;  // Karto keeps no turn on the spot
+  LogRunner runner(log, async);
+  runner.RunToEnd();
+  const io::ScanLosses losses = RunLosses(*log, runner.Summary(), async.node_mode);
+  EXPECT_EQ(losses.Find(io::ScanLossKind::kNoOdometry)->count, 2u);
+  EXPECT_EQ(losses.Find(io::ScanLossKind::kWrongReadingCount)->count, 1u);
+  EXPECT_EQ(losses.Find(io::ScanLossKind::kFilteredByNode)->count, 0u);
+  EXPECT_EQ(losses.Find(io::ScanLossKind::kNotMoved)->count, 9u);
+  EXPECT_EQ(losses.kinds.size(), static_cast<std::size_t>(io::kNumScanLossKinds));
+  MapperParams sync = MapperParams::Preset("slam_toolbox_sync");
+  sync.use_scan_matching = false;
+  LogRunner filtered(log, sync);
+  filtered.RunToEnd();
+  const io::ScanLosses node = RunLosses(*log, filtered.Summary(), sync.node_mode);
+  const io::ScanLoss& by_node = *node.Find(io::ScanLossKind::kFilteredByNode);
+  EXPECT_EQ(by_node.count, 13u);
+  EXPECT_EQ(by_node.by.at("warming_up"), 3u);
+  EXPECT_EQ(by_node.by.at("not_moved"), 10u);
+  EXPECT_EQ(by_node.by.at("throttled"), 0u);
+  EXPECT_THAT(by_node.why, ::testing::HasSubstr("node mode slam_toolbox_sync"));
+}
+
 TEST(LogRunner, EmptyLogIsAnInputError) {
   auto log = std::make_shared<io::LaserLog>();
   log->path = "empty.clf";
