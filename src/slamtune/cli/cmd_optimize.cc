@@ -259,7 +259,9 @@ optim::SearchSpace NamedOrFileSpace(const OptimizeArgs& args, const slam::Mapper
     return optim::SearchSpace::AroundBase(base.loop_search_maximum_distance, base.loop_match_minimum_chain_size);
   }
   if (args.space_file == "paper") return optim::SearchSpace::PaperDefault();
-  if (args.space_file == "front-end") return optim::WithLowerBounds(optim::SearchSpace::FrontEnd(base), args.space_lower);
+  if (args.space_file == "front-end") {
+    return optim::WithLowerBounds(optim::SearchSpace::FrontEnd(base), args.space_lower);
+  }
   return optim::SearchSpace::FromYaml(args.space_file);
 }
 

@@ -27,7 +27,8 @@ const Dimension* FindDimension(const SearchSpace& space, const std::string& name
 // dimension's lattice, then its upper bound, increasing, without repeats.
 std::vector<double> LadderOf(const Dimension& d, double base, double current) {
   std::vector<double> values;
-  for (const double factor : kLadder) values.push_back(d.ValueOf(std::ceil((base * factor - d.lower) / d.step) * d.step + d.lower));
+  for (const double factor : kLadder)
+    values.push_back(d.ValueOf(std::ceil((base * factor - d.lower) / d.step) * d.step + d.lower));
   values.push_back(d.upper);
   std::vector<double> out;
   for (const double v : values) {
@@ -71,7 +72,8 @@ std::string Value(const std::string& name, double v) {
 
 void FrontEndRepairOptions::Validate() const {
   if (margin_matches < 1) {
-    throw InputError(fmt::format("front-end repair: margin_matches = {} is out of range: must be >= 1", margin_matches));
+    throw InputError(
+        fmt::format("front-end repair: margin_matches = {} is out of range: must be >= 1", margin_matches));
   }
 }
 

@@ -42,8 +42,8 @@ struct FrontEndRepairOptions {
 struct FrontEndRepair {
   Assignment repaired;                         // the space's values that held (only those changed)
   std::map<std::string, double> lower_bounds;  // raised lower bounds of the space
-  std::vector<std::string> tries;  // one line per break: what broke and what held
-  int prefix_runs = 0;             // tries made
+  std::vector<std::string> tries;              // one line per break: what broke and what held
+  int prefix_runs = 0;                         // tries made
   double wall_s = 0.0;
 
   bool empty() const { return repaired.empty() && lower_bounds.empty(); }

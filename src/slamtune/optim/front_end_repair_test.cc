@@ -64,11 +64,12 @@ TEST(RepairFrontEnd, AJumpWidensTheWindowAndAWorkingRunTriesNothing) {
   const FrontEndRepair repair =
       RepairFrontEnd(jump.context, jump.choice.steps, jump.choice.evidence, SearchSpace::FrontEnd(jump.context.base));
   ASSERT_TRUE(repair.repaired.count("correlation_search_space_dimension")) << repair.Describe();
-  EXPECT_GT(repair.repaired.at("correlation_search_space_dimension"), jump.context.base.correlation_search_space_dimension);
+  EXPECT_GT(repair.repaired.at("correlation_search_space_dimension"),
+            jump.context.base.correlation_search_space_dimension);
   EXPECT_GT(repair.prefix_runs, 0);
   const Probed office = ProbeWorld("office");
-  const FrontEndRepair none =
-      RepairFrontEnd(office.context, office.choice.steps, office.choice.evidence, SearchSpace::FrontEnd(office.context.base));
+  const FrontEndRepair none = RepairFrontEnd(office.context, office.choice.steps, office.choice.evidence,
+                                             SearchSpace::FrontEnd(office.context.base));
   EXPECT_TRUE(none.empty());
   EXPECT_EQ(none.Describe(), "");
   EXPECT_EQ(none.prefix_runs, 0);
