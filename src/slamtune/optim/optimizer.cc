@@ -31,15 +31,24 @@ nlohmann::json PopulationJson(const std::vector<std::vector<double>>& x, const s
   return {{"x", x}, {"f", f}, {"rng", rng_state}};
 }
 
-// The initial population: N random decision vectors (integer genes integral) from `seed`,
-// evaluated as one batch.
-pagmo::population InitialPopulation(const pagmo::problem& problem, std::size_t n, unsigned seed) {
+// The decision vector of `a` in `space` (its value of each dimension, in order).
+pagmo::vector_double DecisionOf(const SearchSpace& space, const Assignment& a) {
+  pagmo::vector_double x;
+  for (const Dimension& d : space.dimensions) x.push_back(d.ValueOf(a.at(d.name)));
+  return x;
+}
+
+// The initial population: N random decision vectors (integer genes integral) from `seed`, the
+// first ones replaced by `seeds`, evaluated as one batch.
+pagmo::population InitialPopulation(const pagmo::problem& problem, const SearchSpace& space,
+                                    const std::vector<Assignment>& seeds, std::size_t n, unsigned seed) {
   pagmo::population pop(problem, 0u, seed);
   pagmo::detail::random_engine_type rng(seed);
   std::vector<pagmo::vector_double> xs;
   pagmo::vector_double flat;
   for (std::size_t i = 0; i < n; ++i) {
     xs.push_back(pagmo::random_decision_vector(problem, rng));
+    if (i < seeds.size()) xs.back() = DecisionOf(space, seeds[i]);
     flat.insert(flat.end(), xs.back().begin(), xs.back().end());
   }
   const pagmo::vector_double fs = problem.batch_fitness(flat);
@@ -83,10 +92,15 @@ void OptimizeSettings::Validate() const {
   if (population < 4) throw InputError(fmt::format("--population = {} is out of range: must be >= 4", population));
   if (generations < 1) throw InputError(fmt::format("--generations = {} is out of range: must be >= 1", generations));
   if (divisions < 1) throw InputError(fmt::format("--divisions = {} is out of range: must be >= 1", divisions));
+  for (const Assignment& individual : seeds) {
+    for (const Dimension& d : space.dimensions) {
+      if (!individual.count(d.name)) throw InputError("an initial individual has no value for " + d.name);
+    }
+  }
 }
 
 nlohmann::json OptimizeSettings::ToJson() const {
-  return {
+  nlohmann::json j = {
       {"log", log_path},
       {"relations", relations_path},
       {"space", space.Fingerprint()},
@@ -98,6 +112,8 @@ nlohmann::json OptimizeSettings::ToJson() const {
       {"engine", engine},
       {"objectives", objectives.name()},
       {"settling", {{"enabled", settling.enabled}, {"tolerance", settling.tolerance}, {"window", settling.window}}}};
+  if (!seeds.empty()) j["seeds"] = seeds;  // absent without: older folders compare equal
+  return j;
 }
 
 namespace {
@@ -281,7 +297,7 @@ void Generations::Report(unsigned gen, Show show) {
 
 void Generations::StartFromGenerationZero() {
   Announce(fmt::format("generation 0: {} random parameter sets", settings_.population));
-  pop_ = InitialPopulation(problem_, settings_.population, settings_.seed);
+  pop_ = InitialPopulation(problem_, settings_.space, settings_.seeds, settings_.population, settings_.seed);
   store_.PutGeneration(
       0, PopulationJson({pop_.get_x().begin(), pop_.get_x().end()}, {pop_.get_f().begin(), pop_.get_f().end()}, ""));
   last_generation_end_ = Clock::now();

@@ -20,20 +20,48 @@ slam::OccupancyGrid GridOf(const slam::LogRunner& runner, const slam::MapperPara
                                         slam::GridOptionsOf(params));
 }
 
+// Gives a run's correlative search the evaluation slots left idle (SlamEvaluationContext::
+// idle_slots) as threads, checked every few scans; the results do not depend on it.
+class IdleSlotThreads {
+ public:
+  IdleSlotThreads(const SlamEvaluationContext& context, const slam::MapperParams& params)
+      : idle_(context.idle_slots), params_(params) {}
+  void Update(slam::LogRunner& runner) {
+    if (!idle_ || ++steps_ % kEvery != 0) return;
+    const int want = 1 + std::max(0, idle_->load());
+    if (want == params_.matcher_threads) return;
+    params_.matcher_threads = want;
+    runner.SetParams(params_);
+  }
+
+ private:
+  static constexpr int kEvery = 16;
+  std::shared_ptr<const std::atomic<int>> idle_;
+  slam::MapperParams params_;
+  int steps_ = 0;
+};
+
 slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
   SLAMTUNE_CHECK(context.log != nullptr);
   slam::LogRunner runner(context.log, params, context.shared_work);
-  runner.RunToEnd();
+  IdleSlotThreads threads(context, params);
+  while (!runner.Done()) {
+    runner.Step();
+    threads.Update(runner);
+  }
   return runner;
 }
 
 // Steps `runner` until the end of the log or a break of its front end (slam::BreakWatch);
 // returns why it stopped early, or nullopt.
-std::optional<std::string> RunUntilBreak(slam::LogRunner& runner) {
+std::optional<std::string> RunUntilBreak(const SlamEvaluationContext& context, const slam::MapperParams& params,
+                                         slam::LogRunner& runner) {
   slam::BreakWatch watch;
+  IdleSlotThreads threads(context, params);
   std::size_t seen = 0;
   while (!runner.Done()) {
     runner.Step();
+    threads.Update(runner);
     const std::vector<slam::SequentialMatchStep>& steps = runner.sequential_matches();
     if (steps.size() == seen) continue;
     seen = steps.size();
@@ -131,7 +159,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   // The base configuration itself is always mapped to the end: every answer is judged against it.
   if (context.stop_broken_runs && run_out == nullptr && !(params == context.base)) {
     slam::LogRunner watched(context.log, params, context.shared_work);
-    if (std::optional<std::string> broke = RunUntilBreak(watched)) {
+    if (std::optional<std::string> broke = RunUntilBreak(context, params, watched)) {
       EvaluationRecord failed = EvaluationRecord::Failed("", assignment, *broke);
       failed.nodes = watched.mapper().counters().scans_processed;
       failed.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -4,6 +4,7 @@
 // (2009) errors of its trajectory. Pure and thread-safe: the context is read-only.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,10 @@ struct SlamEvaluationContext {
   // judged against it). Only meaningful when runs differ in their front end
   // (SearchSpace::VariesFrontEnd); it changes which runs are scored, so it is a setting.
   bool stop_broken_runs = false;
+  // Evaluation slots left idle by the evaluator (BatchEvaluator::idle_slots; null: none): a run
+  // gives its correlative search that many more threads while they are idle. Speed only: results
+  // do not depend on the thread count.
+  std::shared_ptr<const std::atomic<int>> idle_slots;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;

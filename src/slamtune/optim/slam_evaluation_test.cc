@@ -272,6 +272,23 @@ TEST(SlamEvaluation, ABrokenFrontEndStopsTheRunWhenAsked) {
   EXPECT_TRUE(SameBits(wide_watched.corner_pixels, wide_full.corner_pixels));
 }
 
+// A run that takes idle evaluation slots as threads of its correlative search gives the same bits.
+TEST(SlamEvaluation, IdleSlotsChangeNoResult) {
+  SlamEvaluationContext context;
+  context.log = WorldSlice("office", 400);
+  const Assignment wide = {{"correlation_search_space_dimension", 1.2}};
+  const EvaluationRecord alone = EvaluateSlam(context, wide);
+  auto idle = std::make_shared<std::atomic<int>>(1);
+  context.idle_slots = idle;
+  const EvaluationRecord helped = EvaluateSlam(context, wide);
+  ASSERT_EQ(alone.status, RunStatus::kOk);
+  EXPECT_TRUE(SameBits(helped.corner_pixels, alone.corner_pixels));
+  EXPECT_TRUE(SameBits(helped.occupied_ratio, alone.occupied_ratio));
+  EXPECT_TRUE(SameBits(helped.hits_in_free_cells, alone.hits_in_free_cells));
+  EXPECT_EQ(helped.loop_closures, alone.loop_closures);
+  EXPECT_EQ(helped.nodes, alone.nodes);
+}
+
 // The report's map of a parameter set carries one loop edge per loop closure of its evaluation,
 // both ends inside the map.
 TEST(SlamEvaluation, RenderedMapCarriesTheLoopClosuresAsEdges) {

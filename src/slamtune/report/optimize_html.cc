@@ -230,6 +230,7 @@ void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const Optim
   const optim::BaseFrontEnd& fe = *r.base_front_end;
   page.Heading(2, "Front end of the base configuration", "front-end");
   page.Paragraph(fe.choice);
+  if (!fe.informed_start.empty()) page.Paragraph(fe.informed_start);
   if (!f.front_end_map.empty()) {
     page.FigureGrid({{f.front_end_map, "where the base configuration's front end failed, on its map",
                       "Where it happened, on the base configuration's own map (front_end_map.png; click for the "
