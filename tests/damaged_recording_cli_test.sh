@@ -99,5 +99,11 @@ grep -q "^not used: whatever was recorded after the file's end: it ends without 
   fail "run --quiet does not say the recording was cut off: '$(cat "$work/first_chunk.err")'"
 [[ $(count "$work/run_first_chunk/run.json" scans_not_used cut_off count) == null ]] || fail "run.json: cut_off count"
 
+# 5. A rosbag2 folder whose metadata.yaml lists the same split twice: refused, naming both entries.
+cp -r "$tests/fixtures/recordings/office_db3" "$work/twice"
+sed -i 's/^    - office_db3_0.db3$/    - office_db3_0.db3\n    - office_db3_0.db3/' "$work/twice/metadata.yaml"
+expect_line "slamtune: error: $work/twice/metadata.yaml: relative_file_paths lists $work/twice/office_db3_0.db3 twice (entries 1 and 2, \"office_db3_0.db3\" and \"office_db3_0.db3\"): refused, as reading it twice would give every message twice; remove the repeated entry" \
+  "$bin" info "$work/twice"
+
 if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
 echo "damaged recordings: all checks passed"

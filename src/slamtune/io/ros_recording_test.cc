@@ -213,6 +213,22 @@ TEST(RosRecordingTest, AMissingSplitOrAnUnusableMetadataFileIsNamed) {
   EXPECT_EQ(Read(dir).error, dir + "/metadata.yaml: no rosbag2_bagfile_information map");
 }
 
+// A split listed twice, by the same name or another that finds the same file, is refused before
+// anything is read: read twice, every message would count twice.
+TEST(RosRecordingTest, ASplitListedTwiceIsRefused) {
+  const std::string dir = FreshTempDir("split_twice");
+  WriteFile(dir + "/split_twice_0.mcap", McapSplit(0, 100, "-0"));
+  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap", "split_twice_0.mcap"}));
+  EXPECT_EQ(Read(dir).error, dir + "/metadata.yaml: relative_file_paths lists " + dir +
+                                 "/split_twice_0.mcap twice (entries 1 and 2, \"split_twice_0.mcap\" and "
+                                 "\"split_twice_0.mcap\"): refused, as reading it twice would give every message "
+                                 "twice; remove the repeated entry");
+  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap", "split_twice/split_twice_0.mcap"}));
+  EXPECT_THAT(Read(dir).error, HasSubstr("twice (entries 1 and 2"));
+  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap"}));
+  EXPECT_EQ(Read(dir).error, "");
+}
+
 TEST(RosRecordingTest, AnIncompleteSplitMakesTheBagIncompleteAndSaysWhich) {
   const std::string dir = FreshTempDir("incomplete_split");
   WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"incomplete_split_0.mcap", "incomplete_split_1.mcap"}));

@@ -1,5 +1,6 @@
 #include "slamtune/io/rosbag2_folder.h"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -87,13 +88,30 @@ ContainerSummary ReadRosbag2Folder(const std::string& folder, const ContainerRea
     sink.set_zstd_messages(true);
     summary.message_compression = "zstd";
   }
-  std::string incomplete;  // endings of the splits that did not end complete
-  for (const std::string& relative : metadata.relative_file_paths) {
+  // Every split found before any is read; one file listed twice (by the same or another name)
+  // would deliver each of its messages twice.
+  std::vector<std::string> paths;
+  for (std::size_t k = 0; k < metadata.relative_file_paths.size(); ++k) {
+    const std::string& relative = metadata.relative_file_paths[k];
     const std::string path = FindSplit(folder, relative, metadata);
     if (path.empty()) {
       throw InputError((fs::path(folder) / relative).string(), 0,
                        "missing: listed in metadata.yaml's relative_file_paths, but there is no such file");
     }
+    for (std::size_t j = 0; j < paths.size(); ++j) {
+      std::error_code error;
+      if (paths[j] == path || fs::equivalent(paths[j], path, error)) {
+        throw InputError((fs::path(folder) / kRosbag2MetadataFile).string(), 0,
+                         fmt::format("relative_file_paths lists {} twice (entries {} and {}, \"{}\" and \"{}\"): "
+                                     "refused, as reading it twice would give every message twice; remove the "
+                                     "repeated entry",
+                                     path, j + 1, k + 1, metadata.relative_file_paths[j], relative));
+      }
+    }
+    paths.push_back(path);
+  }
+  std::string incomplete;  // endings of the splits that did not end complete
+  for (const std::string& path : paths) {
     const bool complete_before = summary.complete;
     summary.complete = true;
     ReadRecordingFileInto(path, options, &sink);
