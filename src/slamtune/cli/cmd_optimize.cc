@@ -55,6 +55,10 @@ struct OptimizeArgs {
   // front end: the space's raised lower bounds and the repaired configuration; kept for --resume.
   std::map<std::string, double> space_lower;
   std::vector<optim::Assignment> initial;
+  // The space was chosen by a run of the base configuration (no --space, no --vary): what that
+  // run found of the front end goes into the report and results.json (base_front_end), and a
+  // resumed run makes it again, so that it writes what the uninterrupted one writes.
+  bool space_probed = false;
   TuningRunOptions run;
   ResultNeutralOptions result_neutral;  // the options that may accompany --resume
 };
@@ -81,6 +85,7 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"seed", a.seed},
           {"objectives", a.objectives},
           {"front_end_repair", {{"lower_bounds", a.space_lower}, {"initial", a.initial}}},
+          {"space_probed", a.space_probed},
           {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
           {"settling",
            {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
@@ -163,6 +168,7 @@ void PrepareResume(const RunFolder& folder, const CLI::App& app, OptimizeArgs& a
     args.generations = inv->at("generations");
     args.divisions = inv->at("divisions");
     args.seed = inv->at("seed");
+    args.space_probed = inv->value("space_probed", false);
     if (inv->contains("front_end_repair")) {
       const auto& repair = inv->at("front_end_repair");
       args.space_lower = repair.at("lower_bounds").get<std::map<std::string, double>>();
@@ -227,6 +233,7 @@ std::optional<optim::SearchSpace> FlagSpace(const OptimizeArgs& args) {
 std::shared_ptr<optim::SlamEvaluationContext> ProbeDefaultSpace(const TuningInputs& inputs, RunFolder& folder,
                                                                 OptimizeArgs& args, OptimizationPlan& plan) {
   folder.EnsureLocked();
+  args.space_probed = true;
   auto probed = MakeEvaluationContext(inputs, {}, args.run);
   optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
   args.space_file = choice.space_name();
@@ -300,6 +307,16 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   if (args.space_file.empty() && !flag_space && !args.around_base_without_steps) {
     probed = ProbeDefaultSpace(inputs, folder, args, plan);
+  } else if (args.space_probed && !flag_space) {
+    // Resuming a run whose space the base's run chose: that run again, for what it found of the
+    // front end; the space and the informed start stay the recorded ones.
+    const std::string space_file = args.space_file;
+    const std::map<std::string, double> space_lower = args.space_lower;
+    const std::vector<optim::Assignment> initial = args.initial;
+    probed = ProbeDefaultSpace(inputs, folder, args, plan);
+    args.space_file = space_file;
+    args.space_lower = space_lower;
+    args.initial = initial;
   }
   settings.space = flag_space ? *flag_space : NamedOrFileSpace(args, inputs.base);
   if (!flag_space) settings.seeds = args.initial;
