@@ -10,7 +10,9 @@
 namespace slamtune::cli {
 
 void LogInputOptions::AddTo(CLI::App& app, MaxScans max_scans_option) {
-  app.add_flag("--lenient", lenient, "Skip malformed records or messages (and count them) instead of failing");
+  app.add_flag("--lenient", lenient,
+               "Skip malformed records or messages (and count them) instead of failing; a recording cut off inside "
+               "a record reads up to its last whole record without it");
   app.add_option("--no-return", no_return,
                  "Readings >= this value (m) are no-returns; overrides the log's own (PARAM, range_max, detected)");
   if (max_scans_option == MaxScans::kOffer) {

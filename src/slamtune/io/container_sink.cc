@@ -1,5 +1,7 @@
 #include "slamtune/io/container_sink.h"
 
+#include <fmt/format.h>
+
 #include "slamtune/common/error.h"
 #include "slamtune/io/decompression.h"
 
@@ -43,11 +45,19 @@ void ContainerSink::Deliver(RecordedMessage& message) {
   message.data = stored;  // not left pointing at `decompressed`
 }
 
-void ContainerSink::DropTail(std::uint64_t bytes, const std::string& reason) {
+void ContainerSink::DropTail(std::uint64_t bytes, std::uint64_t file_bytes, const std::string& reason, TailKind kind) {
   summary_->dropped_tail_bytes += bytes;
   if (summary_->dropped_tail_reason.empty()) summary_->dropped_tail_reason = reason;
   summary_->complete = false;
-  summary_->ending = "corrupt or truncated tail dropped (--lenient): " + reason;
+  const double share = file_bytes > 0 ? 100.0 * static_cast<double>(bytes) / static_cast<double>(file_bytes) : 0.0;
+  if (file_bytes == 0) {  // a database's rows
+    summary_->ending = "a corrupt row: read up to it (--lenient) (" + reason + ")";
+    return;
+  }
+  const char* what = kind == TailKind::kCutOff ? "cut off inside a record: read up to its last whole record"
+                                               : "a corrupt record: read up to it (--lenient)";
+  summary_->ending =
+      fmt::format("{}, the last {} bytes ({:.1f} % of the file) not read ({})", what, bytes, share, reason);
 }
 
 }  // namespace slamtune::io

@@ -41,8 +41,11 @@ class ContainerSink {
   // from the reader: such an exception must pass through unchanged, even with lenient reading.
   bool in_callback() const { return in_callback_; }
 
-  // Lenient reading ended a file `bytes` before its end because of `reason`.
-  void DropTail(std::uint64_t bytes, const std::string& reason);
+  // Reading ended a file of `file_bytes` bytes `bytes` before its end because of `reason`: the
+  // file ends inside a record (cut off, read up to its last whole record whether lenient or
+  // not), or a record is corrupt (--lenient).
+  enum class TailKind { kCutOff, kCorrupt };
+  void DropTail(std::uint64_t bytes, std::uint64_t file_bytes, const std::string& reason, TailKind kind);
 
  private:
   using TopicKey = std::tuple<std::string, std::string, MessageSerialization>;

@@ -111,7 +111,7 @@ struct RecordingInfo {
   std::vector<std::string> files;
   bool complete = true;               // the container's end marker was found
   std::string ending;                 // how the data ended
-  std::uint64_t dropped_tail_bytes = 0;  // --lenient: a corrupt or truncated tail not read
+  std::uint64_t dropped_tail_bytes = 0;  // a tail cut off inside a record (or corrupt, --lenient), not read
   std::string dropped_tail_reason;
   struct Topic {
     std::string name, type;

@@ -56,6 +56,15 @@ Record NextRecord(ByteCursor& cursor) {
   return record;
 }
 
+bool EndsInsideRecord(std::span<const std::uint8_t> bytes, std::uint64_t offset) {
+  if (offset > bytes.size()) return true;
+  const std::uint64_t remaining = bytes.size() - offset;
+  if (remaining < kRecordFraming) return true;
+  std::uint64_t length = 0;
+  for (int i = 8; i >= 1; --i) length = (length << 8) | bytes[offset + static_cast<std::uint64_t>(i)];
+  return length > remaining - kRecordFraming;
+}
+
 Item ParseItem(const Record& record, std::string_view file, std::string_view frame) {
   Item item;
   item.offset = record.offset;

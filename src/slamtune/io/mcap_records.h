@@ -43,6 +43,10 @@ struct Record {
 // The record at the cursor; InputError when its framing or content runs past the end.
 Record NextRecord(ByteCursor& cursor);
 
+// Whether the data ends inside the record at `offset` (its opcode and length, or the content
+// they declare, run past the end): the file was cut off there.
+bool EndsInsideRecord(std::span<const std::uint8_t> bytes, std::uint64_t offset);
+
 // A Schema, Channel or Message record as read, before it is checked against what is declared;
 // any other record is kSkipped or kUnknown.
 struct Item {

@@ -15,13 +15,15 @@
 // Messages are handed to a callback one at a time in file order (rosbag2 SQLite3: ORDER BY
 // timestamp, id), so a recording of any size is read in one pass without holding it whole.
 //
-// Errors: malformed data (truncated record or chunk, bad CRC, unknown compression, a message on
-// an undeclared channel / connection, a Channel whose schema is missing, an unreadable or
-// corrupt database) throw InputError "FILE: WHERE: what", WHERE naming the byte offset (or the
-// database row), e.g. "drive.mcap: byte 18213 (chunk): zstd: Data corruption detected".
-// With ContainerReadOptions::lenient a corrupt or truncated *tail* ends the read there
-// instead: everything before it is delivered and the summary says what was dropped
-// (ContainerSummary::dropped_tail_bytes, ending). Never a crash, whatever the bytes.
+// Errors: malformed data (bad CRC, unknown compression, a message on an undeclared channel /
+// connection, a Channel whose schema is missing, an unreadable or corrupt database) throw
+// InputError "FILE: WHERE: what (--lenient reads the recording up to this record)", WHERE naming
+// the byte offset (or the database row), e.g. "drive.mcap: byte 18213 (chunk): zstd: Data
+// corruption detected". A file that ends inside a record (cut off by a crash or a power loss: the
+// record's length runs past the end) is read up to its last whole record, lenient or not; with
+// ContainerReadOptions::lenient a corrupt record ends the read there too. Either way everything
+// before it is delivered and the summary says what was not read (ContainerSummary::
+// dropped_tail_bytes, ending). Never a crash, whatever the bytes.
 #pragma once
 
 #include <cstddef>
@@ -85,14 +87,14 @@ struct ContainerSummary {
   // a complete record (recording cut off?)", "index", "truncated tail dropped (--lenient)", ...
   std::string ending;
   bool complete = true;                  // false when the format's end marker is missing
-  std::uint64_t dropped_tail_bytes = 0;  // lenient: bytes after the last good record, not read
-  std::string dropped_tail_reason;       // lenient: what was wrong there
+  std::uint64_t dropped_tail_bytes = 0;  // bytes from the record cut off (or corrupt, lenient) on, not read
+  std::string dropped_tail_reason;       // what was wrong there
   std::string profile;                   // MCAP header profile ("ros2"), ROS 1: "ros1"
   std::string ros_distro;                // when the file says (MCAP metadata, db3 schema table)
 };
 
 struct ContainerReadOptions {
-  bool lenient = false;     // a corrupt or truncated tail ends the read (counted) instead of failing
+  bool lenient = false;     // a corrupt record ends the read (counted) instead of failing
   bool verify_crc = true;   // check MCAP chunk CRCs that are non-zero
 };
 

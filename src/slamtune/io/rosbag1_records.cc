@@ -1,6 +1,7 @@
 #include "slamtune/io/rosbag1_records.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace slamtune::io::rosbag1 {
 namespace {
@@ -119,6 +120,19 @@ Record NextRecord(ByteCursor& cursor) {
   record.data_offset = cursor.offset();
   record.data = cursor.Bytes(data_length, OpName(record.op));
   return record;
+}
+
+bool EndsInsideRecord(std::span<const std::uint8_t> bytes, std::uint64_t offset) {
+  const auto u32_at = [&](std::uint64_t at) -> std::optional<std::uint64_t> {
+    if (at > bytes.size() || bytes.size() - at < 4) return std::nullopt;
+    return std::uint64_t{bytes[at]} | std::uint64_t{bytes[at + 1]} << 8 | std::uint64_t{bytes[at + 2]} << 16 |
+           std::uint64_t{bytes[at + 3]} << 24;
+  };
+  const std::optional<std::uint64_t> header_length = u32_at(offset);
+  if (!header_length) return true;
+  const std::uint64_t data_length_at = offset + 4 + *header_length;
+  const std::optional<std::uint64_t> data_length = u32_at(data_length_at);
+  return !data_length || *data_length > bytes.size() - data_length_at - 4;
 }
 
 Item ParseItem(const Record& record, const ByteCursor& cursor) {

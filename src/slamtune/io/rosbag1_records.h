@@ -51,6 +51,10 @@ struct Record {
 // The record at the cursor; InputError when it runs past the end or has no one-byte op.
 Record NextRecord(ByteCursor& cursor);
 
+// Whether the data ends inside the record at `offset` (its header length, header, data length
+// or data run past the end): the file was cut off there.
+bool EndsInsideRecord(std::span<const std::uint8_t> bytes, std::uint64_t offset);
+
 // Reads the header fields of one record; a missing field or one of the wrong size throws
 // InputError at the record's offset, as does Fail.
 class FieldReader {

@@ -219,7 +219,7 @@ void SqliteBagReader::ReadMessages() {
     }
   } catch (const InputError& e) {
     if (!options_.lenient || sink_->in_callback()) throw;
-    sink_->DropTail(0, e.what());
+    sink_->DropTail(0, 0, e.what(), ContainerSink::TailKind::kCorrupt);
     return;
   }
   summary.ending = "end of the messages table";

@@ -105,11 +105,8 @@ ScanLosses ReadingLosses(const LaserLog& log, std::optional<KartoLaserRule> rule
   if (r != nullptr && r->dropped_tail_bytes > 0) {
     cut.count.reset();
     cut.bytes = r->dropped_tail_bytes;
-    cut.why = fmt::format(
-        "the scans of the last {} bytes: the recording is cut off inside a record there, read up "
-        "to its last whole record",
-        r->dropped_tail_bytes);
-    cut.first = r->dropped_tail_reason;
+    cut.why = fmt::format("the scans in the last {} bytes of the recording (how many is not known): {}",
+                          r->dropped_tail_bytes, r->ending);
   } else if (r != nullptr && !r->complete) {
     cut.count.reset();
     cut.why = fmt::format(

@@ -35,6 +35,11 @@ TEST(ScanLosses, EachReadingKindSaysHowManyAndTheFirst) {
   r.malformed_examples = {"drive.bag: byte 9000: /scan: LaserScan has 6 ranges but its angles give 5 beams"};
   r.dropped_tail_bytes = 5785;
   r.dropped_tail_reason = "drive.bag: byte 94215 (Chunk record): content length 42853 runs past the end";
+  r.complete = false;
+  r.ending =
+      "cut off inside a record: read up to its last whole record, the last 5785 bytes (5.8 % of the file) "
+      "not read (" +
+      r.dropped_tail_reason + ")";
   log.beams.slam_karto = {181, 7};
   log.beams.slam_toolbox = {181, 5};
   log.beams.policy = "node";
@@ -46,18 +51,19 @@ TEST(ScanLosses, EachReadingKindSaysHowManyAndTheFirst) {
   EXPECT_EQ(losses.Find(ScanLossKind::kWrongReadingCount)->count, 5u);  // slam_toolbox's
   EXPECT_EQ(losses.Find(ScanLossKind::kWrongReadingCount)->by.at("slam_karto"), 7u);
   EXPECT_EQ(losses.counted(), 18u);
-  EXPECT_THAT(losses.LossLines(),
-              ::testing::ElementsAre(
-                  "not used: 11 scans without odometry at their stamp (21 tf transforms refused: NaN, inf or a bad "
-                  "rotation, or a bad frame id) (first: scan 40 at 104.025000 s: odom -> base_link at 104.025000 s: "
-                  "no sample for 1.100 s)",
-                  "not used: 2 malformed scans, skipped (--lenient) (first: drive.bag: byte 9000: /scan: LaserScan "
-                  "has 6 ranges but its angles give 5 beams)",
-                  "not used: the scans of the last 5785 bytes: the recording is cut off inside a record there, read "
-                  "up to its last whole record (first: drive.bag: byte 94215 (Chunk record): content length 42853 "
-                  "runs past the end)",
-                  "not used: 5 scans whose reading count differs from what slam_toolbox's Karto laser expects: the "
-                  "node drops them (make the driver publish a fixed count)"));
+  EXPECT_THAT(
+      losses.LossLines(),
+      ::testing::ElementsAre(
+          "not used: 11 scans without odometry at their stamp (21 tf transforms refused: NaN, inf or a bad "
+          "rotation, or a bad frame id) (first: scan 40 at 104.025000 s: odom -> base_link at 104.025000 s: "
+          "no sample for 1.100 s)",
+          "not used: 2 malformed scans, skipped (--lenient) (first: drive.bag: byte 9000: /scan: LaserScan "
+          "has 6 ranges but its angles give 5 beams)",
+          "not used: the scans in the last 5785 bytes of the recording (how many is not known): cut off inside a "
+          "record: read up to its last whole record, the last 5785 bytes (5.8 % of the file) not read "
+          "(drive.bag: byte 94215 (Chunk record): content length 42853 runs past the end)",
+          "not used: 5 scans whose reading count differs from what slam_toolbox's Karto laser expects: the "
+          "node drops them (make the driver publish a fixed count)"));
   // Without a node: the larger count; with --beams per-geometry the engine keeps them.
   EXPECT_EQ(ReadingLosses(log).Find(ScanLossKind::kWrongReadingCount)->count, 7u);
   log.beams.policy = "per-geometry";
