@@ -13,12 +13,12 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 
-# bag NAME PYTHON: writes $work/NAME.bag from a Drive `b` changed by PYTHON.
+# bag NAME PYTHON [DRIVE_ARGS]: writes $work/NAME.bag from a Drive(DRIVE_ARGS) `b` changed by PYTHON.
 bag() {
   PYTHONPATH="$tests" python3 - "$work/$1.bag" <<EOF || fail "could not write $1.bag"
 import math, sys
 import ros1_bag
-b = ros1_bag.Drive()
+b = ros1_bag.Drive(${3:-})
 b.static_tf("base_link", "laser", x=0.1)
 $2
 b.write(sys.argv[1])
@@ -98,6 +98,26 @@ EOF2
 grep -q "^not used: whatever was recorded after the file's end: it ends without its end marker" "$work/first_chunk.err" ||
   fail "run --quiet does not say the recording was cut off: '$(cat "$work/first_chunk.err")'"
 [[ $(count "$work/run_first_chunk/run.json" scans_not_used cut_off count) == null ]] || fail "run.json: cut_off count"
+
+# 3. Impossible LaserScan limits. range_max NaN (or 0): read with no upper limit, and said with
+# the first scan, the count and the rule by info and check.
+rule="read with no upper limit: inf and NaN readings are no-returns, every other reading above range_min is a range, and the range threshold is the node's own (--no-return M sets a limit)"
+for v in 'float("nan")' 0.0; do
+  bag badmax '' "range_max=$v"
+  "$bin" info "$work/badmax.bag" > "$work/info_badmax.txt" 2>&1 || fail "info on range_max $v: $(cat "$work/info_badmax.txt")"
+  grep -qF "LaserScan range_max is NaN, infinite, 0 or negative in 100 of 100 scans (first: scan 0 at 100.025000 s: range_max $([[ $v == 0.0 ]] && echo 0 || echo nan)): $rule" \
+    "$work/info_badmax.txt" || fail "info does not say range_max $v is unusable: $(cat "$work/info_badmax.txt")"
+  grep -q "^no-return value  *inf m (rule: none: LaserScan range_max is NaN, infinite, 0 or negative)" "$work/info_badmax.txt" ||
+    fail "info's no-return rule for range_max $v: $(grep no-return "$work/info_badmax.txt")"
+  "$bin" check "$work/badmax.bag" > "$work/check_badmax.txt" || fail "check on range_max $v exited $?"
+  grep -qF "problem bad_range_max: LaserScan range_max is NaN, infinite, 0 or negative in 100 of 100 scans" \
+    "$work/check_badmax.txt" || fail "check does not report range_max $v: $(grep -E '^(problem|verdict)' "$work/check_badmax.txt")"
+done
+# range_min above range_max: no reading can be a range; the scans are malformed (an error that
+# names --lenient; with it, skipped and counted).
+bag minmax '' 'range_min=40.0'
+expect_line "slamtune: error: $work/minmax.bag: byte 4867: /scan: LaserScan range_min 40 m exceeds range_max 30 m: no reading can be a range (--lenient skips such scans and counts them)" \
+  "$bin" info "$work/minmax.bag"
 
 # 5. A rosbag2 folder whose metadata.yaml lists the same split twice: refused, naming both entries.
 cp -r "$tests/fixtures/recordings/office_db3" "$work/twice"

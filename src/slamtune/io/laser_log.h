@@ -106,6 +106,11 @@ struct OdomRecord {
 };
 
 // Where the scans of a ROS recording came from and what could not be used (recording_log.h).
+// The rule for a LaserScan whose range_max is NaN, infinite, 0 or negative, as every output says it.
+inline constexpr const char* kBadRangeMaxRule =
+    "read with no upper limit: inf and NaN readings are no-returns, every other reading above range_min is a range, "
+    "and the range threshold is the node's own (--no-return M sets a limit)";
+
 struct RecordingInfo {
   std::string format;                 // "MCAP", "rosbag2 SQLite3", "ROS 1 bag v2.0"
   std::vector<std::string> files;
@@ -135,6 +140,11 @@ struct RecordingInfo {
   std::size_t scans_malformed = 0;             // --lenient: undecodable or inconsistent, not used
   std::vector<std::string> malformed_examples;
   std::size_t scans_other_frame = 0;           // frame_id differs from the first scan's (used)
+  // Scans whose range_max is NaN, infinite, 0 or negative: read with no upper limit (inf and NaN
+  // readings are no-returns, every other reading above range_min is a range); the first, e.g.
+  // "scan 0 at 100.000000 s: range_max nan".
+  std::size_t scans_bad_range_max = 0;
+  std::string bad_range_max_example;
   std::size_t messages_undecodable = 0;        // --lenient: tf / odometry messages skipped
   std::vector<std::string> tf_edges;           // "parent -> child (static)" / "(N samples)"
   std::size_t tf_parent_conflicts = 0;         // transforms giving a frame a second parent, ignored

@@ -303,6 +303,12 @@ void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
                     r.scan_messages, r.unplaced_examples.empty() ? "-" : r.unplaced_examples.front()),
         r.scans_unplaced);
   }
+  if (r.scans_bad_range_max > 0) {
+    Problem(report, ProblemKind::kBadRangeMax,
+            fmt::format("LaserScan range_max is NaN, infinite, 0 or negative in {} of {} scans (first: {}): {}",
+                        r.scans_bad_range_max, r.scan_messages, r.bad_range_max_example, kBadRangeMaxRule),
+            r.scans_bad_range_max);
+  }
   if (r.scans_malformed + r.messages_undecodable > 0) {
     Problem(report, ProblemKind::kMalformedMessages,
             fmt::format("{} malformed scans and {} undecodable tf / odometry messages (first: {})", r.scans_malformed,
@@ -420,6 +426,7 @@ const char* ProblemKindName(ProblemKind kind) {
     case ProblemKind::kLaserCountMismatch: return "laser_count_mismatch";
     case ProblemKind::kRangeMaxTooLow: return "range_max_too_low";
     case ProblemKind::kRangeMaxTooHigh: return "range_max_too_high";
+    case ProblemKind::kBadRangeMax: return "bad_range_max";
     case ProblemKind::kMostlyNoReturns: return "mostly_no_returns";
     case ProblemKind::kOdometryJump: return "odometry_jump";
     case ProblemKind::kOdometryStall: return "odometry_stall";

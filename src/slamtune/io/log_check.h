@@ -57,6 +57,7 @@ enum class ProblemKind {
   kLaserCountMismatch,  // a node's Karto laser expects another reading count than the first scan has
   kRangeMaxTooLow,
   kRangeMaxTooHigh,
+  kBadRangeMax,     // range_max NaN, infinite, 0 or negative: read with no upper limit
   kMostlyNoReturns,
   kOdometryJump,
   kOdometryStall,

@@ -170,6 +170,10 @@ std::vector<InputLine> InputLines(const LaserLog& log) {
                       "it)",
                       loop));
     }
+    if (r.scans_bad_range_max > 0) {
+      add(fmt::format("note: LaserScan range_max is NaN, infinite, 0 or negative in {} of {} scans (first: {}): {}",
+                      r.scans_bad_range_max, r.scan_messages, r.bad_range_max_example, kBadRangeMaxRule));
+    }
     if (r.scans_other_frame > 0) {
       add(fmt::format("note: {} scans name another frame than {} (read as {})", r.scans_other_frame, r.laser_frame,
                       r.laser_frame));

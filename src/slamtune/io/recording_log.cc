@@ -249,6 +249,10 @@ std::string GeometryProblem(const LaserScanMessage& m) {
     return fmt::format("LaserScan angles {} .. {} step {} rad describe no beams", m.angle_min, m.angle_max,
                        m.angle_increment);
   }
+  if (std::isfinite(m.range_max) && m.range_max > 0.0f && std::isfinite(m.range_min) && m.range_min > m.range_max) {
+    return fmt::format("LaserScan range_min {} m exceeds range_max {} m: no reading can be a range", m.range_min,
+                       m.range_max);
+  }
   if (n == beams || (closes_circle && n + 1 == beams)) return "";
   return fmt::format("LaserScan has {} ranges but its angles ({} .. {} rad, step {}) give {} beams", n, m.angle_min,
                      m.angle_max, m.angle_increment, beams);
@@ -386,12 +390,16 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
     const LaserScanMessage& m = scan.message;
     if (const std::string problem = GeometryProblem(m); !problem.empty()) {
       const std::string where = fmt::format("{}: {}: {}", scan.location, info.scan_topic, problem);
-      if (!options.lenient) throw InputError(contents.path, 0, where);
+      if (!options.lenient) throw InputError(contents.path, 0, where + " (--lenient skips such scans and counts them)");
       ++info.scans_malformed;
       Example(&info.malformed_examples, where);
       continue;
     }
     if (NormalizeFrameId(m.header.frame_id) != info.laser_frame) ++info.scans_other_frame;
+    if (!(std::isfinite(m.range_max) && m.range_max > 0.0f) && info.scans_bad_range_max++ == 0) {
+      info.bad_range_max_example =
+          fmt::format("scan {} at {}: range_max {}", k, Seconds(m.header.stamp_ns), m.range_max);
+    }
     const TfLookup pose = source.tf->Lookup(info.odom_frame, info.base_frame, m.header.stamp_ns, choice.max_odom_gap_s);
     if (!pose.transform) {
       ++info.scans_unplaced;
@@ -424,7 +432,9 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
     log.no_return_rule = "--no-return";
   } else {
     log.no_return_value = log.scans.front().max_range;
-    log.no_return_rule = "LaserScan range_max";
+    log.no_return_rule = std::isfinite(log.no_return_value)
+                             ? "LaserScan range_max"
+                             : "none: LaserScan range_max is NaN, infinite, 0 or negative";
   }
   FillOdometry(contents, source, &log);
   return log;

@@ -9,7 +9,9 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/common/testing/error_message.h"
+#include "slamtune/io/log_check.h"
 #include "slamtune/io/log_reader.h"
+#include "slamtune/io/log_summary.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
@@ -213,6 +215,43 @@ TEST(RecordingToLog, RangesThatDisagreeWithTheAnglesAreAnErrorOrSkippedWhenLenie
   EXPECT_EQ(log.recording->scans_malformed, 1u);
 }
 
+// range_max NaN, infinite, 0 or negative: read with no upper limit, counted with the first scan,
+// and said with the rule by `info` and `check` (bad_range_max).
+TEST(RecordingToLog, AnUnusableRangeMaxIsReadWithNoUpperLimitAndSaid) {
+  RecordingContents c = Drive();
+  c.scans["/scan"][0].message.range_max = std::numeric_limits<float>::quiet_NaN();
+  c.scans["/scan"][2].message.range_max = 0.0f;
+  c.scans["/scan"][5].message.range_max = -1.0f;
+  c.scans["/scan"][0].message.ranges[1] = 50.0f;  // above every range_max of the others: a range here
+  const LaserLog log = RecordingToLog(c, {});
+  ASSERT_EQ(log.scans.size(), 9u);
+  EXPECT_EQ(log.recording->scans_bad_range_max, 3u);
+  EXPECT_EQ(log.recording->bad_range_max_example, "scan 0 at 0.100000 s: range_max nan");
+  EXPECT_TRUE(std::isinf(log.scans[0].max_range));
+  EXPECT_EQ(log.scans[0].no_returns, 0u);
+  EXPECT_EQ(log.no_return_rule, "none: LaserScan range_max is NaN, infinite, 0 or negative");
+  EXPECT_THAT(DescribeLogInput(log),
+              ::testing::Contains("note: LaserScan range_max is NaN, infinite, 0 or negative in 3 of 9 scans (first: "
+                                  "scan 0 at 0.100000 s: range_max nan): " +
+                                  std::string(kBadRangeMaxRule)));
+  const CheckReport report = CheckRecordingContents(c, {});
+  EXPECT_TRUE(report.Has(ProblemKind::kBadRangeMax));
+}
+
+// range_min above range_max leaves no reading that can be a range: the scan is malformed (an
+// error naming it; skipped and counted with --lenient).
+TEST(RecordingToLog, ARangeMinAboveRangeMaxIsMalformed) {
+  RecordingContents c = Drive();
+  c.scans["/scan"][4].message.range_min = 12.0f;
+  EXPECT_THAT(ErrorMessageOf([&] { RecordingToLog(c, {}); }),
+              ::testing::HasSubstr("drive.mcap: byte 0: /scan: LaserScan range_min 12 m exceeds range_max 10 m"));
+  LogReadOptions lenient;
+  lenient.lenient = true;
+  const LaserLog log = RecordingToLog(c, lenient);
+  EXPECT_EQ(log.scans.size(), 8u);
+  EXPECT_EQ(log.recording->scans_malformed, 1u);
+}
+
 TEST(RecordingToLog, A360LaserWhoseLastAngleClosesTheCircleIsAccepted) {
   RecordingContents c = Drive();
   for (RecordedScan& s : c.scans["/scan"]) {
@@ -236,7 +275,7 @@ TEST(RecordingToLog, AnglesInDegreesAreAnErrorNamingTheMessage) {
   c.scans["/scan"][2].location = "byte 4096";
   EXPECT_EQ(ErrorMessageOf([&] { RecordingToLog(c, {}); }),
             "drive.mcap: byte 4096: /scan: LaserScan angles -90 .. 90 rad (step 1) go beyond a full turn: angles "
-            "must be radians (written in degrees?)");
+            "must be radians (written in degrees?) (--lenient skips such scans and counts them)");
 }
 
 TEST(RecordingToLog, AFieldOfViewOfMoreThanAFullTurnIsAnError) {
@@ -247,7 +286,7 @@ TEST(RecordingToLog, AFieldOfViewOfMoreThanAFullTurnIsAnError) {
   m.angle_increment = 25.0f;
   EXPECT_EQ(ErrorMessageOf([&] { RecordingToLog(c, {}); }),
             "drive.mcap: byte 0: /scan: LaserScan angles -3 .. 97 rad (step 25) go beyond a full turn: angles must "
-            "be radians (written in degrees?)");
+            "be radians (written in degrees?) (--lenient skips such scans and counts them)");
 }
 
 TEST(RecordingToLog, OdometryTopicIsInterpolatedLikeTf) {
