@@ -119,6 +119,17 @@ bag minmax '' 'range_min=40.0'
 expect_line "slamtune: error: $work/minmax.bag: byte 4867: /scan: LaserScan range_min 40 m exceeds range_max 30 m: no reading can be a range (--lenient skips such scans and counts them)" \
   "$bin" info "$work/minmax.bag"
 
+# 4. Not one reading a range (range_max 0.5 m in a room of 12 x 8 m: every reading a no-return):
+# run and optimize refuse it in one line; check reports it.
+bag noranges '' 'range_min=0.0, range_max=0.5'
+noranges="slamtune: error: $work/noranges.bag: not one of the 18100 readings of the 100 scans is a range (each is inf, NaN, negative, at or above range_max 0.5 m or at or below range_min): nothing to map"
+expect_line "$noranges" "$bin" run "$work/noranges.bag" --out "$work/run_noranges" --quiet
+expect_line "$noranges" "$bin" optimize "$work/noranges.bag" --out "$work/opt_noranges" --quiet
+[[ ! -e "$work/opt_noranges/run.sqlite" ]] || fail "optimize started on a log without a single range"
+"$bin" check "$work/noranges.bag" > "$work/check_noranges.txt" || fail "check on noranges.bag exited $?"
+grep -q "^problem no_valid_reading: not one of the 18100 readings of the 100 scans is a range" "$work/check_noranges.txt" ||
+  fail "check does not report the log without a range: $(grep -E '^(problem|verdict)' "$work/check_noranges.txt")"
+
 # 5. A rosbag2 folder whose metadata.yaml lists the same split twice: refused, naming both entries.
 cp -r "$tests/fixtures/recordings/office_db3" "$work/twice"
 sed -i 's/^    - office_db3_0.db3$/    - office_db3_0.db3\n    - office_db3_0.db3/' "$work/twice/metadata.yaml"

@@ -25,6 +25,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/relations.h"
@@ -149,6 +150,7 @@ void LoadRunLog(const RunArgs& args, const sim::SimulationOptions& world, RunInp
     input.log = std::make_shared<const io::LaserLog>(ReadLog(args.log, args.input));
   }
   PrintLogInput(*input.log, args.quiet);
+  io::RequireRanges(*input.log);
   if (!args.relations.empty()) {
     const metrics::RelationMatch match = metrics::RequireMatchingRelations(*input.log, input.relations, args.relations);
     if (!args.quiet && !match.complete()) WarnPartialRelations(args.relations, match);

@@ -11,6 +11,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/text_file.h"
+#include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/sim/simulation.h"
@@ -123,6 +124,7 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes note
     in.log_label = options.log;
     in.log_input = io::DescribeLogInput(*in.log);
     if (notes != InputNotes::kNone) PrintLogInput(*in.log, quiet);
+    io::RequireRanges(*in.log);
   }
   in.scans_not_used = io::ReadingLosses(*in.log, slam::LaserRuleOf(in.base.node_mode));
   if (!options.relations.empty()) {

@@ -38,6 +38,14 @@ BeamGeometry GeometryOf(const LaserScanRecord& scan) {
   return {scan.ranges.size(), scan.angle_min, scan.angle_increment};
 }
 
+std::size_t CountRanges(const LaserLog& log) {
+  std::size_t n = 0;
+  for (const LaserScanRecord& scan : log.scans) {
+    for (const double r : scan.ranges) n += std::isfinite(r) && r > scan.range_min && r < scan.max_range;
+  }
+  return n;
+}
+
 std::int64_t StampNs(const LaserScanRecord& scan) {
   if (scan.header_stamp_ns) return *scan.header_stamp_ns;
   return std::llround(scan.ipc_time * 1e9);

@@ -73,6 +73,11 @@ BeamGeometry GeometryOf(const LaserScanRecord& scan);
 // record's ipc_timestamp rounded to the nanosecond (what a bag made from the log would carry).
 std::int64_t StampNs(const LaserScanRecord& scan);
 
+// Readings of the log that are ranges: finite, above the scan's range_min and below its
+// max_range (not no-returns).
+struct LaserLog;
+std::size_t CountRanges(const LaserLog& log);
+
 // How scans whose beam geometry differs from the others' are treated (beam_geometry.h).
 enum class BeamPolicy { kNode, kPerGeometry, kNearestBeam };
 

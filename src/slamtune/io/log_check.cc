@@ -180,6 +180,12 @@ void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report
                         "laser's real range is lower, readings at its limit may be taken for walls",
                         100.0 * o.range_max_use_fraction, largest_valid, range_max));
   }
+  if (readings > 0 && CountRanges(log) == 0) {
+    Problem(report, ProblemKind::kNoValidReading,
+            fmt::format("not one of the {} readings of the {} scans is a range (each is inf, NaN, negative, at or "
+                        "above range_max or at or below range_min): a map would be empty; run and optimize refuse it",
+                        readings, log.scans.size()));
+  }
   if (share > o.no_return_majority) {
     Problem(report, ProblemKind::kMostlyNoReturns,
             fmt::format("{:.1f} % of the readings are no-returns (inf, NaN or >= range_max)", 100.0 * share));
@@ -427,6 +433,7 @@ const char* ProblemKindName(ProblemKind kind) {
     case ProblemKind::kRangeMaxTooLow: return "range_max_too_low";
     case ProblemKind::kRangeMaxTooHigh: return "range_max_too_high";
     case ProblemKind::kBadRangeMax: return "bad_range_max";
+    case ProblemKind::kNoValidReading: return "no_valid_reading";
     case ProblemKind::kMostlyNoReturns: return "mostly_no_returns";
     case ProblemKind::kOdometryJump: return "odometry_jump";
     case ProblemKind::kOdometryStall: return "odometry_stall";

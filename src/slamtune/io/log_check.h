@@ -58,6 +58,7 @@ enum class ProblemKind {
   kRangeMaxTooLow,
   kRangeMaxTooHigh,
   kBadRangeMax,     // range_max NaN, infinite, 0 or negative: read with no upper limit
+  kNoValidReading,  // not one reading of the log is a range: nothing can be mapped
   kMostlyNoReturns,
   kOdometryJump,
   kOdometryStall,

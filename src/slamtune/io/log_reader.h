@@ -12,4 +12,9 @@ namespace slamtune::io {
 
 LaserLog ReadLaserLog(const std::string& path, const LogReadOptions& options = {});
 
+// InputError "FILE: not one of the N readings of the M scans is a range ..." when no reading of
+// `log` is a range (CountRanges): a map made from it would be empty. What `run`, `optimize` and
+// `sweep` ask of their log; `check` reports it (no_valid_reading).
+void RequireRanges(const LaserLog& log);
+
 }  // namespace slamtune::io

@@ -252,6 +252,26 @@ TEST(RecordingToLog, ARangeMinAboveRangeMaxIsMalformed) {
   EXPECT_EQ(log.recording->scans_malformed, 1u);
 }
 
+// Not one reading a range (all inf, NaN, above range_max or at range_min): nothing to map, a
+// one-line error for the commands that map; `check` reports it.
+TEST(RecordingToLog, ALogWithoutASingleRangeIsRefusedForMapping) {
+  RecordingContents c = Drive();
+  for (RecordedScan& scan : c.scans["/scan"]) {
+    for (std::size_t i = 0; i < scan.message.ranges.size(); ++i) {
+      scan.message.ranges[i] = i % 2 == 0 ? std::numeric_limits<float>::infinity() : 10.5f;
+    }
+  }
+  const LaserLog log = RecordingToLog(c, {});
+  EXPECT_EQ(CountRanges(log), 0u);
+  EXPECT_EQ(ErrorMessageOf([&] { RequireRanges(log); }),
+            "drive.mcap: not one of the 45 readings of the 9 scans is a range (each is inf, NaN, negative, at or above "
+            "range_max 10 m or at or below range_min): nothing to map");
+  EXPECT_TRUE(CheckRecordingContents(c, {}).Has(ProblemKind::kNoValidReading));
+  c.scans["/scan"][8].message.ranges[1] = 3.0f;
+  EXPECT_NO_THROW(RequireRanges(RecordingToLog(c, {})));
+  EXPECT_FALSE(CheckRecordingContents(c, {}).Has(ProblemKind::kNoValidReading));
+}
+
 TEST(RecordingToLog, A360LaserWhoseLastAngleClosesTheCircleIsAccepted) {
   RecordingContents c = Drive();
   for (RecordedScan& s : c.scans["/scan"]) {
