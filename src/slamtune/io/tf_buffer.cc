@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace slamtune::io {
 namespace {
@@ -158,10 +159,18 @@ std::vector<std::vector<std::string>> TfBuffer::Loops() const {
   return loops;
 }
 
+namespace {
+constexpr std::int64_t kNoGapLimitNs = std::numeric_limits<std::int64_t>::max();
+}  // namespace
+
 TfLookup TfBuffer::Lookup(const std::string& target, const std::string& source, std::int64_t stamp_ns,
                           double max_gap_s) const {
   SortEdges();
-  const auto max_gap_ns = static_cast<std::int64_t>(max_gap_s * 1e9);
+  // In nanoseconds, held to what an int64 holds (a negative gap is none, a huge one no limit).
+  const double gap_ns = max_gap_s * 1e9;
+  const std::int64_t max_gap_ns = !(gap_ns > 0.0)                                ? 0
+                                  : gap_ns >= static_cast<double>(kNoGapLimitNs) ? kNoGapLimitNs
+                                                                                 : static_cast<std::int64_t>(gap_ns);
   for (const std::string& frame : {target, source}) {
     if (!HasFrame(frame)) return {std::nullopt, fmt::format("frame '{}' is in no transform", frame)};
   }

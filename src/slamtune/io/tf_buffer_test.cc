@@ -57,6 +57,18 @@ TEST(TfBuffer, NoExtrapolationAndNoBridgingOfGaps) {
   EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1.5).transform);  // a wider gap allowed
 }
 
+// A gap limit beyond what nanoseconds in an int64 hold is no limit; a negative one bridges no
+// gap (the conversion to nanoseconds was undefined behaviour: a fuzzer's finding).
+TEST(TfBuffer, AGapLimitOfAnySizeIsHeldToNanosecondsThatExist) {
+  TfBuffer tf;
+  tf.Add("odom", "base", 1 * kSecond, Planar(0, 0, 0), false);
+  tf.Add("odom", "base", 2 * kSecond, Planar(1, 0, 0), false);
+  EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1e300).transform);
+  EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1e10).transform);
+  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond / 2, -1e300).failure, testing::HasSubstr("gap"));
+  EXPECT_TRUE(tf.Lookup("odom", "base", 1 * kSecond, -1e300).transform);  // a sample itself needs no gap
+}
+
 // A transform published the wrong way round closes a loop: tf2 refuses lookups through it, and
 // the buffer names it, as the transforms go, from any frame whose path up the tree enters it.
 TEST(TfBuffer, LoopsAreNamedAsTheTransformsGo) {
