@@ -333,9 +333,10 @@ void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
                         loop));
   }
   if (r.tf_parent_conflicts + r.tf_bad_rotations + r.tf_refused_frames > 0) {
-    report->facts.push_back(fmt::format("tf: {} transforms ignored (second parent), {} refused (bad rotation or "
-                                        "translation), {} refused (a frame its own parent, or no frame id)",
-                                        r.tf_parent_conflicts, r.tf_bad_rotations, r.tf_refused_frames));
+    report->facts.push_back(
+        fmt::format("tf: {} transforms ignored (second parent), {} refused (bad rotation or "
+                    "translation), {} refused (a frame its own parent, or no frame id)",
+                    r.tf_parent_conflicts, r.tf_bad_rotations, r.tf_refused_frames));
   }
 }
 

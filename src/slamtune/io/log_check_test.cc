@@ -173,12 +173,12 @@ TEST(LogCheck, ATfLoopIsAProblemNamingItsFrames) {
   const CheckReport report = CheckRecordingContents(loop, {});
   EXPECT_EQ(Kinds(report), std::vector<std::string>{"tf_loop"});
   EXPECT_THAT(report.problems[0].what, testing::HasSubstr("the tf tree has a loop, odom -> base_link -> laser -> odom: "
-                                                         "odom is its own ancestor"));
+                                                          "odom is its own ancestor"));
   EXPECT_THAT(report.facts, testing::Contains("topic: /scan (sensor_msgs/LaserScan), 0 messages"));
   EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("verdict: 1 problem: tf_loop"));
 
-  EXPECT_TRUE(CheckRecordingContents(DriveContents(), {}).ok()) << FormatCheckReport(CheckRecordingContents(
-      DriveContents(), {}));
+  EXPECT_TRUE(CheckRecordingContents(DriveContents(), {}).ok())
+      << FormatCheckReport(CheckRecordingContents(DriveContents(), {}));
   RecordingContents elsewhere = DriveContents();
   elsewhere.tf.Add("camera", "arm", 0, RigidTransform3{}, true);
   elsewhere.tf.Add("arm", "camera", 0, RigidTransform3{}, true);

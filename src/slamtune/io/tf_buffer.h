@@ -56,7 +56,6 @@ struct TfLookup {
 
 class TfBuffer {
  public:
-
   // Adds parent -> child at `stamp_ns`. Returns false (and counts a conflict) when `child`
   // already has another parent: tf2 keeps one parent per frame; the first one stays. A
   // transform whose parent is its child, or with an empty frame id, is refused (false, counted

@@ -75,7 +75,7 @@ TEST(TfBuffer, LoopsAreNamedAsTheTransformsGo) {
   TfBuffer tf;
   tf.Add("odom", "base_link", 0, Planar(1, 0, 0), false);
   tf.Add("base_link", "laser", 0, Planar(0.1, 0, 0), true);
-  tf.Add("laser", "odom", 0, Planar(0, 0, 0), true);  // odom had no parent yet: accepted
+  tf.Add("laser", "odom", 0, Planar(0, 0, 0), true);   // odom had no parent yet: accepted
   tf.Add("map", "camera", 0, Planar(0, 0, 0), true);   // a tree beside it, without a loop
   tf.Add("laser", "sonar", 0, Planar(0, 0, 0), true);  // a branch off the loop
   const std::vector<std::string> loop = {"base_link", "laser", "odom", "base_link"};

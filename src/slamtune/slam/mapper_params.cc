@@ -267,8 +267,7 @@ struct Conflict {
 };
 
 // §4.1 [DECIDE]: D/rho must be an even integer (n = D/rho + 1 odd) and 0.5 rho <= sigma <= 10 rho.
-std::optional<Conflict> MatcherConflict(const std::string& prefix, double dimension, double resolution,
-                                        double smear) {
+std::optional<Conflict> MatcherConflict(const std::string& prefix, double dimension, double resolution, double smear) {
   const double cells = dimension / resolution;
   const double rounded = KartoRound(cells);
   if (std::fabs(cells - rounded) > 1e-6 || static_cast<long long>(rounded) % 2 != 0) {
@@ -637,9 +636,10 @@ void ApplyOverrides(MapperParams& params, const std::vector<std::string>& assign
       if (given.count(name) == 0) kept += (kept.empty() ? "" : " and ") + name;
     }
     if (kept.empty()) throw;
-    throw InputError(fmt::format("{} ({} {} not given with --set: the base configuration's value; set it too, or "
-                                 "choose values that fit it)",
-                                 e.message(), kept, kept.find(" and ") == std::string::npos ? "is" : "are"));
+    throw InputError(
+        fmt::format("{} ({} {} not given with --set: the base configuration's value; set it too, or "
+                    "choose values that fit it)",
+                    e.message(), kept, kept.find(" and ") == std::string::npos ? "is" : "are"));
   }
   params = copy;
 }
