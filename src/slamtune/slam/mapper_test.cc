@@ -41,7 +41,10 @@ void ExpectSameState(const LogRunner& a, const LogRunner& b, bool same_skips = t
   }
   EXPECT_TRUE(ma.graph() == mb.graph());
   EXPECT_EQ(ma.reference_poses(), mb.reference_poses());
-  EXPECT_EQ(ma.running_buffer(), mb.running_buffer());
+  EXPECT_TRUE(ma.scans_by_laser() == mb.scans_by_laser());
+  for (int laser = 0; laser < ma.scans_by_laser().num_lasers(); ++laser) {
+    EXPECT_EQ(ma.running_buffer(laser), mb.running_buffer(laser)) << "laser " << laser;
+  }
   MapperCounters ca = ma.counters(), cb = mb.counters();
   if (!same_skips) ca.near_chain_matches_skipped = cb.near_chain_matches_skipped = 0;
   EXPECT_EQ(ca, cb);
@@ -325,6 +328,34 @@ TEST(Mapper, RejectsScansWithAnotherReadingCountAndStaysPut) {
   EXPECT_EQ(mapper.counters().scans_processed, 1);
   EXPECT_EQ(mapper.counters().scans_wrong_reading_count, 1);
   EXPECT_EQ(mapper.counters().scans_not_moved, 1);
+}
+
+TEST(Mapper, EachLaserChecksItsOwnReadingCount) {
+  MapperParams p;
+  p.use_scan_matching = false;
+  Mapper mapper(p);
+  auto three = std::make_shared<LaserGeometry>();
+  three->angular_resolution = 0.1;
+  three->num_readings = 3;
+  auto two = std::make_shared<LaserGeometry>(*three);
+  two->num_readings = 2;
+  const auto ranges3 = std::make_shared<const std::vector<double>>(std::vector<double>{1, 1, 1});
+  const auto ranges2 = std::make_shared<const std::vector<double>>(std::vector<double>{1, 1});
+  const auto scan = [](const auto& geometry, const auto& ranges, double x, int laser) {
+    LaserScan s(geometry, ranges, {x, 0, 0}, 0.0);
+    s.laser = laser;
+    return s;
+  };
+  EXPECT_EQ(mapper.Process(scan(three, ranges3, 0.0, 0)).outcome, ProcessResult::Outcome::kProcessed);
+  // Laser 1's first scan: its own count, and its own first scan (no movement test).
+  EXPECT_EQ(mapper.Process(scan(two, ranges2, 0.0, 1)).outcome, ProcessResult::Outcome::kProcessed);
+  EXPECT_EQ(mapper.Process(scan(two, ranges2, 1.0, 0)).outcome, ProcessResult::Outcome::kWrongReadingCount);
+  EXPECT_EQ(mapper.Process(scan(three, ranges3, 1.0, 1)).outcome, ProcessResult::Outcome::kWrongReadingCount);
+  EXPECT_EQ(mapper.Process(scan(two, ranges2, 0.05, 1)).outcome, ProcessResult::Outcome::kNotMoved);
+  EXPECT_EQ(mapper.Process(scan(three, ranges3, 1.0, 0)).outcome, ProcessResult::Outcome::kProcessed);
+  EXPECT_EQ(mapper.scans_by_laser().scans_of(0).size(), 2u);
+  EXPECT_EQ(mapper.scans_by_laser().scans_of(1).size(), 1u);
+  EXPECT_EQ(mapper.last_processed(), 2);
 }
 
 TEST(Mapper, ConstructorValidatesParameters) {
