@@ -446,6 +446,7 @@ TEST_F(MapperWithTwoLasers, SharedWorkGivesTheSameResults) {
   ExpectSameState(first, *full_);
   ExpectSameState(second, *full_);
   EXPECT_GT(shared.match_cache->counters().hits, 0u);
+  EXPECT_EQ(shared.match_cache->counters().bypassed, 0u);  // matches across lasers are shared too
 }
 
 // The first 600 scans of intel with every other scan thinned to 90 of its 180 beams (2 degree
