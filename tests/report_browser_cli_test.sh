@@ -69,6 +69,13 @@ frame.addEventListener('load', () => {
     const broken = images.filter(i => !(i.complete && i.naturalWidth > 0));
     lines.push((broken.length === 0 && images.length > 0 ? 'OK' : 'FAIL') + ` images: ${images.length}, broken ${broken.length}`);
     for (const i of broken.slice(0, 5)) lines.push(`FAIL broken image alt="${i.alt}"`);
+    // The first screen (1400 x 900): the verdict, the base configuration's map and the recommended map.
+    const first = [...d.querySelectorAll('.first img')];
+    const verdict = d.querySelector('.verdict');
+    const seen = e => e && e.getBoundingClientRect().bottom <= 900 && e.getBoundingClientRect().height > 50;
+    lines.push((first.length === 2 && first.every(seen) && verdict && verdict.getBoundingClientRect().bottom <= 900 ?
+                'OK' : 'FAIL') +
+               ` first screen: verdict and ${first.filter(seen).length} of ${first.length} maps within 900 px`);
   }
   document.getElementById('result').textContent = lines.join('\n') + '\nDONE';
 });
@@ -100,6 +107,7 @@ echo "$result"
 grep -q '^DONE' <<<"$result" || fail "the checker did not finish (browser output: $(tail -3 "$work/report.err"))"
 grep -q '^OK width' <<<"$result" || fail "no width measurement"
 grep -q '^OK images' <<<"$result" || fail "no image check"
+grep -q '^OK first screen' <<<"$result" || fail "the verdict and both maps are not on the first screen"
 if grep -q '^FAIL' <<<"$result"; then fail "report.html in a 1400 px window: $(grep '^FAIL' <<<"$result" | head -5)"; fi
 
 # 2. The checker catches a page that overflows, has a broken image and logs an error.

@@ -11,7 +11,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # --list names the worlds, default first, and needs no --out.
 "$bin" simulate --list > "$tmp/list.txt" || fail "--list exited non-zero"
 head -n 1 "$tmp/list.txt" | grep -q '^office ' || fail "--list does not start with office"
-for world in office hall corridor office-slip office-jump corridor-long; do
+for world in office hall corridor office-slip office-jump corridor-long building building-broken; do
   grep -q "^$world " "$tmp/list.txt" || fail "--list lacks $world"
 done
 
@@ -59,6 +59,18 @@ cmp -s <(grep -v '^#' "$tmp/u/office-jump.clf") <(grep -v '^#' "$tmp/a/office.cl
 cmp -s <(grep -v '^#' "$tmp/t/office-jump.clf") <(grep -v '^#' "$tmp/a/office.clf") ||
   fail "office-jump without its fault is not the plain office log"
 if grep -q 'planted' "$tmp/t.txt"; then fail "--without-world-faults still names a fault"; fi
+# The large building: at least 15 minutes (4000 scans at 5 Hz); its broken variant names its two
+# faults and, without them, is the building's log.
+"$bin" simulate --world building --out "$tmp/b" > "$tmp/b.txt" || fail "building"
+building_scans=$(grep -c '^FLASER ' "$tmp/b/building.clf")
+(( building_scans >= 4000 && building_scans <= 4800 )) || fail "building has $building_scans scans, expected 4000..4800"
+"$bin" simulate --world building-broken --out "$tmp/bb" > /dev/null || fail "building-broken"
+[[ $(grep -c '^# planted odometry fault' "$tmp/bb/building-broken.clf") == 2 ]] || fail "building-broken: not two faults"
+"$bin" simulate --world building-broken --without-world-faults --out "$tmp/bt" > /dev/null ||
+  fail "building-broken --without-world-faults"
+cmp -s <(grep -v '^#' "$tmp/bt/building-broken.clf") <(grep -v '^#' "$tmp/b/building.clf") ||
+  fail "building-broken without its faults is not the building's log"
+cmp -s "$tmp/bt/building-broken.relations" "$tmp/b/building.relations" || fail "building-broken: other relations"
 
 # Bad input: non-zero exit, nothing claimed.
 expect_failure() {

@@ -8,7 +8,6 @@
 // written as the scan's max range (the CARMEN convention), and counted.
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -30,31 +29,6 @@ struct ConvertArgs {
   bool quiet = false;
 };
 
-// Non-finite readings become the max range; returns how many. Scans become ROBOTLASER1.
-std::size_t PrepareForCarmen(io::LaserLog* log) {
-  std::size_t replaced = 0;
-  for (io::LaserScanRecord& scan : log->scans) {
-    scan.kind = io::RecordKind::kRobotLaser1;
-    if (!std::isfinite(scan.max_range)) {
-      double largest = 0.0;
-      for (double r : scan.ranges) largest = std::isfinite(r) ? std::max(largest, r) : largest;
-      scan.max_range = std::max(largest + 1.0, 1.0);
-    }
-    for (double& r : scan.ranges) {
-      if (!std::isfinite(r)) {
-        r = scan.max_range;
-        ++replaced;
-      }
-    }
-  }
-  const Pose2 offset = log->scans.empty() ? Pose2{} : log->scans.front().laser_offset;
-  log->params["robot_frontlaser_offset"] = fmt::format("{}", offset.x);
-  log->params["robot_frontlaser_side_offset"] = fmt::format("{}", offset.y);
-  log->params["robot_frontlaser_angular_offset"] = fmt::format("{}", offset.theta);
-  if (!log->scans.empty()) log->params["laser_front_laser_max_range"] = fmt::format("{}", log->scans.front().max_range);
-  return replaced;
-}
-
 int Convert(const ConvertArgs& args) {
   if (std::filesystem::is_directory(args.out)) throw InputError(args.out, 0, "--out is a folder; give a file name");
   io::LaserLog log = ReadLog(args.log, args.input);
@@ -62,7 +36,7 @@ int Convert(const ConvertArgs& args) {
   if (!args.quiet) {
     for (const std::string& line : input) std::fprintf(stderr, "%s\n", line.c_str());
   }
-  const std::size_t replaced = PrepareForCarmen(&log);
+  const std::size_t replaced = io::PrepareForCarmen(&log);
   io::CarmenWriteOptions options;
   options.comments.push_back("converted by slamtune from " + args.log);
   for (const std::string& line : input) options.comments.push_back(line);

@@ -16,6 +16,7 @@
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/folder_lock.h"
+#include "slamtune/optim/front_end_repair.h"
 #include "slamtune/common/progress.h"
 #include "slamtune/common/signal_notice.h"
 #include "slamtune/io/content_hash.h"
@@ -50,6 +51,10 @@ struct OptimizeArgs {
   unsigned generations = optim::OptimizeSettings{}.generations;
   std::size_t divisions = optim::OptimizeSettings{}.divisions;
   unsigned seed = 1;
+  // The front end's informed start (optim/front_end_repair.h) when the default space is the
+  // front end: the space's raised lower bounds and the repaired configuration; kept for --resume.
+  std::map<std::string, double> space_lower;
+  std::vector<optim::Assignment> initial;
   TuningRunOptions run;
   ResultNeutralOptions result_neutral;  // the options that may accompany --resume
 };
@@ -75,6 +80,7 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"divisions", a.divisions},
           {"seed", a.seed},
           {"objectives", a.objectives},
+          {"front_end_repair", {{"lower_bounds", a.space_lower}, {"initial", a.initial}}},
           {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
           {"settling",
            {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
@@ -157,6 +163,11 @@ void PrepareResume(const RunFolder& folder, const CLI::App& app, OptimizeArgs& a
     args.generations = inv->at("generations");
     args.divisions = inv->at("divisions");
     args.seed = inv->at("seed");
+    if (inv->contains("front_end_repair")) {
+      const auto& repair = inv->at("front_end_repair");
+      args.space_lower = repair.at("lower_bounds").get<std::map<std::string, double>>();
+      args.initial = repair.at("initial").get<std::vector<optim::Assignment>>();
+    }
     // Folders written before objective sets existed were optimised on the paper's.
     args.objectives = inv->value("objectives", optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kPaper));
     // ... and ran their whole budget.
@@ -220,7 +231,23 @@ std::shared_ptr<optim::SlamEvaluationContext> ProbeDefaultSpace(const TuningInpu
   optim::DefaultSpaceChoice choice = optim::ChooseDefaultSpace(*probed);
   args.space_file = choice.space_name();
   if (!args.run.quiet) std::fprintf(stderr, "%s\n", choice.Reason().c_str());
-  plan.base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(),
+  std::string informed;
+  if (choice.kind == optim::DefaultSpaceKind::kFrontEnd) {
+    const optim::SearchSpace space = optim::SearchSpace::FrontEnd(inputs.base);
+    const optim::FrontEndRepair repair = optim::RepairFrontEnd(*probed, choice.steps, choice.evidence, space);
+    args.space_lower = repair.lower_bounds;
+    if (!repair.repaired.empty()) {
+      optim::Assignment individual;
+      for (const optim::Dimension& d : optim::WithLowerBounds(space, repair.lower_bounds).dimensions) {
+        individual[d.name] = repair.repaired.count(d.name) ? repair.repaired.at(d.name)
+                                                            : slam::GetNumeric(inputs.base, d.name);
+      }
+      args.initial = {individual};
+    }
+    informed = repair.Describe();
+    if (!args.run.quiet && !informed.empty()) std::fprintf(stderr, "%s\n", informed.c_str());
+  }
+  plan.base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(), informed,
                                             std::move(choice.map), std::move(choice.trajectory)};
   return probed;
 }
@@ -232,7 +259,9 @@ optim::SearchSpace NamedOrFileSpace(const OptimizeArgs& args, const slam::Mapper
     return optim::SearchSpace::AroundBase(base.loop_search_maximum_distance, base.loop_match_minimum_chain_size);
   }
   if (args.space_file == "paper") return optim::SearchSpace::PaperDefault();
-  if (args.space_file == "front-end") return optim::SearchSpace::FrontEnd(base);
+  if (args.space_file == "front-end") {
+    return optim::WithLowerBounds(optim::SearchSpace::FrontEnd(base), args.space_lower);
+  }
   return optim::SearchSpace::FromYaml(args.space_file);
 }
 
@@ -272,6 +301,7 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
     probed = ProbeDefaultSpace(inputs, folder, args, plan);
   }
   settings.space = flag_space ? *flag_space : NamedOrFileSpace(args, inputs.base);
+  if (!flag_space) settings.seeds = args.initial;
   if (args.objectives == kAutomaticObjectives) {
     args.objectives = optim::ObjectiveSet::NameOf(optim::DefaultObjectiveSetKind(settings.space.VariesMapSampling()));
     settings.objectives = optim::ObjectiveSet::Parse(args.objectives);
@@ -283,7 +313,10 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
   plan.context =
       probed && settings.space.fixed.empty() ? probed : MakeEvaluationContext(inputs, settings.space.fixed, args.run);
   optim::DrawWall(*plan.context, optim::WallDrawingFor(settings.objectives));
+  // Runs that differ in their front end may break where others hold: stop them there.
+  plan.context->stop_broken_runs = settings.space.VariesFrontEnd();
   DescribeBase(inputs, args.inputs, settings);
+  settings.engine["stop_broken_runs"] = plan.context->stop_broken_runs;
   return plan;
 }
 
@@ -377,7 +410,8 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   const optim::OptimizeSettings& settings = plan.settings;
   folder.EnsureLocked();
   if (!folder.resume()) plan.settings.invocation = InvocationJson(args);
-  process.SetupWorkers(args.inputs, settings.space.fixed, args.run, optim::WallDrawingFor(settings.objectives));
+  process.SetupWorkers(args.inputs, settings.space.fixed, args.run, optim::WallDrawingFor(settings.objectives),
+                       plan.context->stop_broken_runs);
 
   optim::EvaluationStore store(folder.db_path());
   Progress progress(args.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
@@ -385,6 +419,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   progress.Finish();
 
   optim::BatchEvaluator evaluator(EvaluateWith(plan.context), &store, args.run.jobs);
+  plan.context->idle_slots = evaluator.idle_slots();  // before the first evaluation
   process.ShareWith(evaluator);
   optim::OptimizeHooks hooks = ProgressHooks(progress, plan.context, process, args.verbose);
   // From the committed start on, Ctrl-C or a kill says how to go on.

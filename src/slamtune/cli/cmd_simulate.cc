@@ -4,6 +4,7 @@
 //   slamtune simulate --list
 //
 // Writes DIR/NAME.clf, DIR/NAME.relations and DIR/NAME.truth.txt (sim/simulation_files.h).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -28,8 +29,11 @@ struct SimulateState {
 };
 
 int ListWorlds() {
-  for (const sim::WorldInfo& world : sim::ListWorlds()) {
-    std::printf("%-14s %s\n", world.name.c_str(), world.description.c_str());
+  const std::vector<sim::WorldInfo> worlds = sim::ListWorlds();
+  int width = 0;
+  for (const sim::WorldInfo& world : worlds) width = std::max(width, static_cast<int>(world.name.size()));
+  for (const sim::WorldInfo& world : worlds) {
+    std::printf("%-*s %s\n", width, world.name.c_str(), world.description.c_str());
   }
   return 0;
 }

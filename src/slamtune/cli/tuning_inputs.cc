@@ -182,12 +182,13 @@ optim::EvaluateFn EvaluateWith(std::shared_ptr<const optim::SlamEvaluationContex
 }
 
 nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                           const TuningRunOptions& run, optim::WallDrawing drawing) {
+                           const TuningRunOptions& run, optim::WallDrawing drawing, bool stop_broken_runs) {
   return {{"inputs", inputs.ToJson()},
           {"fixed", fixed},
           {"no_share", run.no_share},
           {"share_mb", run.share_mb},
-          {"draw_wall", drawing == optim::WallDrawing::kDraw}};
+          {"draw_wall", drawing == optim::WallDrawing::kDraw},
+          {"stop_broken_runs", stop_broken_runs}};
 }
 
 void CreateOutputFolder(const std::string& dir) {
@@ -216,6 +217,7 @@ int ServeAsWorker(const optim::MpiWorld& world) {
     auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(), run);
     optim::DrawWall(*context,
                     setup.at("draw_wall").get<bool>() ? optim::WallDrawing::kDraw : optim::WallDrawing::kSkip);
+    context->stop_broken_runs = setup.value("stop_broken_runs", false);
     return EvaluateWith(std::move(context));
   });
   return 0;
@@ -230,8 +232,8 @@ void TuningProcess::FitJobs(const CLI::App& app, TuningRunOptions& run) const {
 }
 
 void TuningProcess::SetupWorkers(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                                 const TuningRunOptions& run, optim::WallDrawing drawing) {
-  if (workers_) workers_->Setup(WorkerSetup(inputs, fixed, run, drawing));
+                                 const TuningRunOptions& run, optim::WallDrawing drawing, bool stop_broken_runs) {
+  if (workers_) workers_->Setup(WorkerSetup(inputs, fixed, run, drawing, stop_broken_runs));
 }
 
 void TuningProcess::ShareWith(optim::BatchEvaluator& evaluator) {

@@ -109,8 +109,9 @@ std::shared_ptr<optim::SlamEvaluationContext> MakeEvaluationContext(const Tuning
 optim::EvaluateFn EvaluateWith(std::shared_ptr<const optim::SlamEvaluationContext> context);
 
 // What rank 0 sends the worker ranks (MpiDispatcher::Setup) so that they build the same context.
+// `stop_broken_runs`: SlamEvaluationContext::stop_broken_runs.
 nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                           const TuningRunOptions& run, optim::WallDrawing drawing);
+                           const TuningRunOptions& run, optim::WallDrawing drawing, bool stop_broken_runs = false);
 
 // Creates the output folder `dir` (and its parents); InputError "DIR: cannot create output
 // folder: REASON".
@@ -144,7 +145,7 @@ class TuningProcess {
   void FitJobs(const CLI::App& app, TuningRunOptions& run) const;
   // Sends the workers what they build their context from (WorkerSetup); nothing without workers.
   void SetupWorkers(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                    const TuningRunOptions& run, optim::WallDrawing drawing);
+                    const TuningRunOptions& run, optim::WallDrawing drawing, bool stop_broken_runs = false);
   // Lets `evaluator` hand runs to the workers beside its own threads.
   void ShareWith(optim::BatchEvaluator& evaluator);
   // Tells the workers to exit; idempotent.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -114,6 +115,30 @@ void CarmenWriteOptions::Validate() const {
   RequireDecimals("range_decimals", range_decimals, 9);
   RequireDecimals("pose_decimals", pose_decimals, 12);
   RequireDecimals("time_decimals", time_decimals, 9);
+}
+
+std::size_t PrepareForCarmen(LaserLog* log, bool keep_flaser) {
+  std::size_t replaced = 0;
+  for (LaserScanRecord& scan : log->scans) {
+    if (!(keep_flaser && scan.kind == RecordKind::kFlaser)) scan.kind = RecordKind::kRobotLaser1;
+    if (!std::isfinite(scan.max_range)) {
+      double largest = 0.0;
+      for (double r : scan.ranges) largest = std::isfinite(r) ? std::max(largest, r) : largest;
+      scan.max_range = std::max(largest + 1.0, 1.0);
+    }
+    for (double& r : scan.ranges) {
+      if (!std::isfinite(r)) {
+        r = scan.max_range;
+        ++replaced;
+      }
+    }
+  }
+  const Pose2 offset = log->scans.empty() ? Pose2{} : log->scans.front().laser_offset;
+  log->params["robot_frontlaser_offset"] = fmt::format("{}", offset.x);
+  log->params["robot_frontlaser_side_offset"] = fmt::format("{}", offset.y);
+  log->params["robot_frontlaser_angular_offset"] = fmt::format("{}", offset.theta);
+  if (!log->scans.empty()) log->params["laser_front_laser_max_range"] = fmt::format("{}", log->scans.front().max_range);
+  return replaced;
 }
 
 CarmenWriteSummary WriteCarmenLog(std::ostream& out, const LaserLog& log, const CarmenWriteOptions& options) {

@@ -55,6 +55,15 @@ struct CarmenWriteSummary {
 // PARAM name or value that is empty or contains whitespace.
 CarmenWriteSummary WriteCarmenLog(std::ostream& out, const LaserLog& log, const CarmenWriteOptions& options = {});
 
+// Makes a log read from any recording writable as CARMEN, as `slamtune convert` and `slamtune
+// fault` write it: scans become ROBOTLASER1 (FLASER scans stay FLASER when `keep_flaser`), a scan
+// without a finite max range takes its largest finite reading + 1 m (at least 1 m), non-finite
+// readings become the scan's max range (the CARMEN convention for a no-return), and the PARAMs
+// robot_frontlaser_offset, _side_offset, _angular_offset and laser_front_laser_max_range are set
+// from the first scan, so the log reads back with the same laser offset and no-return value.
+// Returns how many readings were replaced.
+std::size_t PrepareForCarmen(LaserLog* log, bool keep_flaser = false);
+
 // Writes `log` to the file `path` (replaced if it exists). Throws InputError as above, or
 // "PATH: cannot write ..." when the file cannot be written.
 CarmenWriteSummary WriteCarmenLog(const std::string& path, const LaserLog& log,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "slamtune/common/error.h"
@@ -170,6 +171,42 @@ TEST(CarmenWriteOptions, ValidateNamesFieldValueAndRule) {
 TEST(WriteCarmenLog, UnwritablePathIsAnInputError) {
   EXPECT_THAT([&] { WriteCarmenLog("/nonexistent-folder/x.clf", SmallLog()); },
               testing::ThrowsMessage<InputError>(HasSubstr("/nonexistent-folder/x.clf: cannot write")));
+}
+
+// Convert makes every scan ROBOTLASER1; fault keeps FLASER scans. Either way non-finite readings
+// become the max range, a scan without one gets one above its readings, and the PARAMs carry the
+// first scan's offset and max range, so the written log reads back with the same values.
+TEST(PrepareForCarmen, MakesAnyLogWritableAndKeepsFlaserOnRequest) {
+  LaserLog log = SmallLog();
+  log.scans[0].laser_offset = Pose2{0.2, -0.1, 0.05};
+  LaserScanRecord ros = Flaser(181, 100.4, Pose2{0.2, 0.0, 0.0});
+  ros.kind = RecordKind::kRosLaserScan;
+  ros.max_range = std::numeric_limits<double>::infinity();
+  ros.ranges[3] = std::numeric_limits<double>::infinity();
+  ros.ranges[4] = std::nan("");
+  log.scans.push_back(ros);
+  LaserLog kept = log;
+  EXPECT_EQ(PrepareForCarmen(&log), 2u);
+  for (const LaserScanRecord& scan : log.scans) EXPECT_EQ(scan.kind, RecordKind::kRobotLaser1);
+  const LaserScanRecord& last = log.scans.back();
+  EXPECT_DOUBLE_EQ(last.max_range, 1.999 + 1.0);  // the largest finite reading is 1.999 m
+  EXPECT_EQ(last.ranges[3], last.max_range);
+  EXPECT_EQ(last.ranges[4], last.max_range);
+  EXPECT_EQ(log.params["robot_frontlaser_offset"], "0.2");
+  EXPECT_EQ(log.params["robot_frontlaser_side_offset"], "-0.1");
+  EXPECT_EQ(log.params["robot_frontlaser_angular_offset"], "0.05");
+  EXPECT_EQ(log.params["laser_front_laser_max_range"], "30");
+  std::ostringstream converted;
+  EXPECT_NO_THROW(WriteCarmenLog(converted, log));
+
+  EXPECT_EQ(PrepareForCarmen(&kept, true), 2u);
+  EXPECT_EQ(kept.scans[0].kind, RecordKind::kFlaser);
+  EXPECT_EQ(kept.scans[1].kind, RecordKind::kFlaser);
+  EXPECT_EQ(kept.scans[2].kind, RecordKind::kRobotLaser1);
+  std::ostringstream out;
+  const CarmenWriteSummary summary = WriteCarmenLog(out, kept);
+  EXPECT_EQ(summary.scans, 3u);
+  EXPECT_EQ(summary.robotlaser1, 1u);
 }
 
 }  // namespace

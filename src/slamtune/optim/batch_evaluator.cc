@@ -100,10 +100,12 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
       const std::size_t i = todo[t];
       finish(t, RunGuarded(evaluate_, batch[i], keys[i]), RanOn::kThisProcess);
     }
+    idle_slots_->fetch_add(1);  // nothing left for this slot: the runs still going may use it
   };
   const bool use_remote = remote_ != nullptr && remote_->slots() > 0 && !todo.empty();
   // With remote slots the calling thread drives them, so local threads need not cover the batch.
   const int threads = std::min<int>(jobs_, static_cast<int>(todo.size()));
+  idle_slots_->store(std::max(0, jobs_ - std::max(threads, 1)));
   if (threads <= 1 && !use_remote) {
     worker();
   } else {
@@ -131,6 +133,7 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
     }
     for (auto& th : pool) th.join();
   }
+  idle_slots_->store(0);
   for (std::size_t t = 0; t < todo.size(); ++t) known[keys[todo[t]]] = fresh[t];
 
   std::vector<EvaluationRecord> out;

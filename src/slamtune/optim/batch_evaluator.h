@@ -12,6 +12,7 @@
 #include <atomic>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -72,6 +73,10 @@ class BatchEvaluator {
   // Other processes that evaluate beside the local threads (may be null: local only). Not
   // owned; must outlive the evaluator's Evaluate calls.
   void SetRemote(RemoteEvaluators* remote) { remote_ = remote; }
+  // How many of the `jobs` local slots have no evaluation to run right now (at a batch's tail, or
+  // in a batch smaller than jobs): an evaluation may use them for its own threads
+  // (SlamEvaluationContext::idle_slots). Results never depend on it.
+  std::shared_ptr<const std::atomic<int>> idle_slots() const { return idle_slots_; }
 
  private:
   EvaluateFn evaluate_;
@@ -83,6 +88,7 @@ class BatchEvaluator {
   std::map<std::string, EvaluationRecord> memory_;  // cache when there is no store
   BatchEvaluatorStats stats_;
   std::function<void(const EvaluationRecord&, const BatchEvaluatorStats&)> progress_;
+  std::shared_ptr<std::atomic<int>> idle_slots_ = std::make_shared<std::atomic<int>>(0);
 };
 
 }  // namespace slamtune::optim

@@ -42,6 +42,32 @@ TEST(BatchEvaluator, RunsEachDistinctSetOnceAndKeepsOrder) {
   EXPECT_EQ(eval.stats().evaluated, 3u);
 }
 
+// A slot with nothing to run is offered to the evaluations still going: all but one slot of a
+// single-set batch, and none once the batch is over.
+TEST(BatchEvaluator, IdleSlotsAreOfferedToTheRunsStillGoing) {
+  std::shared_ptr<const std::atomic<int>> idle;
+  std::atomic<int> seen{-1};
+  BatchEvaluator eval(
+      [&](const Assignment& a) {
+        seen = idle->load();
+        return Fake(a);
+      },
+      nullptr, 3);
+  idle = eval.idle_slots();
+  eval.Evaluate({{{"r", 1}}});
+  EXPECT_EQ(seen.load(), 2);
+  EXPECT_EQ(idle->load(), 0);
+  BatchEvaluator serial(
+      [&](const Assignment& a) {
+        seen = idle->load();
+        return Fake(a);
+      },
+      nullptr, 1);
+  idle = serial.idle_slots();
+  serial.Evaluate({{{"r", 1}}});
+  EXPECT_EQ(seen.load(), 0);
+}
+
 TEST(BatchEvaluator, FailuresAreRecordedAndScoredWorst) {
   BatchEvaluator eval(Fake, nullptr, 1);
   const auto out = eval.Evaluate({{{"r", -1}}, {{"r", 6}}, {{"r", 1}}});

@@ -60,6 +60,7 @@ struct BaseFrontEnd {
   slam::FrontEndEvidence evidence;
   std::vector<slam::SequentialMatchStep> steps;
   std::string choice;  // the line that says which space was searched and why
+  std::string informed_start;  // what the prefix runs found the front end needs (front_end_repair.h), or ""
   // The run's map and its poses (one per log scan), to draw the evidence where it happened;
   // an empty map when the run failed before a map was built.
   io::MapImage map;

@@ -31,15 +31,24 @@ nlohmann::json PopulationJson(const std::vector<std::vector<double>>& x, const s
   return {{"x", x}, {"f", f}, {"rng", rng_state}};
 }
 
-// The initial population: N random decision vectors (integer genes integral) from `seed`,
-// evaluated as one batch.
-pagmo::population InitialPopulation(const pagmo::problem& problem, std::size_t n, unsigned seed) {
+// The decision vector of `a` in `space` (its value of each dimension, in order).
+pagmo::vector_double DecisionOf(const SearchSpace& space, const Assignment& a) {
+  pagmo::vector_double x;
+  for (const Dimension& d : space.dimensions) x.push_back(d.ValueOf(a.at(d.name)));
+  return x;
+}
+
+// The initial population: N random decision vectors (integer genes integral) from `seed`, the
+// first ones replaced by `seeds`, evaluated as one batch.
+pagmo::population InitialPopulation(const pagmo::problem& problem, const SearchSpace& space,
+                                    const std::vector<Assignment>& seeds, std::size_t n, unsigned seed) {
   pagmo::population pop(problem, 0u, seed);
   pagmo::detail::random_engine_type rng(seed);
   std::vector<pagmo::vector_double> xs;
   pagmo::vector_double flat;
   for (std::size_t i = 0; i < n; ++i) {
     xs.push_back(pagmo::random_decision_vector(problem, rng));
+    if (i < seeds.size()) xs.back() = DecisionOf(space, seeds[i]);
     flat.insert(flat.end(), xs.back().begin(), xs.back().end());
   }
   const pagmo::vector_double fs = problem.batch_fitness(flat);
@@ -83,10 +92,15 @@ void OptimizeSettings::Validate() const {
   if (population < 4) throw InputError(fmt::format("--population = {} is out of range: must be >= 4", population));
   if (generations < 1) throw InputError(fmt::format("--generations = {} is out of range: must be >= 1", generations));
   if (divisions < 1) throw InputError(fmt::format("--divisions = {} is out of range: must be >= 1", divisions));
+  for (const Assignment& individual : seeds) {
+    for (const Dimension& d : space.dimensions) {
+      if (!individual.count(d.name)) throw InputError("an initial individual has no value for " + d.name);
+    }
+  }
 }
 
 nlohmann::json OptimizeSettings::ToJson() const {
-  return {
+  nlohmann::json j = {
       {"log", log_path},
       {"relations", relations_path},
       {"space", space.Fingerprint()},
@@ -98,6 +112,8 @@ nlohmann::json OptimizeSettings::ToJson() const {
       {"engine", engine},
       {"objectives", objectives.name()},
       {"settling", {{"enabled", settling.enabled}, {"tolerance", settling.tolerance}, {"window", settling.window}}}};
+  if (!seeds.empty()) j["seeds"] = seeds;  // absent without: older folders compare equal
+  return j;
 }
 
 namespace {
@@ -237,6 +253,11 @@ class Generations {
   const std::size_t runs_before_;
   // The generation this process started from (0 unless resumed).
   unsigned first_gen_here_ = 0;
+  // When this process's latest generation ended, and how long it took: the time left goes at that
+  // pace (generation 0's random sets, most of them stopped early in a front-end search, are no
+  // guide to the later ones).
+  Clock::time_point last_generation_end_;
+  double last_generation_s_ = -1.0;
   std::vector<std::vector<double>> current_f_;  // objectives of the latest population
   SettlingRule settling_;
   std::vector<GenerationSnapshot> snapshots_;
@@ -262,20 +283,24 @@ void Generations::Report(unsigned gen, Show show) {
   const auto st = evaluator_.stats();
   const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
   const double rate = elapsed > 0 ? st.evaluated / elapsed * 60.0 : 0.0;
-  // A fresh run also spent its time on generation 0.
+  // At the latest generation's pace (the mean of this process's generations until one has
+  // ended), the budget's generations still to come; the early stop usually ends sooner.
   const unsigned gens_here = done_gens_ - first_gen_here_ + (first_gen_here_ == 0 ? 1 : 0);
-  const double left = gens_here > 0 ? elapsed / gens_here * (total_gens_ - done_gens_) : -1;
-  hooks_.progress(fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}", gen,
+  const double pace = last_generation_s_ >= 0 ? last_generation_s_ : gens_here > 0 ? elapsed / gens_here : -1;
+  const double left = pace >= 0 ? pace * (total_gens_ - done_gens_) : -1;
+  hooks_.progress(fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}{}", gen,
                               total_gens_, runs_before_ + st.evaluated, st.cache_hits, rate,
-                              BestObjectives(settings_.objectives, current_f_), FormatDuration(left)),
+                              BestObjectives(settings_.objectives, current_f_), settings_.settling.enabled ? "<= " : "",
+                              FormatDuration(left)),
                   show == Show::kAlways);
 }
 
 void Generations::StartFromGenerationZero() {
   Announce(fmt::format("generation 0: {} random parameter sets", settings_.population));
-  pop_ = InitialPopulation(problem_, settings_.population, settings_.seed);
+  pop_ = InitialPopulation(problem_, settings_.space, settings_.seeds, settings_.population, settings_.seed);
   store_.PutGeneration(
       0, PopulationJson({pop_.get_x().begin(), pop_.get_x().end()}, {pop_.get_f().begin(), pop_.get_f().end()}, ""));
+  last_generation_end_ = Clock::now();
   if (hooks_.progress && total_gens_ > 0) {
     const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     Announce(BudgetEstimateLine(settings_.population, total_gens_, evaluator_.stats().evaluated, seconds,
@@ -291,6 +316,7 @@ void Generations::RestoreGeneration(int saved_generation) {
   rng_state_ = saved.at("rng").get<std::string>();
   done_gens_ = static_cast<unsigned>(saved_generation);
   first_gen_here_ = done_gens_;
+  last_generation_end_ = Clock::now();
   Announce(fmt::format("resuming after generation {}/{}", done_gens_, total_gens_));
 }
 
@@ -319,6 +345,9 @@ nsga3::CallbackAction Generations::Finished(const nsga3::GenerationRecord& recor
   // Saved first: a kill after this line loses nothing of this generation.
   store_.PutGeneration(static_cast<int>(done_gens_ + 1), PopulationJson(record.x, record.f, state));
   ++done_gens_;
+  const Clock::time_point now = Clock::now();
+  last_generation_s_ = std::chrono::duration<double>(now - last_generation_end_).count();
+  last_generation_end_ = now;
   current_f_ = record.f;
   if (std::find(snapshot_gens_.begin(), snapshot_gens_.end(), done_gens_) != snapshot_gens_.end()) {
     snapshots_.push_back({static_cast<int>(done_gens_), record.x, record.f});

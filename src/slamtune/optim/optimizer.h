@@ -43,6 +43,9 @@ struct OptimizeSettings {
   unsigned generations = 60;      // the paper's generations: the most that are run
   SettlingOptions settling;       // stop earlier once the answer has settled (settling.h)
   unsigned seed = 1;
+  // Individuals of generation 0 before the random ones (e.g. the front end's informed start,
+  // front_end_repair.h), each a value for every dimension of `space`.
+  std::vector<Assignment> seeds;
   nlohmann::json engine;  // everything else that changes results (base parameters, metric options, log identity)
   nlohmann::json invocation;  // the command line that started the run: stored with the settings, not compared
 

@@ -325,6 +325,18 @@ bool SearchSpace::VariesMapSampling() const {
                      [](const Dimension& d) { return kSampling.count(d.name) > 0; });
 }
 
+bool SearchSpace::VariesFrontEnd() const {
+  static const std::set<std::string> kFrontEnd = {
+      "correlation_search_space_dimension", "correlation_search_space_resolution",
+      "correlation_search_space_smear_deviation", "coarse_search_angle_offset", "coarse_angle_resolution",
+      "fine_search_angle_offset", "distance_variance_penalty", "angle_variance_penalty", "minimum_distance_penalty",
+      "minimum_angle_penalty", "use_response_expansion", "minimum_travel_distance", "minimum_travel_heading",
+      "minimum_time_interval", "scan_buffer_size", "scan_buffer_maximum_scan_distance", "throttle_scans",
+      "sync_minimum_time_interval"};
+  return std::any_of(dimensions.begin(), dimensions.end(),
+                     [](const Dimension& d) { return kFrontEnd.count(d.name) > 0; });
+}
+
 std::map<std::string, double> SearchSpace::Assign(const std::vector<double>& decision) const {
   SLAMTUNE_CHECK(decision.size() == dimensions.size());
   std::map<std::string, double> out = fixed;

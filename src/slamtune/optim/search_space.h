@@ -87,6 +87,10 @@ struct SearchSpace {
   // drawn (max_laser_range, min_laser_range) or the cell size (resolution) — so that counts of
   // map cells differ between runs for reasons other than the map's consistency.
   bool VariesMapSampling() const;
+  // Whether runs may differ in their sequential matching: the space varies a parameter of the
+  // sequential matcher, of the node spacing or of the running buffer (the front end). Only then
+  // can one run's front end break where another's holds.
+  bool VariesFrontEnd() const;
   // The fixed values plus the decision vector's values, by name. Integer genes are
   // rounded (they already are, after NSGA-III's repair).
   std::map<std::string, double> Assign(const std::vector<double>& decision) const;

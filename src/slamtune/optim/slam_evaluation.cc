@@ -20,25 +20,68 @@ slam::OccupancyGrid GridOf(const slam::LogRunner& runner, const slam::MapperPara
                                         slam::GridOptionsOf(params));
 }
 
+// Gives a run's correlative search the evaluation slots left idle (SlamEvaluationContext::
+// idle_slots) as threads, checked every few scans; the results do not depend on it.
+class IdleSlotThreads {
+ public:
+  IdleSlotThreads(const SlamEvaluationContext& context, const slam::MapperParams& params)
+      : idle_(context.idle_slots), params_(params) {}
+  void Update(slam::LogRunner& runner) {
+    if (!idle_ || ++steps_ % kEvery != 0) return;
+    const int want = 1 + std::max(0, idle_->load());
+    if (want == params_.matcher_threads) return;
+    params_.matcher_threads = want;
+    runner.SetParams(params_);
+  }
+
+ private:
+  static constexpr int kEvery = 16;
+  std::shared_ptr<const std::atomic<int>> idle_;
+  slam::MapperParams params_;
+  int steps_ = 0;
+};
+
 slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
   SLAMTUNE_CHECK(context.log != nullptr);
   slam::LogRunner runner(context.log, params, context.shared_work);
-  runner.RunToEnd();
+  IdleSlotThreads threads(context, params);
+  while (!runner.Done()) {
+    runner.Step();
+    threads.Update(runner);
+  }
   return runner;
 }
 
-}  // namespace
-
-slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment) const {
-  slam::MapperParams params = base;
-  slam::SetNumerics(params, assignment);
-  return params;
+// Steps `runner` until the end of the log or a break of its front end (slam::BreakWatch);
+// returns why it stopped early, or nullopt.
+std::optional<std::string> RunUntilBreak(const SlamEvaluationContext& context, const slam::MapperParams& params,
+                                         slam::LogRunner& runner) {
+  slam::BreakWatch watch;
+  IdleSlotThreads threads(context, params);
+  std::size_t seen = 0;
+  while (!runner.Done()) {
+    runner.Step();
+    threads.Update(runner);
+    const std::vector<slam::SequentialMatchStep>& steps = runner.sequential_matches();
+    if (steps.size() == seen) continue;
+    seen = steps.size();
+    const std::optional<std::size_t> broke = watch.Add(steps);
+    if (!broke) continue;
+    const slam::SequentialMatchStep& s = steps[*broke];
+    return fmt::format("stopped at log scan {} of {}: the front end broke at log scan {} ({:.1f} s into the log; the "
+                       "match ran out of search room {} with response {:.2f} and the matches after it did not undo "
+                       "it)",
+                       runner.next_index(), runner.size(), s.log_index, s.time,
+                       s.at_heading_edge ? "in heading" : "in position", s.response);
+  }
+  return std::nullopt;
 }
 
-EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment, SlamRun* run_out) {
-  const auto start = std::chrono::steady_clock::now();
-  const slam::MapperParams params = context.ParamsFor(assignment);
-  const slam::LogRunner runner = RunToEnd(context, params);
+// The record of a finished run: its map (or the map score of the same final state scored before),
+// objectives and errors. `run_out` (may be null) receives the run.
+EvaluationRecord Score(const SlamEvaluationContext& context, const Assignment& assignment,
+                       const slam::MapperParams& params, const slam::LogRunner& runner,
+                       std::chrono::steady_clock::time_point start, SlamRun* run_out) {
   SlamRun run;
   run.summary = runner.Summary();
   run.trajectory = runner.Trajectory();
@@ -100,6 +143,32 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
   record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (run_out != nullptr) *run_out = std::move(run);
   return record;
+}
+
+}  // namespace
+
+slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment) const {
+  slam::MapperParams params = base;
+  slam::SetNumerics(params, assignment);
+  return params;
+}
+
+EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment, SlamRun* run_out) {
+  const auto start = std::chrono::steady_clock::now();
+  const slam::MapperParams params = context.ParamsFor(assignment);
+  // The base configuration itself is always mapped to the end: every answer is judged against it.
+  if (context.stop_broken_runs && run_out == nullptr && !(params == context.base)) {
+    slam::LogRunner watched(context.log, params, context.shared_work);
+    if (std::optional<std::string> broke = RunUntilBreak(context, params, watched)) {
+      EvaluationRecord failed = EvaluationRecord::Failed("", assignment, *broke);
+      failed.nodes = watched.mapper().counters().scans_processed;
+      failed.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return failed;
+    }
+    return Score(context, assignment, params, watched, start, nullptr);
+  }
+  const slam::LogRunner runner = RunToEnd(context, params);
+  return Score(context, assignment, params, runner, start, run_out);
 }
 
 CandidateMap RenderSlamMap(const SlamEvaluationContext& context, const Assignment& assignment) {

@@ -4,6 +4,7 @@
 // (2009) errors of its trajectory. Pure and thread-safe: the context is read-only.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,16 @@ struct SlamEvaluationContext {
   // The fixed scans every run's path draws for the drawn wall (metrics/trajectory_map.h,
   // objective n_w); null: EvaluationRecord::drawn_wall_cells stays 0 (the map is not drawn).
   std::shared_ptr<const metrics::TrajectoryMap> trajectory_map;
+  // Stop a run as soon as its own sequential matches show a break (slam::BreakWatch) and record
+  // it as failed, with where and why, instead of mapping the rest of the log: a broken map is
+  // never the recommendation. The base configuration is always mapped to the end (every answer is
+  // judged against it). Only meaningful when runs differ in their front end
+  // (SearchSpace::VariesFrontEnd); it changes which runs are scored, so it is a setting.
+  bool stop_broken_runs = false;
+  // Evaluation slots left idle by the evaluator (BatchEvaluator::idle_slots; null: none): a run
+  // gives its correlative search that many more threads while they are idle. Speed only: results
+  // do not depend on the thread count.
+  std::shared_ptr<const std::atomic<int>> idle_slots;
 
   // The base parameters with `assignment` applied (InputError naming a bad name or value).
   slam::MapperParams ParamsFor(const Assignment& assignment) const;

@@ -240,6 +240,55 @@ TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
   EXPECT_EQ(context.trajectory_map, nullptr);
 }
 
+// In a front-end search a run whose own matches show a break is stopped there and recorded as
+// failed with where it broke; a run that holds, and the base configuration itself (always run
+// to the end, the reference of every answer), are scored as before.
+TEST(SlamEvaluation, ABrokenFrontEndStopsTheRunWhenAsked) {
+  sim::SimulationOptions o;
+  o.world = "office-jump";
+  sim::Simulation s = sim::Simulate(o);
+  SlamEvaluationContext context;
+  context.log = std::make_shared<const io::LaserLog>(s.log);
+  context.relations = s.relations;
+  const Assignment base = {{"correlation_search_space_dimension", 0.3}};
+  const Assignment broken = {{"correlation_search_space_dimension", 0.32}};  // still far too small for 1 m
+  const Assignment wide = {{"correlation_search_space_dimension", 1.6}};
+  const EvaluationRecord broken_full = EvaluateSlam(context, broken);
+  ASSERT_EQ(broken_full.status, RunStatus::kOk);
+  context.stop_broken_runs = true;
+  const EvaluationRecord stopped = EvaluateSlam(context, broken);
+  EXPECT_EQ(stopped.status, RunStatus::kFailed);
+  EXPECT_NE(stopped.reason.find("the front end broke at log scan"), std::string::npos) << stopped.reason;
+  EXPECT_LT(stopped.nodes, broken_full.nodes / 2);  // stopped early: the jump is 20 m into a 230 m route
+  const EvaluationRecord base_record = EvaluateSlam(context, base);
+  EXPECT_EQ(base_record.status, RunStatus::kOk);
+  context.stop_broken_runs = false;
+  const EvaluationRecord wide_full = EvaluateSlam(context, wide);
+  context.stop_broken_runs = true;
+  const EvaluationRecord wide_watched = EvaluateSlam(context, wide);
+  ASSERT_EQ(wide_watched.status, RunStatus::kOk) << wide_watched.reason;
+  EXPECT_TRUE(SameBits(wide_watched.trans_mean_m, wide_full.trans_mean_m));
+  EXPECT_EQ(wide_watched.loop_closures, wide_full.loop_closures);
+  EXPECT_TRUE(SameBits(wide_watched.corner_pixels, wide_full.corner_pixels));
+}
+
+// A run that takes idle evaluation slots as threads of its correlative search gives the same bits.
+TEST(SlamEvaluation, IdleSlotsChangeNoResult) {
+  SlamEvaluationContext context;
+  context.log = WorldSlice("office", 400);
+  const Assignment wide = {{"correlation_search_space_dimension", 1.2}};
+  const EvaluationRecord alone = EvaluateSlam(context, wide);
+  auto idle = std::make_shared<std::atomic<int>>(1);
+  context.idle_slots = idle;
+  const EvaluationRecord helped = EvaluateSlam(context, wide);
+  ASSERT_EQ(alone.status, RunStatus::kOk);
+  EXPECT_TRUE(SameBits(helped.corner_pixels, alone.corner_pixels));
+  EXPECT_TRUE(SameBits(helped.occupied_ratio, alone.occupied_ratio));
+  EXPECT_TRUE(SameBits(helped.hits_in_free_cells, alone.hits_in_free_cells));
+  EXPECT_EQ(helped.loop_closures, alone.loop_closures);
+  EXPECT_EQ(helped.nodes, alone.nodes);
+}
+
 // The report's map of a parameter set carries one loop edge per loop closure of its evaluation,
 // both ends inside the map.
 TEST(SlamEvaluation, RenderedMapCarriesTheLoopClosuresAsEdges) {

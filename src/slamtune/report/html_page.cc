@@ -27,6 +27,7 @@ tr:nth-child(even) td{background:#fafafa}
 .grid{display:grid;gap:1em}
 .grid figure{margin:0;min-width:0}
 .grid img{width:100%}
+.first img{max-height:58vh;object-fit:contain}
 figcaption b{color:#222}
 details{margin:.8em 0}
 summary{cursor:pointer;color:#0072b2}
@@ -153,9 +154,11 @@ void HtmlPage::Image(const std::vector<std::uint8_t>& png, const std::string& al
   body_ += "</figure>\n";
 }
 
-void HtmlPage::FigureGrid(const std::vector<Figure>& figures, int columns) {
+void HtmlPage::FigureGrid(const std::vector<Figure>& figures, int columns, const std::string& css_class) {
   const int n = std::clamp(columns, 1, 4);
-  body_ += fmt::format("<div class=\"grid\" style=\"grid-template-columns:repeat({},minmax(0,1fr))\">\n", n);
+  std::string classes = "grid";
+  if (!css_class.empty()) classes.append(" ").append(HtmlEscape(css_class));
+  body_ += fmt::format("<div class=\"{}\" style=\"grid-template-columns:repeat({},minmax(0,1fr))\">\n", classes, n);
   for (const Figure& f : figures) {
     const std::string img = "<img src=\"" + PngDataUri(f.png) + "\" alt=\"" + HtmlEscape(f.alt) + "\">";
     body_ += "<figure>";

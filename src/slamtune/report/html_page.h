@@ -49,8 +49,10 @@ class HtmlPage {
     std::string caption;
     std::string link;  // a file beside the page opened by a click (the full-size image); empty: none
   };
-  // Figures side by side, `columns` per row (1..4), each as wide as its column.
-  void FigureGrid(const std::vector<Figure>& figures, int columns);
+  // Figures side by side, `columns` per row (1..4), each as wide as its column. `css_class`
+  // adds a class to the grid (e.g. "first": images at most 58% of the window's height, so
+  // that a page's first screen holds them).
+  void FigureGrid(const std::vector<Figure>& figures, int columns, const std::string& css_class = "");
 
   // A collapsed section the reader opens with a click (<details>), closed by EndDetails.
   void BeginDetails(const std::string& summary);

@@ -162,10 +162,39 @@ void HistorySection(HtmlPage& page, const optim::OptimizeResult& r, const Optimi
                          Readable(std::pow(optim::kHypervolumeReference, static_cast<double>(r.objectives.size())))));
 }
 
-// The verdict, why this set was recommended (with any warning), then what to do and how.
+// The panel of the candidate labelled `label` (alone or merged, "recommended = knee"), or null.
+const OptimizeFigures::MapPanel* PanelOf(const OptimizeFigures& f, const std::string& label) {
+  for (const OptimizeFigures::MapPanel& p : f.map_panels) {
+    if (p.label == label || p.label.rfind(label + " ", 0) == 0 || p.label.find(" " + label) != std::string::npos) {
+      return &p;
+    }
+  }
+  return nullptr;
+}
+
+// What a person sees before scrolling: the verdict, then the base configuration's map (with
+// where its front end broke marked, when it did) beside the recommended map.
+void FirstScreen(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeFigures& f) {
+  page.Paragraph(r.verdict.empty() ? "No verdict was given." : r.verdict, "verdict");
+  std::vector<HtmlPage::Figure> figures;
+  if (!f.front_end_map.empty()) {
+    figures.push_back({f.front_end_map, "the base configuration's map, where its front end failed marked",
+                       "Your base configuration (" + r.base_label +
+                           "): where its front end lost its place is marked (front_end_map.png).",
+                       "front_end_map.png"});
+  } else if (const auto* base = PanelOf(f, "default")) {
+    figures.push_back({base->png, "the base configuration, mapped", base->caption, base->file});
+  }
+  if (const auto* recommended = PanelOf(f, "recommended"); recommended != nullptr && figures.size() == 1 &&
+                                                           recommended->png != figures.front().png) {
+    figures.push_back({recommended->png, "the recommended map", recommended->caption, recommended->file});
+  }
+  if (!figures.empty()) page.FigureGrid(figures, 2, "first");
+}
+
+// Why this set was recommended (with any warning), then what to do and how.
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
-  page.Paragraph(r.verdict.empty() ? "No verdict was given." : r.verdict, "verdict");
   RecommendationReading reading;
   if (r.Find("recommended") != nullptr) {
     reading = ReadRecommendation(r);
@@ -196,6 +225,7 @@ void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const Optim
   const optim::BaseFrontEnd& fe = *r.base_front_end;
   page.Heading(2, "Front end of the base configuration", "front-end");
   page.Paragraph(fe.choice);
+  if (!fe.informed_start.empty()) page.Paragraph(fe.informed_start);
   if (!f.front_end_map.empty()) {
     page.FigureGrid({{f.front_end_map, "where the base configuration's front end failed, on its map",
                       "Where it happened, on the base configuration's own map (front_end_map.png; click for the "
@@ -404,6 +434,7 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   const std::string log_name = std::filesystem::path(r.log_path).filename().string();
   HtmlPage page("slamtune optimize: " + log_name);
   page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
+  FirstScreen(page, r, f);
   VerdictSection(page, r);
   RunSection(page, r);
   FrontEndSection(page, r, f);

@@ -153,7 +153,10 @@ TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
   const std::string html = Slurp(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("Front end of the base configuration"));
   EXPECT_THAT(html, HasSubstr("front_end_map.png"));
-  EXPECT_LT(html.find("Front end of the base configuration"), html.find("front_end_map.png"));
+  // On the first screen, beside the recommended map, before any section; and in its own section.
+  EXPECT_LT(html.find("front_end_map.png"), html.find("<h2"));
+  EXPECT_LT(html.find("Front end of the base configuration"),
+            html.find("front_end_map.png", html.find("Front end of the base configuration")));
   EXPECT_THAT(html, HasSubstr("60-60"));  // the break's log scans
   const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
   EXPECT_EQ(j["base_front_end"]["breaks"].get<int>(), 1);
@@ -298,8 +301,13 @@ TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   const std::string html = Slurp(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("The recommendation &lt;r=3, g=12&gt; beats the defaults &amp; closes more loops."));
   EXPECT_THAT(html, Not(HasSubstr("<r=3")));
-  // four maps, three generations, evolution, history, parameter space, three slices, objective vs error.
-  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 14);
+  // The first screen's two maps (base, recommended), four maps, three generations, evolution,
+  // history, parameter space, three slices, objective vs error.
+  EXPECT_EQ(Count(html, "src=\"data:image/png;base64,iVBORw0KGgo"), 16);
+  // The verdict and both maps come first, before any section.
+  EXPECT_LT(html.find("class=\"verdict\""), html.find("<h2"));
+  EXPECT_LT(html.find("alt=\"the recommended map\""), html.find("<h2"));
+  EXPECT_LT(html.find("alt=\"the base configuration, mapped\""), html.find("<h2"));
   // One inline script: the one that sorts the table of evaluations; nothing loaded from elsewhere.
   EXPECT_EQ(Count(html, "<script"), 1);
   EXPECT_THAT(html, Not(HasSubstr("<script src")));

@@ -89,6 +89,7 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
   if (result.base_front_end) {
     nlohmann::json front_end = FrontEndEvidenceJson(result.base_front_end->evidence);
     front_end["choice"] = result.base_front_end->choice;
+    front_end["informed_start"] = result.base_front_end->informed_start;
     j["base_front_end"] = front_end;
   }
   j["history"] = HistoryJson(result);

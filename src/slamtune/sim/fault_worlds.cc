@@ -15,6 +15,15 @@
 //                  which there reports 1.5 m more travel than driven (a scale error of 5 % over
 //                  30 m); the pillars at both ends show the map doubled. Without the fault
 //                  (simulate --without-world-faults) the same corridor maps within a few cm.
+//   building-broken  the building (building_world.cc), a 15-minute drive, with two failures: a
+//                  wheel slip 120 m along the route (driving east along the south corridor, before
+//                  the middle of the route), where the odometry reports a 50 deg turn within 0.1 m,
+//                  beyond the +-20 deg sequential search; and, 245 m along, 3 m of travel reported
+//                  backwards (an encoder's sign error) while the robot enters a room off the north
+//                  corridor: each node is guessed about 1 m behind, beyond the +-0.15 m window, and
+//                  the rest of the route is drawn some 5 m back. Both show as breaks in the front
+//                  end's evidence; without them (simulate --without-world-faults) the log is the
+//                  building's.
 #include "slamtune/common/karto_math.h"
 #include "slamtune/sim/route_builder.h"
 #include "slamtune/sim/world_catalog.h"
@@ -74,6 +83,13 @@ World MakeCorridorLongWorld() {
   world.waypoints = route.Take();
   world.turn_radius = 0.6;
   world.odometry_faults = {Fault(OdometryFaultKind::kJump, 13.0, 30.0, 1.5)};
+  return world;
+}
+
+World MakeBuildingBrokenWorld() {
+  World world = MakeBuildingWorld();
+  world.odometry_faults = {Fault(OdometryFaultKind::kSpin, 120.0, 0.1, DegToRad(50.0)),
+                           Fault(OdometryFaultKind::kReverse, 245.0, 3.0, 0.0)};
   return world;
 }
 

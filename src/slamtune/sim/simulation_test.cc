@@ -241,6 +241,30 @@ TEST(Simulate, WithoutWorldFaultsTheFaultWorldDrivesItsRouteWithPlainOdometry) {
   EXPECT_EQ(Simulate(options).odometry.faults.size(), 1u);
 }
 
+// The large building runs for at least 15 minutes at the defaults (0.5 m/s, 5 Hz), and its broken
+// variant without its planted faults is the building's log, bit for bit.
+TEST(Simulate, BuildingRunsFifteenMinutesAndItsBrokenVariantWithoutFaultsIsTheBuilding) {
+  const Simulation& building = Cached("building");
+  EXPECT_GE(building.summary.duration_s, 15.0 * 60.0);
+  EXPECT_GE(building.summary.scans, 4000u);
+  EXPECT_LE(building.summary.scans, 4800u);
+  EXPECT_TRUE(building.odometry.faults.empty());
+  SimulationOptions options;
+  options.world = "building-broken";
+  options.plant_world_faults = false;
+  const Simulation twin = Simulate(options);
+  EXPECT_TRUE(twin.odometry.faults.empty());
+  EXPECT_EQ(AsCarmen(twin), AsCarmen(building));
+  EXPECT_EQ(twin.relations.size(), building.relations.size());
+  const Simulation& broken = Cached("building-broken");
+  ASSERT_EQ(broken.odometry.faults.size(), 2u);
+  EXPECT_NE(AsCarmen(broken), AsCarmen(building));
+  ASSERT_EQ(broken.log.scans.size(), building.log.scans.size());
+  for (std::size_t k = 0; k < building.log.scans.size(); ++k) {
+    ASSERT_EQ(broken.log.scans[k].ranges, building.log.scans[k].ranges);
+  }
+}
+
 TEST(Simulate, FaultsOfTheOptionsComeBeforeTheWorldsAndAreDeterministic) {
   SimulationOptions options;
   options.world = "office-slip";

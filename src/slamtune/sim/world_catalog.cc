@@ -30,6 +30,12 @@ constexpr Entry kWorlds[] = {
     {"corridor-long", "64 x 12 m corridor loop whose south corridor has 32 m of bare walls; odometry reports 5 % "
      "too much travel along them",
      &MakeCorridorLongWorld},
+    {"building", "60 x 36 m building: four corridors round six furnished blocks between two bands of rooms, "
+     "every room different; 450 m (15 min), loops revisited",
+     &MakeBuildingWorld},
+    {"building-broken", "building with a 50 deg wheel slip reported within 0.1 m at 120 m and 3 m of travel "
+     "reported backwards at 245 m (beyond the sequential search)",
+     &MakeBuildingBrokenWorld},
 };
 
 }  // namespace

@@ -12,6 +12,13 @@
 //   office-jump    office with a 1 m odometry jump at 20 m (doubled corridor walls);
 //   corridor-long  a corridor loop with a 60 m bare corridor, where matching along the axis
 //                  is degenerate, and 5 % too much travel reported along it.
+//
+// A large building, driven for about 15 minutes, for measuring what a tuner costs on a recording
+// of a whole floor (building_world.cc, fault_worlds.cc):
+//   building         a 60 x 36 m building: corridors round six furnished blocks, two bands of
+//                    rooms, every room different; about 450 m of route with loops revisited.
+//   building-broken  the same walls and route with a 50 deg wheel slip reported at 120 m and,
+//                    at 245 m, 3 m of travel reported backwards (two breaks).
 #pragma once
 
 #include <string>
@@ -41,5 +48,7 @@ World MakeCorridorWorld();
 World MakeOfficeSlipWorld();
 World MakeOfficeJumpWorld();
 World MakeCorridorLongWorld();
+World MakeBuildingWorld();
+World MakeBuildingBrokenWorld();
 
 }  // namespace slamtune::sim

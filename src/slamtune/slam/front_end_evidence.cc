@@ -228,4 +228,50 @@ std::string FrontEndEvidence::Summary() const {
   return lines;
 }
 
+BreakWatch::BreakWatch(const FrontEndEvidenceOptions& options, int min_matches)
+    : options_(options), min_matches_(min_matches) {
+  options_.Validate();
+  SLAMTUNE_CHECK(min_matches_ >= 1);
+}
+
+void BreakWatch::Insert(double response) {
+  if (low_.empty() || response <= low_.front()) {
+    low_.push_back(response);
+    std::push_heap(low_.begin(), low_.end());
+  } else {
+    high_.push_back(response);
+    std::push_heap(high_.begin(), high_.end(), std::greater<>());
+  }
+  // Balance: low_ holds the lower half, one more when the count is odd.
+  if (low_.size() > high_.size() + 1) {
+    std::pop_heap(low_.begin(), low_.end());
+    high_.push_back(low_.back());
+    low_.pop_back();
+    std::push_heap(high_.begin(), high_.end(), std::greater<>());
+  } else if (high_.size() > low_.size()) {
+    std::pop_heap(high_.begin(), high_.end(), std::greater<>());
+    low_.push_back(high_.back());
+    high_.pop_back();
+    std::push_heap(low_.begin(), low_.end());
+  }
+}
+
+// The element AssessFrontEnd takes as the median: index n / 2 of the sorted responses.
+double BreakWatch::Median() const { return low_.size() > high_.size() ? low_.front() : high_.front(); }
+
+std::optional<std::size_t> BreakWatch::Add(const std::vector<SequentialMatchStep>& steps) {
+  SLAMTUNE_CHECK(steps.size() == seen_ + 1);
+  ++seen_;
+  Insert(steps.back().response);
+  if (seen_ < static_cast<std::size_t>(min_matches_)) return std::nullopt;
+  // Every step whose recovery matches are all in now and that was not judged yet.
+  const auto delay = static_cast<std::size_t>(options_.recovery_matches);
+  const double median = Median();
+  while (next_ + delay < seen_) {
+    const std::size_t i = next_++;
+    if (IsBreak(steps, i, median, options_)) return i;
+  }
+  return std::nullopt;
+}
+
 }  // namespace slamtune::slam

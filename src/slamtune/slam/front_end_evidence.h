@@ -33,6 +33,8 @@
 // built-in worlds with planted failures and the four public logs (docs/metrics.md).
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -144,5 +146,34 @@ std::vector<DegenerateStretch> FindDegenerateStretches(const std::vector<Sequent
 // recovery_matches steps after it.
 bool IsBreak(const std::vector<SequentialMatchStep>& steps, std::size_t i, double median_response,
              const FrontEndEvidenceOptions& options);
+
+// Watches a run's sequential matches as they are made and says when its front end has broken,
+// so that a run which can no longer give a sound map can be stopped there (the tuner's
+// front-end search does so: a broken map is never the recommendation). A break is IsBreak's,
+// judged against the median response of the matches made so far (the whole run's median is not
+// known yet) once at least `min_matches` have been made and the recovery_matches after it are
+// in, so it is confirmed recovery_matches matches late (the first min_matches steps are judged
+// when the min_matches-th is made). Deterministic; a value (copy it with
+// the runner).
+class BreakWatch {
+ public:
+  explicit BreakWatch(const FrontEndEvidenceOptions& options = {}, int min_matches = 20);
+
+  // Call after each new step is appended to `steps` (the run's matches so far, in order);
+  // returns the index into `steps` of a break confirmed by it, if any.
+  std::optional<std::size_t> Add(const std::vector<SequentialMatchStep>& steps);
+
+ private:
+  // The median response of the steps seen so far, kept in two heaps.
+  void Insert(double response);
+  double Median() const;
+
+  FrontEndEvidenceOptions options_;
+  int min_matches_;
+  std::vector<double> low_;   // max-heap: the lower half
+  std::vector<double> high_;  // min-heap: the upper half
+  std::size_t seen_ = 0;
+  std::size_t next_ = 0;  // the first step not judged yet
+};
 
 }  // namespace slamtune::slam

@@ -1,6 +1,8 @@
 #include "slamtune/slam/front_end_evidence.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -206,6 +208,79 @@ TEST(AssessFrontEnd, RefusesBadOptionsAndHandlesNoMatches) {
   bad.min_degenerate_length_m = 0.0;
   EXPECT_THROW(bad.Validate(), InputError);
   EXPECT_EQ(AssessFrontEnd({}).Summary(), "front end: no sequential match was made");
+}
+
+// Feeds `steps` one by one to a BreakWatch; the index of the first break it confirms and the
+// number of steps it needed, or (-1, n).
+std::pair<int, int> WatchUntilBreak(const std::vector<SequentialMatchStep>& steps, int min_matches = 20) {
+  BreakWatch watch({}, min_matches);
+  std::vector<SequentialMatchStep> so_far;
+  for (const SequentialMatchStep& step : steps) {
+    so_far.push_back(step);
+    if (const auto i = watch.Add(so_far)) return {static_cast<int>(*i), static_cast<int>(so_far.size())};
+  }
+  return {-1, static_cast<int>(steps.size())};
+}
+
+TEST(BreakWatch, ConfirmsABreakAsSoonAsItsRecoveryMatchesAreIn) {
+  auto steps = Steady(100);
+  steps[60].at_heading_edge = true;
+  steps[60].dtheta = 0.345;
+  steps[60].response = 0.07;
+  EXPECT_EQ(AssessFrontEnd(steps).breaks, 1);
+  const auto [index, needed] = WatchUntilBreak(steps);
+  EXPECT_EQ(index, 60);
+  EXPECT_EQ(needed, 64);  // the break and its three recovery matches
+}
+
+TEST(BreakWatch, AGlitchUndoneOrASteadyRunIsNeverStopped) {
+  auto steps = Steady(100);
+  EXPECT_EQ(WatchUntilBreak(steps).first, -1);
+  steps[60].at_heading_edge = true;
+  steps[60].dtheta = 0.349;
+  steps[60].response = 0.11;
+  steps[61].dtheta = -0.28;  // taken back by the next match
+  EXPECT_EQ(WatchUntilBreak(steps).first, -1);
+}
+
+TEST(BreakWatch, EarlyStepsAreJudgedOnceEnoughMatchesGiveAMedian) {
+  auto steps = Steady(60);
+  steps[5].at_window_edge = true;
+  steps[5].dx = 0.15;
+  steps[5].response = 0.05;
+  const auto [index, needed] = WatchUntilBreak(steps, 20);
+  EXPECT_EQ(index, 5);
+  EXPECT_EQ(needed, 20);
+}
+
+TEST(BreakWatch, TheRunningMedianIsAssessFrontEndsMedianOfThePrefix) {
+  // The same verdicts as AssessFrontEnd on each prefix that ends with the step's recovery matches.
+  std::vector<SequentialMatchStep> steps;
+  // Responses wander, and every 17th match hits the window's edge with a poor fit that stays.
+  for (int i = 0; i < 120; ++i) steps.push_back(Step(i, 0.4 + 0.5 * std::fabs(std::sin(0.37 * i)), i % 17 == 0));
+  for (SequentialMatchStep& s : steps) {
+    if (!s.at_window_edge) continue;
+    s.dx = 0.15;
+    s.response = 0.02 + 0.001 * s.log_index / 10;
+  }
+  BreakWatch watch({}, 1);
+  std::vector<SequentialMatchStep> so_far;
+  std::vector<int> watched;
+  for (const SequentialMatchStep& step : steps) {
+    so_far.push_back(step);
+    if (const auto i = watch.Add(so_far)) watched.push_back(static_cast<int>(*i));
+  }
+  std::vector<int> direct;
+  for (std::size_t i = 0; i + 3 < steps.size(); ++i) {
+    std::vector<SequentialMatchStep> prefix(steps.begin(), steps.begin() + static_cast<long>(i) + 4);
+    std::vector<double> r;
+    for (const auto& p : prefix) r.push_back(p.response);
+    std::nth_element(r.begin(), r.begin() + static_cast<long>(r.size() / 2), r.end());
+    if (IsBreak(prefix, i, r[r.size() / 2], {})) direct.push_back(static_cast<int>(i));
+  }
+  ASSERT_FALSE(direct.empty());
+  ASSERT_FALSE(watched.empty());
+  EXPECT_EQ(watched.front(), direct.front());
 }
 
 }  // namespace
