@@ -4,6 +4,7 @@
 # loop closures and error against the truth as results.json records. For a slam_toolbox base in
 # the synchronous node's mode (best.yaml, whose first comment names the mode) and for a
 # slam_karto base (best_slam_karto.yaml).
+# `slamtune render --params FILE` reads the file with the same loader.
 # Usage: reproduce_cli_test.sh SLAMTUNE_BINARY. Exit 0 pass, 1 fail, 77 skip.
 set -u
 bin=${1:?usage: reproduce_cli_test.sh SLAMTUNE_BINARY}
@@ -37,6 +38,10 @@ print(r["nodes"], r["loop_closures"], "%.9g" % r["gt_error"]["trans_mean_m"])
 PY
 }
 
+json_resolution() {
+  python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["map"]["resolution"])' "$1"
+}
+
 for case in slam_toolbox_sync:best.yaml slam_karto:best_slam_karto.yaml; do
   IFS=: read -r preset file <<<"$case"
   out="$work/opt_$preset"
@@ -50,6 +55,19 @@ for case in slam_toolbox_sync:best.yaml slam_karto:best_slam_karto.yaml; do
   expected=$(written "$out/results.json")
   got=$(ran "$work/run_$preset/run.json")
   [[ "$got" == "$expected" ]] || fail "$preset: run --params $file gives '$got', optimize recorded '$expected'"
+  # render reads the file with the same loader: from the candidate's trajectory it draws the same
+  # map as with the mode named explicitly, at the candidate's resolution.
+  for how in file explicit; do
+    extra=()
+    [[ $how == explicit ]] && extra=(--preset "$preset")
+    "$bin" render "$log" --poses "$work/run_$preset/trajectory.txt" --params "$out/$file" "${extra[@]}" \
+      --out "$work/render_${preset}_$how" >"$work/render_$preset.txt" 2>&1 ||
+      fail "$preset: render --params $file failed: $(cat "$work/render_$preset.txt")"
+  done
+  cmp -s "$work/render_${preset}_file/map.pgm" "$work/render_${preset}_explicit/map.pgm" ||
+    fail "$preset: render --params $file draws another map than with --preset $preset"
+  grep -q "^resolution: $(json_resolution "$work/run_$preset/run.json")\$" "$work/render_${preset}_file/map.yaml" ||
+    fail "$preset: render --params $file: resolution differs from the run's"
 done
 # The mode comes from best.yaml's first comment; --preset overrides it.
 grep -q '"node_mode": "slam_toolbox_sync"' "$work/run_slam_toolbox_sync/run.json" ||

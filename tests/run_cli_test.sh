@@ -89,6 +89,31 @@ EOF
   fail "node count depends on loop closure (it must depend on odometry only)"
 grep -q '"node_mode": "slam_toolbox_async"' "$work/c/run.json" || fail "a slam_toolbox file does not run its node"
 
+# 3b. A laser whose beam count changes: every other scan as a ROBOTLASER1 line keeping beams 0, 2, ...,
+# 180 at their own angles (91 beams, 2 degree steps). The node drops them (--beams node, the default);
+# --beams per-geometry runs one Karto laser per geometry and drops none (docs/engine.md §3.5).
+awk 'BEGIN { pi = atan2(0, -1) }
+     /^FLASER / && ++k % 2 == 0 {
+       n = $2; out = sprintf("ROBOTLASER1 0 %.17g %.17g %.17g 30 0 0 91", -pi / 2, pi, pi / 90)
+       for (i = 0; i < n; i += 2) out = out " " $(3 + i)
+       out = out " 0"
+       for (j = 3 + n; j <= 8 + n; ++j) out = out " " $j
+       out = out " 0 0 0 0 0"
+       for (j = 9 + n; j <= 11 + n; ++j) out = out " " $j
+       print out; next
+     }
+     { print }' "$log" >"$work/two_counts.clf"
+"$bin" run "$work/two_counts.clf" --out "$work/n" "${fast[@]}" --quiet >/dev/null 2>&1 || fail "run on two counts failed"
+"$bin" run "$work/two_counts.clf" --out "$work/g" --beams per-geometry "${fast[@]}" --quiet >"$work/g.out" 2>&1 ||
+  fail "run --beams per-geometry failed: $(cat "$work/g.out")"
+[[ "$(json_int "$work/n/run.json" scans_wrong_reading_count)" -gt 100 ]] || fail "the node kept scans of another count"
+[[ "$(json_int "$work/g/run.json" scans_wrong_reading_count)" == "0" ]] || fail "per-geometry dropped scans"
+[[ "$(grep -c '"name": "laser_' "$work/g/run.json")" == "2" ]] || fail "per-geometry: run.json does not list two lasers"
+grep -q '"laser_link": 1' "$work/g/run.json" || fail "per-geometry: the lasers' first scans are not linked"
+grep -q '^lasers: laser_0 (181 readings) .*, laser_1 (91 readings)' "$work/g.out" || fail "no lasers line: $(cat "$work/g.out")"
+"$bin" run "$work/two_counts.clf" --out "$work/g2" --beams per-geometry "${fast[@]}" --quiet >/dev/null 2>&1
+cmp -s "$work/g/trajectory.txt" "$work/g2/trajectory.txt" || fail "two per-geometry runs differ"
+
 # 4. Bad input: exit 2 with a message naming the problem.
 expect_error() {  # PATTERN ARGS...
   local pattern=$1

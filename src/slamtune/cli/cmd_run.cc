@@ -249,6 +249,32 @@ std::string RefusedByNodeText(const slam::RunSummary& summary, slam::NodeMode mo
                      reasons);
 }
 
+// run.json's "lasers": the run's Karto lasers (one, or one per beam geometry with --beams
+// per-geometry, docs/engine.md §3.5) and the nodes of each.
+nlohmann::json LasersJson(const slam::LogLasers& lasers, const slam::RunSummary& summary) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t k = 0; k < lasers.geometries.size(); ++k) {
+    const slam::LaserGeometry& g = *lasers.geometries[k];
+    out.push_back({{"name", lasers.names[k]},
+                   {"readings", g.num_readings},
+                   {"first_angle_rad", g.min_angle},
+                   {"angle_increment_rad", g.angular_resolution},
+                   {"nodes", summary.nodes_per_laser[k]}});
+  }
+  return out;
+}
+
+// "lasers: laser_0 (180 readings) 2412 nodes, laser_1 (179 readings) 1207 nodes ...", or "" with one laser.
+std::string LasersText(const slam::LogLasers& lasers, const slam::RunSummary& summary) {
+  if (lasers.geometries.size() < 2) return "";
+  std::string text;
+  for (std::size_t k = 0; k < lasers.geometries.size(); ++k) {
+    text += fmt::format("{}{} ({} readings) {} nodes", text.empty() ? "" : ", ", lasers.names[k],
+                        lasers.geometries[k]->num_readings, summary.nodes_per_laser[k]);
+  }
+  return "lasers: " + text + " (--beams per-geometry: one Karto laser per beam geometry, which the node does not do)";
+}
+
 // run.json's counts, timing, laser, input, parameters and map metrics.
 nlohmann::json RunJson(const slam::RunSummary& summary, const io::LaserLog& log, const std::string& log_label,
                        const slam::MapperParams& params, const RunMap& map) {
@@ -336,6 +362,7 @@ int Run(const RunArgs& args) {
   const RunMap map = WriteMap(runner, params, input.log_label, args.out);
   const slam::FrontEndEvidence front_end = WriteRunTables(runner, summary, trajectory, map.image, args.out);
   nlohmann::json run = RunJson(summary, *input.log, input.log_label, params, map);
+  run["lasers"] = LasersJson(runner.lasers(), summary);
   const std::string gt_line = AddGtError(trajectory, input, run);
   run["front_end"] = report::FrontEndEvidenceJson(front_end);
   run["peak_memory_mb"] = PeakMemoryMb();
@@ -343,6 +370,8 @@ int Run(const RunArgs& args) {
 
   progress.Finish();
   PrintRunSummary(summary, params.node_mode, gt_line, args.out, front_end);
+  const std::string lasers = LasersText(runner.lasers(), summary);
+  if (!lasers.empty()) std::printf("%s\n", lasers.c_str());
   return 0;
 }
 

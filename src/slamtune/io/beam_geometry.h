@@ -15,9 +15,9 @@
 //     another count, counted as the run's scans_wrong_reading_count), and the counts of
 //     NodeBeamCount say how many, for each node, wherever the log is described.
 //   * kPerGeometry: nothing is changed; the engine gives each beam geometry a Karto laser of its
-//     own, as Karto does for several lasers (exact angles, no reading changed). For logs where the
-//     driver cannot be made to publish one count; no node runs this way without a frame per
-//     geometry.
+//     own, as Karto does for several lasers (exact angles, no reading changed; slam/log_runner.h
+//     LasersOf, docs/engine.md §3.5). For logs where the driver cannot be made to publish one
+//     count; neither node runs this way on such a log.
 //   * kNearestBeam: an approximation: the geometry most scans have (the first seen on a tie) is
 //     the reference; every scan with another one is resampled onto it, each reference beam taking
 //     the reading of the nearest beam of the scan's own geometry, and +inf (no return) where the

@@ -26,13 +26,12 @@ TrajectoryMap::TrajectoryMap(std::shared_ptr<const io::LaserLog> log, const slam
   options.Validate();
   if (log_->scans.empty()) return;
   const slam::OdometryFrame frame = slam::OdometryFrameOf(*log_);
-  geometry_ =
-      std::make_shared<const slam::LaserGeometry>(slam::GeometryForRecord(log_->scans.front(), base, frame.offset));
+  lasers_ = std::make_shared<const slam::LogLasers>(slam::LasersOf(*log_, base, frame));
   grid_ = slam::GridOptionsOf(base);
   const Pose2* last = nullptr;
   for (std::size_t i = 0; i < log_->scans.size(); ++i) {
     const io::LaserScanRecord& record = log_->scans[i];
-    if (static_cast<int>(record.ranges.size()) != geometry_->num_readings) continue;
+    if (static_cast<int>(record.ranges.size()) != lasers_->geometries[lasers_->LaserOf(i)]->num_readings) continue;
     const Pose2& odom = slam::OdometricPose(record, frame);
     if (last != nullptr) {
       const double travel = std::hypot(odom.x - last->x, odom.y - last->y);
@@ -51,7 +50,7 @@ slam::OccupancyGrid TrajectoryMap::Draw(std::span<const io::TimedPose> trajector
   for (const std::size_t i : indices_) {
     const io::LaserScanRecord& record = log_->scans[i];
     std::shared_ptr<const std::vector<double>> ranges(log_, &record.ranges);
-    slam::LaserScan scan(geometry_, ranges, trajectory[i].pose, record.ipc_time);
+    slam::LaserScan scan(lasers_->geometries[lasers_->LaserOf(i)], ranges, trajectory[i].pose, record.ipc_time);
     scan.SetSensorPose(trajectory[i].pose);
     scans.push_back(std::move(scan));
   }

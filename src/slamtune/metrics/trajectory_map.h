@@ -21,6 +21,7 @@
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/trajectory.h"
 #include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/occupancy_grid.h"
 
@@ -37,8 +38,10 @@ struct TrajectoryMapOptions {
 class TrajectoryMap {
  public:
   // Chooses the drawn scans from `log`'s odometry; `base` gives the ranges (laser range
-  // settings) and the grid (resolution, min_pass_through, occupancy_threshold). Scans whose
-  // reading count differs from the first scan's are not drawn (the mapper skips them too).
+  // settings) and the grid (resolution, min_pass_through, occupancy_threshold). Each scan is
+  // drawn with its Karto laser (slam::LasersOf: the first scan's, or with --beams per-geometry
+  // its beam geometry's); scans whose reading count differs from their laser's are not drawn
+  // (the mapper skips them too).
   TrajectoryMap(std::shared_ptr<const io::LaserLog> log, const slam::MapperParams& base,
                 const TrajectoryMapOptions& options = {});
 
@@ -51,7 +54,7 @@ class TrajectoryMap {
 
  private:
   std::shared_ptr<const io::LaserLog> log_;
-  std::shared_ptr<const slam::LaserGeometry> geometry_;
+  std::shared_ptr<const slam::LogLasers> lasers_;
   slam::OccupancyGridOptions grid_;
   std::vector<std::size_t> indices_;
 };

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/beam_geometry.h"
 #include "slamtune/sim/simulation.h"
 
 namespace slamtune::metrics {
@@ -50,6 +51,33 @@ TEST(TrajectoryMap, WithoutAStepEveryScanIsDrawn) {
   options.min_travel_m = 0.0;
   options.min_turn_rad = 0.0;
   EXPECT_EQ(TrajectoryMap(log, slam::MapperParams{}, options).scan_indices().size(), log->scans.size());
+}
+
+// A laser whose odd scans keep every other beam (at their own angles): the node's single laser
+// skips them, --beams per-geometry draws them with a laser of their own (docs/engine.md §3.5).
+TEST(TrajectoryMap, PerGeometryDrawsEveryScanWithItsOwnLaser) {
+  sim::Simulation s;
+  io::LaserLog log = *OfficeLog(&s);
+  for (std::size_t i = 1; i < log.scans.size(); i += 2) {
+    io::LaserScanRecord& scan = log.scans[i];
+    std::vector<double> kept;
+    for (std::size_t b = 0; b < scan.ranges.size(); b += 2) kept.push_back(scan.ranges[b]);
+    scan.ranges = kept;
+    scan.angle_increment *= 2.0;
+  }
+  TrajectoryMapOptions every;
+  every.min_travel_m = 0.0;
+  every.min_turn_rad = 0.0;
+  io::LaserLog node = log;
+  io::HarmonizeBeams(io::BeamPolicy::kNode, &node);
+  io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
+  const TrajectoryMap one(std::make_shared<const io::LaserLog>(std::move(node)), slam::MapperParams{}, every);
+  const TrajectoryMap two(std::make_shared<const io::LaserLog>(std::move(log)), slam::MapperParams{}, every);
+  EXPECT_EQ(one.scan_indices().size(), (s.log.scans.size() + 1) / 2);
+  EXPECT_EQ(two.scan_indices().size(), s.log.scans.size());
+  const slam::OccupancyGridSummary drawn = two.Draw(s.truth).summary();
+  EXPECT_GT(drawn.hits, one.Draw(s.truth).summary().hits);
+  EXPECT_LT(OverruledShare(drawn), 0.10);  // the thinned scans' beams land on the same walls
 }
 
 // The figures the objectives read must rank a broken trajectory worse than the true one: a

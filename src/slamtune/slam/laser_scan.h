@@ -60,6 +60,7 @@ class LaserScan {
 
   int state_id = -1;   // index among processed scans (set by the mapper)
   int log_index = -1;  // index of the scan in the log (for reports)
+  int laser = 0;       // which of the mapper's lasers took it (§3.5; 0 with one laser)
 
   const Pose2& odometric_pose() const { return odometric_pose_; }
   const Pose2& corrected_pose() const { return corrected_pose_; }

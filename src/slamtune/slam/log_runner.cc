@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/beam_geometry.h"
 
 namespace slamtune::slam {
 
@@ -47,12 +48,51 @@ LaserGeometry GeometryForRecord(const io::LaserScanRecord& record, const MapperP
   return g;
 }
 
+namespace {
+
+// "laser_7", zero-padded to the width of the largest index so that names sort in index order.
+std::string LaserName(std::size_t index, std::size_t count) {
+  const std::size_t width = fmt::formatted_size("{}", count > 1 ? count - 1 : 0);
+  return fmt::format("laser_{:0{}}", index, width);
+}
+
+}  // namespace
+
+LogLasers LasersOf(const io::LaserLog& log, const MapperParams& params, const OdometryFrame& frame) {
+  LogLasers lasers;
+  if (log.scans.empty()) return lasers;
+  const auto make = [&](const io::LaserScanRecord& record) {
+    lasers.geometries.push_back(std::make_shared<const LaserGeometry>(GeometryForRecord(record, params, frame.offset)));
+  };
+  if (log.beams.policy != io::BeamPolicyName(io::BeamPolicy::kPerGeometry)) {
+    make(log.scans.front());
+  } else {
+    std::vector<io::BeamGeometry> seen;
+    lasers.laser_of_scan.reserve(log.scans.size());
+    for (const io::LaserScanRecord& record : log.scans) {
+      const io::BeamGeometry g = io::GeometryOf(record);
+      auto it = std::find_if(seen.begin(), seen.end(),
+                             [&](const io::BeamGeometry& s) { return s.SameAs(g, io::kSameAngleTolerance); });
+      if (it == seen.end()) {
+        seen.push_back(g);
+        make(record);
+        it = seen.end() - 1;
+      }
+      lasers.laser_of_scan.push_back(static_cast<int>(it - seen.begin()));
+    }
+  }
+  for (std::size_t k = 0; k < lasers.geometries.size(); ++k) {
+    lasers.names.push_back(LaserName(k, lasers.geometries.size()));
+  }
+  return lasers;
+}
+
 LogRunner::LogRunner(std::shared_ptr<const io::LaserLog> log, const MapperParams& params, SharedWork shared)
     : log_(std::move(log)), mapper_(params, std::move(shared)) {
   SLAMTUNE_CHECK(log_ != nullptr);
   if (log_->scans.empty()) throw InputError(log_->path, 0, "the log has no laser scans");
   frame_ = OdometryFrameOf(*log_);
-  geometry_ = std::make_shared<const LaserGeometry>(GeometryForRecord(log_->scans.front(), params, frame_.offset));
+  lasers_ = std::make_shared<const LogLasers>(LasersOf(*log_, params, frame_));
   state_of_log_scan_.assign(log_->scans.size(), -1);
 }
 
@@ -69,12 +109,15 @@ ProcessResult LogRunner::Step() {
   } else {
     // The record's readings are shared with the log (aliasing pointer keeps the log alive).
     std::shared_ptr<const std::vector<double>> ranges(log_, &record.ranges);
-    std::shared_ptr<const LaserGeometry> geometry = geometry_;
-    if (static_cast<int>(record.ranges.size()) != geometry_->num_readings) {
+    const int laser = lasers_->LaserOf(index);
+    std::shared_ptr<const LaserGeometry> geometry = lasers_->geometries[laser];
+    if (static_cast<int>(record.ranges.size()) != geometry->num_readings) {
+      // Another count than its laser's (one laser only): Karto refuses it (§2.1).
       geometry = std::make_shared<const LaserGeometry>(GeometryForRecord(record, mapper_.params(), frame_.offset));
     }
     LaserScan scan(geometry, ranges, OdometricPose(record, frame_), record.ipc_time);
     scan.log_index = static_cast<int>(index);
+    scan.laser = laser;
     result = mapper_.Process(std::move(scan));
     state_of_log_scan_[index] = result.state_id;
     if (result.sequential_response >= 0.0) {
@@ -102,6 +145,9 @@ RunSummary LogRunner::Summary() const {
   s.nodes = c.scans_processed;
   s.scans_not_moved = c.scans_not_moved;
   s.scans_wrong_reading_count = c.scans_wrong_reading_count;
+  for (std::size_t l = 0; l < lasers_->geometries.size(); ++l) {
+    s.nodes_per_laser.push_back(static_cast<int>(mapper_.scans_by_laser().scans_of(static_cast<int>(l)).size()));
+  }
   s.edges = c.edges_added;
   s.duplicate_edges = c.duplicate_edges;
   s.near_chain_matches = c.near_chain_matches;
@@ -117,8 +163,8 @@ RunSummary LogRunner::Summary() const {
   for (const SolveSummary& run : mapper_.solver_runs()) s.solver_wall_s += run.wall_s;
   s.wall_s = wall_s_;
   s.log_duration_s = log_->scans.back().ipc_time - log_->scans.front().ipc_time;
-  s.laser_max_range = geometry_->max_range;
-  s.range_threshold = geometry_->range_threshold;
+  s.laser_max_range = lasers_->geometries.front()->max_range;
+  s.range_threshold = lasers_->geometries.front()->range_threshold;
   return s;
 }
 

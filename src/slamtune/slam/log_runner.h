@@ -4,7 +4,9 @@
 // with a zero offset), readings unchanged,
 // maxRange = min(laser_max_range_cap, the scan's no-return value), rangeThreshold by the rule
 // of §9.2, time = ipc timestamp; the node's own choice of scans first (node_scan_filter.h: the
-// node mode, throttle_scans, the synchronous node's filter).
+// node mode, throttle_scans, the synchronous node's filter). One Karto laser, made from the
+// first scan, as both nodes make it; with --beams per-geometry (log.beams.policy) one laser per
+// beam geometry instead (LasersOf, §3.5).
 //
 // LogRunner is a value with a step API: Step() processes one log scan, so the state after log
 // scan k can be copied (with SetParams() on the copy) and both copies continued; results do not
@@ -14,6 +16,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "slamtune/io/laser_log.h"
@@ -46,6 +49,7 @@ struct RunSummary {
   int nodes = 0;            // processed scans
   int scans_not_moved = 0;
   int scans_wrong_reading_count = 0;
+  std::vector<int> nodes_per_laser;                  // processed scans of each laser (LogLasers order)
   std::array<int, kNumEdgeKinds> edges{};            // by EdgeKind
   std::array<int, kNumEdgeKinds> duplicate_edges{};  // dropped LinkScans calls
   int near_chain_matches = 0;          // near chains tested (size >= g)
@@ -56,8 +60,8 @@ struct RunSummary {
   double solver_wall_s = 0.0;  // time spent in back-end solves
   double wall_s = 0.0;         // time spent in Step()
   double log_duration_s = 0.0;  // last - first ipc timestamp of the log's scans
-  double laser_max_range = 0.0;   // maxRange used (m)
-  double range_threshold = 0.0;   // rangeThreshold used (m)
+  double laser_max_range = 0.0;  // maxRange used (m): laser 0's, made from the log's first scan
+  double range_threshold = 0.0;  // rangeThreshold used (m): laser 0's
   int total_edges() const;
 };
 
@@ -79,6 +83,20 @@ inline const Pose2& OdometricPose(const io::LaserScanRecord& record, const Odome
   return frame.robot_poses ? record.robot_pose : record.laser_pose;
 }
 
+// The Karto lasers a log is run with (docs/engine.md §3.5). One, made from the first scan,
+// unless log.beams.policy is "per-geometry": then one per beam geometry (io::GeometryOf, the same
+// within io::kSameAngleTolerance), made from the first scan that has it, numbered in order of
+// first appearance in the log. Each scan is read with its laser's exact angles.
+struct LogLasers {
+  std::vector<std::shared_ptr<const LaserGeometry>> geometries;  // by laser
+  // "laser_0", "laser_1", ...: the names a user would give the lasers' frames so that Karto,
+  // which takes its lasers in name order, takes them in this order (zero-padded past 10).
+  std::vector<std::string> names;
+  std::vector<int> laser_of_scan;  // by log scan; empty: every scan is laser 0's
+  int LaserOf(std::size_t log_index) const { return laser_of_scan.empty() ? 0 : laser_of_scan[log_index]; }
+};
+LogLasers LasersOf(const io::LaserLog& log, const MapperParams& params, const OdometryFrame& frame);
+
 class LogRunner {
  public:
   // Validates `params`. The log is shared (read-only) by all copies of the runner. `shared`
@@ -95,8 +113,8 @@ class LogRunner {
   // Steps to the end; `progress(done, total)` is called after every step when set.
   void RunToEnd(const std::function<void(std::size_t, std::size_t)>& progress = {});
 
-  // Changes parameters for the scans still to come (see Mapper::SetParams). The laser
-  // geometry stays the one built at construction.
+  // Changes parameters for the scans still to come (see Mapper::SetParams). The lasers stay
+  // the ones built at construction.
   void SetParams(const MapperParams& params) { mapper_.SetParams(params); }
   const Mapper& mapper() const { return mapper_; }
   // Every match and solve is also written to `trace` (run_trace.h); null: none.
@@ -104,6 +122,7 @@ class LogRunner {
   // See Mapper::set_skip_unlinkable_near_chains (same results either way).
   void set_skip_unlinkable_near_chains(bool on) { mapper_.set_skip_unlinkable_near_chains(on); }
   const io::LaserLog& log() const { return *log_; }
+  const LogLasers& lasers() const { return *lasers_; }
 
   RunSummary Summary() const;
   // Every sequential match so far, in log order (front_end_evidence.h).
@@ -120,7 +139,7 @@ class LogRunner {
 
   std::shared_ptr<const io::LaserLog> log_;
   OdometryFrame frame_;
-  std::shared_ptr<const LaserGeometry> geometry_;
+  std::shared_ptr<const LogLasers> lasers_;  // shared by copies
   Mapper mapper_;
   std::size_t next_ = 0;
   std::vector<int> state_of_log_scan_;  // state id per log scan, -1 if not processed

@@ -3,10 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/beam_geometry.h"
 #include "slamtune/io/carmen_reader.h"
 
 namespace slamtune::slam {
@@ -40,6 +42,80 @@ TEST(GeometryForRecord, CapsMaxRangeAndAppliesTheThresholdRule) {
   p = MapperParams::Preset("slam_toolbox");
   r.max_range = 50.0;
   EXPECT_EQ(GeometryForRecord(r, p).range_threshold, 20.0);
+}
+
+// `record` with `n` readings of 2 m, `increment` apart from `angle_min`.
+io::LaserScanRecord WithBeams(io::LaserScanRecord record, std::size_t n, double angle_min, double increment) {
+  record.ranges.assign(n, 2.0);
+  record.angle_min = angle_min;
+  record.angle_increment = increment;
+  return record;
+}
+
+TEST(LasersOf, OneLaserFromTheFirstScanUnlessPerGeometry) {
+  io::LaserLog log;
+  log.scans = {WithBeams(Record({}, 0), 5, -1.0, 0.5), WithBeams(Record({}, 1), 3, -1.0, 1.0),
+               WithBeams(Record({}, 2), 5, -1.0 + 5e-7, 0.5),  // the first geometry within 1e-6 rad
+               WithBeams(Record({}, 3), 5, -0.9, 0.5), WithBeams(Record({}, 4), 3, -1.0, 1.0)};
+  const MapperParams p;
+  io::HarmonizeBeams(io::BeamPolicy::kNode, &log);
+  LogLasers one = LasersOf(log, p, OdometryFrameOf(log));
+  ASSERT_EQ(one.geometries.size(), 1u);
+  EXPECT_EQ(one.geometries[0]->num_readings, 5);
+  EXPECT_TRUE(one.laser_of_scan.empty());
+  EXPECT_EQ(one.LaserOf(4), 0);
+  EXPECT_EQ(one.names, std::vector<std::string>{"laser_0"});
+  io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
+  const LogLasers lasers = LasersOf(log, p, OdometryFrameOf(log));
+  ASSERT_EQ(lasers.geometries.size(), 3u);  // in order of first appearance
+  EXPECT_EQ(lasers.laser_of_scan, (std::vector<int>{0, 1, 0, 2, 1}));
+  EXPECT_EQ(lasers.geometries[1]->num_readings, 3);
+  EXPECT_EQ(lasers.geometries[1]->angular_resolution, 1.0);
+  EXPECT_EQ(lasers.geometries[2]->min_angle, -0.9);
+  EXPECT_EQ(lasers.geometries[0]->min_angle, -1.0);  // the first scan that has it
+  EXPECT_EQ(GeometryKeyWords(*lasers.geometries[0]), GeometryKeyWords(GeometryForRecord(log.scans[0], p)));
+  EXPECT_EQ(lasers.names, (std::vector<std::string>{"laser_0", "laser_1", "laser_2"}));
+}
+
+TEST(LasersOf, NamesSortInLaserOrder) {
+  io::LaserLog log;
+  for (int k = 0; k < 12; ++k) log.scans.push_back(WithBeams(Record({}, k), 3 + k, -1.0, 0.1));
+  io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
+  const LogLasers lasers = LasersOf(log, MapperParams{}, OdometryFrameOf(log));
+  ASSERT_EQ(lasers.names.size(), 12u);
+  EXPECT_EQ(lasers.names.front(), "laser_00");
+  EXPECT_EQ(lasers.names.back(), "laser_11");
+  EXPECT_TRUE(std::is_sorted(lasers.names.begin(), lasers.names.end()));
+}
+
+// Odometry only: the node drops the scans of the second count, per-geometry maps them with a
+// laser of their own, whose moved-enough test looks at its own scans only (§3.5).
+TEST(LogRunner, PerGeometryKeepsScansOfAnotherCount) {
+  io::LaserLog log;
+  for (int k = 0; k < 5; ++k) {
+    log.scans.push_back(WithBeams(Record({0.5 * k, 0, 0}, k), k % 2 == 0 ? 5 : 3, -1.0, k % 2 == 0 ? 0.5 : 1.0));
+  }
+  MapperParams p;
+  p.use_scan_matching = false;
+  p.minimum_travel_distance = 0.8;
+  io::HarmonizeBeams(io::BeamPolicy::kNode, &log);
+  LogRunner node(std::make_shared<const io::LaserLog>(log), p);
+  node.RunToEnd();
+  EXPECT_EQ(node.Summary().scans_wrong_reading_count, 2);
+  EXPECT_EQ(node.Summary().nodes, 3);
+  EXPECT_EQ(node.Summary().nodes_per_laser, std::vector<int>{3});
+  io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
+  LogRunner per_geometry(std::make_shared<const io::LaserLog>(log), p);
+  per_geometry.RunToEnd();
+  const RunSummary s = per_geometry.Summary();
+  EXPECT_EQ(s.scans_wrong_reading_count, 0);
+  EXPECT_EQ(s.scans_not_moved, 0);  // each laser moved 1 m since its own last scan
+  EXPECT_EQ(s.nodes_per_laser, (std::vector<int>{3, 2}));
+  const std::vector<LaserScan>& scans = per_geometry.mapper().scans();
+  ASSERT_EQ(scans.size(), 5u);
+  EXPECT_EQ(scans[1].laser, 1);
+  EXPECT_EQ(scans[1].geometry().num_readings, 3);
+  EXPECT_EQ(scans[1].geometry().angular_resolution, 1.0);
 }
 
 TEST(LogRunner, TrajectoryComposesOdometryOfSkippedScans) {

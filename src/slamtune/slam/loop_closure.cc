@@ -5,8 +5,9 @@
 
 namespace slamtune::slam {
 
-std::vector<int> FindPossibleLoopClosure(const PoseGraph& graph, std::span<const Pose2> reference_poses, int scan,
-                                         const LoopSearchOptions& options, int* cursor) {
+std::vector<int> FindPossibleLoopClosure(const PoseGraph& graph, std::span<const Pose2> reference_poses,
+                                         std::span<const int> walk, int scan, const LoopSearchOptions& options,
+                                         int* cursor) {
   SLAMTUNE_CHECK(cursor != nullptr);
   const int n = graph.num_vertices();
   SLAMTUNE_CHECK(scan >= 0 && scan < n && static_cast<int>(reference_poses.size()) >= n);
@@ -17,8 +18,8 @@ std::vector<int> FindPossibleLoopClosure(const PoseGraph& graph, std::span<const
   const double limit = options.radius * options.radius + kKartoTolerance;
   const auto g = static_cast<std::size_t>(options.minimum_chain_size);
   std::vector<int> chain;
-  for (; *cursor < n; ++*cursor) {
-    const int candidate = *cursor;
+  for (; *cursor < static_cast<int>(walk.size()); ++*cursor) {
+    const int candidate = walk[*cursor];
     if (SquaredDistance(reference_poses[candidate], ref) < limit) {
       if (linked[candidate]) {
         chain.clear();  // a linked scan breaks the run (§6.2 item 2)
@@ -30,7 +31,7 @@ std::vector<int> FindPossibleLoopClosure(const PoseGraph& graph, std::span<const
       chain.clear();
     }
   }
-  return chain;
+  return chain;  // [QUIRK] on another laser's walk a pending run of any length (§6.2)
 }
 
 }  // namespace slamtune::slam

@@ -1,7 +1,8 @@
 // Loop-closure candidate search (docs/engine.md §6.2): FindPossibleLoopClosure walks the
-// processed scans in state-id order from a persistent cursor and returns the next run of
-// consecutive scans that lie inside r of the current scan, are not graph-linked to it within
-// r, are at least g long and are followed by a scan outside r.
+// processed scans of one laser (§3.5) in order from a persistent cursor and returns the next
+// run of consecutive scans that lie inside r of the current scan, are not graph-linked to it
+// within r, are at least g long and are followed by a scan outside r; or, at the end of the
+// walk, whatever run is pending, of any length (always empty on the current scan's own laser).
 //
 // The cursor is shared by all calls of one TryCloseLoop (§6.1), so each run is tried at most
 // once; after an accepted closure the caller recomputes `linked` implicitly by calling again
@@ -22,9 +23,12 @@ struct LoopSearchOptions {
 };
 
 // §6.2: the candidate test is d^2 < r^2 + 1e-6 and the linked set is NearLinked(scan, r), whose
-// test is d^2 <= r^2 - 1e-6. `scan` is the last vertex of `graph`; `*cursor` is advanced up to
-// (not past) the out-of-range scan that ends a returned run. An empty result ends the search.
-std::vector<int> FindPossibleLoopClosure(const PoseGraph& graph, std::span<const Pose2> reference_poses, int scan,
-                                         const LoopSearchOptions& options, int* cursor);
+// test is d^2 <= r^2 - 1e-6. `walk` holds the state ids of one laser's scans in order (all of
+// them with one laser); `scan` is the last vertex of `graph`; `*cursor`, an index into `walk`,
+// is advanced up to (not past) the out-of-range scan that ends a returned run. An empty result
+// ends the search.
+std::vector<int> FindPossibleLoopClosure(const PoseGraph& graph, std::span<const Pose2> reference_poses,
+                                         std::span<const int> walk, int scan, const LoopSearchOptions& options,
+                                         int* cursor);
 
 }  // namespace slamtune::slam

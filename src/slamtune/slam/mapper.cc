@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "slamtune/common/error.h"
@@ -24,6 +25,24 @@ bool SameOptions(const ScanMatcherOptions& a, const ScanMatcherOptions& b) {
          a.threads == b.threads;
 }
 
+// The solve cache's stored barycentres (§2.2) depend on each node's scan: its readings (its log
+// index: the cache is shared by runs of one log) and its laser geometry. Appends each distinct
+// geometry's words once, then one word per scan: the geometry's place in that list and the log index.
+void AppendScansKey(std::span<const LaserScan> scans, std::vector<std::uint64_t>* key) {
+  std::vector<const LaserGeometry*> geometries;
+  std::vector<std::uint64_t> words;
+  words.reserve(scans.size());
+  for (const LaserScan& s : scans) {
+    auto it = std::find(geometries.begin(), geometries.end(), &s.geometry());
+    if (it == geometries.end()) it = geometries.insert(it, &s.geometry());
+    const auto place = static_cast<std::uint64_t>(it - geometries.begin());
+    words.push_back(place << 32 | static_cast<std::uint32_t>(s.log_index));
+  }
+  key->push_back(geometries.size());
+  for (const LaserGeometry* g : geometries) AppendGeometryKey(*g, key);
+  key->insert(key->end(), words.begin(), words.end());
+}
+
 }  // namespace
 
 Mapper::Mapper(const MapperParams& params, SharedWork shared) : params_(params), shared_(std::move(shared)) {
@@ -33,7 +52,7 @@ Mapper::Mapper(const MapperParams& params, SharedWork shared) : params_(params),
 
 void Mapper::SetParams(const MapperParams& params) {
   params.Validate();
-  if (params.use_scan_matching != params_.use_scan_matching && last_processed_ >= 0) {
+  if (params.use_scan_matching != params_.use_scan_matching && !scans_.empty()) {
     throw InputError("use_scan_matching cannot change after the first processed scan");
   }
   auto solver = MakeSolver(params.solver, params.Ceres());
@@ -71,7 +90,12 @@ void Mapper::UpdateReferencePose(int id) {
   reference_poses_[static_cast<std::size_t>(id)] = scans_[id].ReferencePose(params_.use_scan_barycenter);
 }
 
-std::vector<const LaserScan*> Mapper::ScanPointers(const std::vector<int>& ids) const {
+const std::deque<int>& Mapper::running_buffer(int laser) const {
+  static const std::deque<int> kNone;
+  return laser >= 0 && laser < static_cast<int>(lasers_.size()) ? lasers_[laser].running_buffer : kNone;
+}
+
+std::vector<const LaserScan*> Mapper::ScanPointers(std::span<const int> ids) const {
   std::vector<const LaserScan*> out;
   out.reserve(ids.size());
   for (int id : ids) out.push_back(&scans_[id]);
@@ -85,23 +109,29 @@ MatchResult Mapper::MatchWith(MatchRole role, const LaserScan& scan, const std::
   return matcher.Match(scan, base, penalize, refine);
 }
 
-// §3.2, steps 1-10 in order.
+// §3.2, steps 1-10 in order, with the scan's own laser's last scan and running buffer (§3.5).
 ProcessResult Mapper::Process(LaserScan scan) {
   ProcessResult result;
   ++counters_.scans_offered;
-  // 1. Reading count must match the laser of the first scan (§2.1).
-  if (geometry_ && scan.geometry().num_readings != geometry_->num_readings) {
+  SLAMTUNE_CHECK(scan.laser >= 0 && scan.laser < ScansByLaser::kMaxLasers);
+  const int laser = scan.laser;
+  if (laser >= static_cast<int>(lasers_.size())) lasers_.resize(static_cast<std::size_t>(laser) + 1);
+  // 1. Reading count must match the laser's, as its first scan fixed it (§2.1).
+  const LaserGeometry* expected = lasers_[laser].geometry.get();
+  if (expected != nullptr && scan.geometry().num_readings != expected->num_readings) {
     ++counters_.scans_wrong_reading_count;
     result.outcome = ProcessResult::Outcome::kWrongReadingCount;
     return result;
   }
-  // 2. First call: the laser and the matchers (their grids depend on the range threshold).
+  // 2. First call: the matchers (their grids depend on the range threshold).
   if (!geometry_) {
     geometry_ = scan.geometry_ptr();
     if (params_.use_scan_matching) BuildMatchers();
   }
-  // 3-4. Initial guess from the odometry increment since the last processed scan.
-  const LaserScan* last = last_processed_ >= 0 ? &scans_[last_processed_] : nullptr;
+  if (expected == nullptr) lasers_[laser].geometry = scan.geometry_ptr();
+  // 3-4. Initial guess from the odometry increment since the laser's last processed scan.
+  const std::span<const int> own = scans_by_laser_.scans_of(laser);
+  const LaserScan* last = own.empty() ? nullptr : &scans_[own.back()];
   if (last != nullptr) {
     scan.SetCorrectedPose(InitialGuess(last->odometric_pose(), last->corrected_pose(), scan.odometric_pose()));
   }
@@ -114,10 +144,11 @@ ProcessResult Mapper::Process(LaserScan scan) {
     result.outcome = ProcessResult::Outcome::kNotMoved;
     return result;
   }
-  // 6-7. Sequential match against the running buffer, penalties and refinement on.
+  // 6-7. Sequential match against the laser's running buffer, penalties and refinement on.
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
   if (params_.use_scan_matching && last != nullptr) {
-    const std::vector<int> buffer_ids(running_buffer_.begin(), running_buffer_.end());
+    const std::deque<int>& running = lasers_[laser].running_buffer;
+    const std::vector<int> buffer_ids(running.begin(), running.end());
     const std::vector<const LaserScan*> buffer = ScanPointers(buffer_ids);
     result.sequential_guess = scan.SensorPose();
     const MatchResult match = MatchWith(MatchRole::kSequential, scan, buffer, Penalize::kYes, Refine::kYes);
@@ -133,6 +164,7 @@ ProcessResult Mapper::Process(LaserScan scan) {
   const int id = static_cast<int>(scans_.size());
   scan.state_id = id;
   scans_.push_back(std::move(scan));
+  scans_by_laser_.Add(laser);
   reference_poses_.emplace_back();
   UpdateReferencePose(id);
   ++counters_.scans_processed;
@@ -141,14 +173,17 @@ ProcessResult Mapper::Process(LaserScan scan) {
   if (params_.use_scan_matching) {
     graph_.AddVertex(scans_[id].corrected_pose());  // 9a: node = pose after the sequential match
     AddEdges(id, covariance, &result);               // 9b
-    running_buffer_.push_back(id);                   // 9c, §3.3
+    std::deque<int>& running = lasers_[laser].running_buffer;
+    running.push_back(id);  // 9c, §3.3
     TrimRunningBuffer(
-        running_buffer_, [this](int k) { return scans_[k].SensorPose(); }, params_.scan_buffer_size,
+        running, [this](int k) { return scans_[k].SensorPose(); }, params_.scan_buffer_size,
         params_.scan_buffer_maximum_scan_distance);
-    if (params_.do_loop_closing) result.loops_closed = TryCloseLoop(id, &result);  // 9d
+    if (params_.do_loop_closing) {
+      // 9d, on every laser's scans in laser order (§3.5)
+      for (int l = 0; l < scans_by_laser_.num_lasers(); ++l) result.loops_closed += TryCloseLoop(id, l, &result);
+    }
   }
-  // 10.
-  last_processed_ = id;
+  // 10. The scan is now its laser's last processed scan (the last of scans_by_laser_.scans_of(laser)).
   return result;
 }
 
@@ -158,7 +193,7 @@ bool Mapper::Link(int from, int to, const Pose2& mean, const Eigen::Matrix3d& co
   // sensor-frame covariance kept); slam_karto with sensor poses.
   const bool robot = params_.robot_pose_graph;
   const Pose2 from_pose = robot ? scans_[from].corrected_pose() : scans_[from].SensorPose();
-  const Pose2 to_pose = robot ? RobotPoseFromSensor(mean, geometry_->offset) : mean;
+  const Pose2 to_pose = robot ? RobotPoseFromSensor(mean, scans_[to].geometry().offset) : mean;
   const bool added = graph_.LinkScans(from, to, from_pose, to_pose, covariance, kind);
   const auto k = static_cast<std::size_t>(kind);
   if (added) {
@@ -181,22 +216,52 @@ int Mapper::LinkChainToScan(const std::vector<int>& chain, int scan, const Pose2
   return closest;
 }
 
-// §5.3.
+// §5.3 with the scan's own laser's previous scan and running buffer; the first scan of a laser
+// is linked to the other lasers instead (§3.5).
 void Mapper::AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult* result) {
   std::vector<Pose2> means;
   std::vector<Eigen::Matrix3d> covariances;
-  if (last_processed_ >= 0) {
+  const int laser = scans_by_laser_.laser_of(scan);
+  const int position = scans_by_laser_.position(scan);
+  if (position > 0) {
     const Pose2 pose = scans_[scan].SensorPose();
-    Link(scan - 1, scan, pose, covariance, EdgeKind::kSequential, result);  // 1. previous scan
+    const int previous = scans_by_laser_.scans_of(laser)[position - 1];
+    Link(previous, scan, pose, covariance, EdgeKind::kSequential, result);  // 1. previous scan
     means.push_back(pose);                                                 // 2. running buffer
     covariances.push_back(covariance);
-    if (!running_buffer_.empty()) {
-      LinkChainToScan(std::vector<int>(running_buffer_.begin(), running_buffer_.end()), scan, pose, covariance,
+    const std::deque<int>& running = lasers_[laser].running_buffer;
+    if (!running.empty()) {
+      LinkChainToScan(std::vector<int>(running.begin(), running.end()), scan, pose, covariance,
                       EdgeKind::kRunningBuffer, result);
     }
+  } else {
+    LinkToOtherLasers(scan, &means, &covariances, result);
   }
   LinkNearChains(scan, &means, &covariances, result);  // 3.
   if (!means.empty()) SetScanSensorPose(scan, WeightedMean(means, covariances));  // 4.
+}
+
+// §3.5: matched from its pose now (the odometry's) with the sequential matcher, penalties and
+// refinement on, against all scans of each other laser in laser order; the edge from that
+// laser's first scan is added whatever the response, the mean joins the weighted mean only
+// when the response exceeds link_match_minimum_response_fine.
+void Mapper::LinkToOtherLasers(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
+                               ProcessResult* result) {
+  const int own = scans_by_laser_.laser_of(scan);
+  for (int laser = 0; laser < scans_by_laser_.num_lasers(); ++laser) {
+    const std::span<const int> other = scans_by_laser_.scans_of(laser);
+    if (laser == own || other.empty()) continue;
+    const Pose2 pose_in = scans_[scan].SensorPose();
+    const MatchResult m =
+        MatchWith(MatchRole::kSequential, scans_[scan], ScanPointers(other), Penalize::kYes, Refine::kYes);
+    Link(other.front(), scan, m.mean, m.covariance, EdgeKind::kLaserLink, result);
+    const bool used = m.response > params_.link_match_minimum_response_fine;
+    if (used) {
+      means->push_back(m.mean);
+      covariances->push_back(m.covariance);
+    }
+    TraceMatch("laser_link", scan, scans_[scan].log_index, other, pose_in, m, used ? "used" : "not_used");
+  }
 }
 
 MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base,
@@ -215,7 +280,8 @@ MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<cons
 
 void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
                             ProcessResult* result) {
-  const auto chains = FindNearChains(graph_, reference_poses_, scan, params_.link_scan_maximum_distance);
+  const auto chains =
+      FindNearChains(graph_, reference_poses_, scans_by_laser_, scan, params_.link_scan_maximum_distance);
   const double threshold = params_.link_match_minimum_response_fine - kKartoTolerance;  // the edge needs more
   for (const std::vector<int>& chain : chains) {
     if (static_cast<int>(chain.size()) < params_.loop_match_minimum_chain_size) continue;  // g gates here too
@@ -239,13 +305,14 @@ void Mapper::LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eig
   }
 }
 
-// §6.1. The cursor is shared by all candidate searches of this call.
-int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
+// §6.1 along the scans of `laser` (§3.5). The cursor is shared by all candidate searches of this call.
+int Mapper::TryCloseLoop(int scan, int laser, ProcessResult* result) {
   const LoopSearchOptions search{params_.loop_search_maximum_distance, params_.loop_match_minimum_chain_size};
   const double q2 = params_.LoopMatchMaximumVarianceCoarseInternal();
   int closed = 0;
   int cursor = 0;
-  std::vector<int> chain = FindPossibleLoopClosure(graph_, reference_poses_, scan, search, &cursor);
+  const std::span<const int> walk = scans_by_laser_.scans_of(laser);
+  std::vector<int> chain = FindPossibleLoopClosure(graph_, reference_poses_, walk, scan, search, &cursor);
   while (!chain.empty()) {
     LoopAttempt attempt;
     attempt.log_index = scans_[scan].log_index;
@@ -280,7 +347,7 @@ int Mapper::TryCloseLoop(int scan, ProcessResult* result) {
     }
     ++counters_.loop_attempts;
     loop_attempts_.push_back(attempt);
-    chain = FindPossibleLoopClosure(graph_, reference_poses_, scan, search, &cursor);
+    chain = FindPossibleLoopClosure(graph_, reference_poses_, walk, scan, search, &cursor);
   }
   return closed;
 }
@@ -295,8 +362,8 @@ int Mapper::CorrectPoses() {
   if (shared_.solve_cache) {
     key = SolveCache::KeyOf(solver_->Identity(), nodes, graph_.edges());
     key.push_back(params_.robot_pose_graph ? 1 : 0);  // how the values are written back
-    // The stored barycentres also depend on the laser (range threshold, ...): key it too.
-    AppendGeometryKey(*geometry_, &key);
+    // The stored barycentres also depend on each node's scan and laser (range threshold, ...).
+    AppendScansKey(scans_, &key);
     stored = shared_.solve_cache->Find(key);
   }
   if (stored) {
@@ -344,8 +411,8 @@ int Mapper::CorrectPoses() {
   return index;
 }
 
-void Mapper::TraceMatch(const char* kind, int scan, int log_index, const std::vector<int>& base,
-                        const Pose2& pose_in, const MatchResult& match, const char* decision) {
+void Mapper::TraceMatch(const char* kind, int scan, int log_index, std::span<const int> base, const Pose2& pose_in,
+                        const MatchResult& match, const char* decision) {
   if (!trace_) return;
   TracedMatch t;
   t.kind = kind;

@@ -3,6 +3,14 @@
 // vertex, AddEdges, running buffer, TryCloseLoop), links near chains, closes loops and runs
 // one full back-end solve per accepted loop.
 //
+// Several lasers (§3.5): each scan names its laser (LaserScan::laser). As Karto's mapper does
+// for several range finders, the initial guess, HasMovedEnough, the sequential match and the
+// running buffer are per laser, the first scan of a laser is matched against and linked to the
+// other lasers' scans, near chains and loop candidates run along one laser's scans, loops are
+// sought on every laser in index order, and the graph and its solves span all lasers. The
+// matchers are made once, with the first processed scan's range threshold. With one laser
+// this is the single-laser mapper, decision for decision.
+//
 // State as a value: a Mapper holds everything the engine has (processed scans with their
 // poses and points, the pose graph with the solver's node values, the running buffer, both
 // scan matchers with their caches, counters and the loop-closure log). Copying a Mapper and
@@ -23,6 +31,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "slamtune/slam/backend/pose_graph_solver.h"
@@ -33,6 +42,7 @@
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/run_trace.h"
 #include "slamtune/slam/scan_matcher.h"
+#include "slamtune/slam/scans_by_laser.h"
 #include "slamtune/slam/sharing/shared_work.h"
 
 namespace slamtune::slam {
@@ -92,8 +102,9 @@ class Mapper {
   explicit Mapper(const MapperParams& params, SharedWork shared = {});
 
   // Mapper::Process of §3.2. `scan` carries its odometric pose (laser pose, zero offset for
-  // CARMEN logs) and time; its log_index is kept for reports. The first scan fixes the laser
-  // geometry: later scans with another reading count are rejected (§2.1).
+  // CARMEN logs), time and laser index (0 <= laser < ScansByLaser::kMaxLasers); its log_index
+  // is kept for reports. The first scan of each laser fixes that laser's reading count: its
+  // later scans with another count are rejected (§2.1).
   ProcessResult Process(LaserScan scan);
 
   // Replaces the parameters for the scans still to come (validated first; on error nothing
@@ -111,24 +122,35 @@ class Mapper {
 
   // Processed scans, index = state id, with their current poses.
   const std::vector<LaserScan>& scans() const { return scans_; }
+  // Which laser each processed scan belongs to, and each laser's scans in order (§3.5).
+  const ScansByLaser& scans_by_laser() const { return scans_by_laser_; }
   // Reference poses (barycentres or sensor poses, §2.2) of the processed scans.
   const std::vector<Pose2>& reference_poses() const { return reference_poses_; }
   const PoseGraph& graph() const { return graph_; }
-  const std::deque<int>& running_buffer() const { return running_buffer_; }
+  // The running buffer of `laser` (§3.3); empty for a laser without scans.
+  const std::deque<int>& running_buffer(int laser = 0) const;
   const std::vector<LoopAttempt>& loop_attempts() const { return loop_attempts_; }
   const std::vector<SolveSummary>& solver_runs() const { return solver_runs_; }
   const MapperCounters& counters() const { return counters_; }
-  // State id of the last processed scan, -1 before the first.
-  int last_processed() const { return last_processed_; }
-  // Range threshold of the laser in use (m), 0 before the first scan.
+  // State id of the last processed scan (of any laser), -1 before the first.
+  int last_processed() const { return static_cast<int>(scans_.size()) - 1; }
+  // Range threshold the matchers were made with (m): the first processed scan's laser's; 0
+  // before the first scan.
   double range_threshold() const { return geometry_ ? geometry_->range_threshold : 0.0; }
 
  private:
+  // What the mapper keeps per laser besides its scans (§3.1, §3.5): Karto's range finder and
+  // the running buffer of its ScanManager.
+  struct Laser {
+    std::shared_ptr<const LaserGeometry> geometry;  // its first scan's: the reading count it accepts
+    std::deque<int> running_buffer;
+  };
+
   void BuildMatchers();
   void SetScanSensorPose(int id, const Pose2& sensor_pose);
   // reference_poses_[id] from the scan's current pose (its barycentre through the cache if any).
   void UpdateReferencePose(int id);
-  std::vector<const LaserScan*> ScanPointers(const std::vector<int>& ids) const;
+  std::vector<const LaserScan*> ScanPointers(std::span<const int> ids) const;
   // matcher.Match(...) of the given role, through the match cache when there is one.
   MatchResult MatchWith(MatchRole role, const LaserScan& scan, const std::vector<const LaserScan*>& base,
                         Penalize penalize, Refine refine);
@@ -138,19 +160,24 @@ class Mapper {
   int LinkChainToScan(const std::vector<int>& chain, int scan, const Pose2& mean, const Eigen::Matrix3d& covariance,
                       EdgeKind kind, ProcessResult* result);
   void AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult* result);
+  // §3.5: the first scan of a laser against every other laser with scans.
+  void LinkToOtherLasers(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
+                         ProcessResult* result);
   // A near-chain match whose result counts only above `threshold` (skipped when provably not).
   MatchResult MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base, double threshold);
   void LinkNearChains(int scan, std::vector<Pose2>* means, std::vector<Eigen::Matrix3d>* covariances,
                       ProcessResult* result);
-  int TryCloseLoop(int scan, ProcessResult* result);
+  // §6.1 on the scans of `laser`; returns the loops closed.
+  int TryCloseLoop(int scan, int laser, ProcessResult* result);
   // Writes a match to the trace (when there is one); `base` are the state ids matched against.
-  void TraceMatch(const char* kind, int scan, int log_index, const std::vector<int>& base, const Pose2& pose_in,
+  void TraceMatch(const char* kind, int scan, int log_index, std::span<const int> base, const Pose2& pose_in,
                   const MatchResult& match, const char* decision);
   int CorrectPoses();
 
   MapperParams params_;
   std::shared_ptr<const PoseGraphSolver> solver_;  // stateless, shared by copies
-  std::shared_ptr<const LaserGeometry> geometry_;  // fixed by the first scan
+  // The first processed scan's laser: the matchers' range threshold (Karto's Initialize).
+  std::shared_ptr<const LaserGeometry> geometry_;
   std::optional<ScanMatcher> sequential_matcher_;
   std::optional<ScanMatcher> loop_matcher_;
   std::optional<ResponseBound> near_chain_bound_;  // with the sequential matcher's options
@@ -159,9 +186,9 @@ class Mapper {
   std::shared_ptr<RunTrace> trace_;  // observer only; shared by copies
   std::vector<LaserScan> scans_;
   std::vector<Pose2> reference_poses_;
+  ScansByLaser scans_by_laser_;
+  std::vector<Laser> lasers_;  // by laser index
   PoseGraph graph_;
-  std::deque<int> running_buffer_;
-  int last_processed_ = -1;
   std::vector<LoopAttempt> loop_attempts_;
   std::vector<SolveSummary> solver_runs_;
   MapperCounters counters_;

@@ -22,12 +22,13 @@ int ClosestInChain(std::span<const int> chain, std::span<const Pose2> reference_
   return best;
 }
 
-// §5.4. `processed` marks seeds and chain members already used; the walk over state ids
-// includes `scan` itself (the last id), which invalidates the chain that reaches it.
+// §5.4. `processed` marks seeds and chain members already used; the walk over the seed's laser
+// includes `scan` itself when it is of that laser (its last scan), which invalidates the chain
+// that reaches it.
 std::vector<std::vector<int>> FindNearChains(const PoseGraph& graph, std::span<const Pose2> reference_poses,
-                                             int scan, double link_distance) {
+                                             const ScansByLaser& lasers, int scan, double link_distance) {
   const int n = graph.num_vertices();
-  SLAMTUNE_CHECK(static_cast<int>(reference_poses.size()) >= n);
+  SLAMTUNE_CHECK(static_cast<int>(reference_poses.size()) >= n && lasers.size() >= n);
   const Pose2& ref = reference_poses[scan];
   const double limit = link_distance * link_distance + kKartoTolerance;
   auto inside = [&](int id) { return SquaredDistance(reference_poses[id], ref) < limit; };
@@ -37,16 +38,20 @@ std::vector<std::vector<int>> FindNearChains(const PoseGraph& graph, std::span<c
   for (int seed : NearLinked(graph, reference_poses, scan, link_distance)) {
     if (seed == scan || processed[seed]) continue;
     processed[seed] = 1;
+    const std::span<const int> walk = lasers.scans_of(lasers.laser_of(seed));
+    const int at = lasers.position(seed);
     bool valid = true;
     std::deque<int> chain;
-    for (int candidate = seed - 1; candidate >= 0; --candidate) {
+    for (int k = at - 1; k >= 0; --k) {
+      const int candidate = walk[k];
       if (candidate == scan) valid = false;
       if (!inside(candidate)) break;
       chain.push_front(candidate);
       processed[candidate] = 1;
     }
     chain.push_back(seed);
-    for (int candidate = seed + 1; candidate < n; ++candidate) {
+    for (int k = at + 1; k < static_cast<int>(walk.size()); ++k) {
+      const int candidate = walk[k];
       if (candidate == scan) valid = false;
       if (!inside(candidate)) break;
       chain.push_back(candidate);

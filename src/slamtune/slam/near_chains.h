@@ -2,8 +2,8 @@
 // and FindNearChains, the older passes through the neighbourhood of a new scan that the
 // mapper matches against to add near-chain edges (§5.3 step 3).
 //
-// Chains are lists of state ids in increasing order. Distances are between reference poses
-// (barycentres by default, §2.2), given as a span indexed by state id.
+// Chains are lists of state ids in increasing order, all of one laser (§3.5). Distances are
+// between reference poses (barycentres by default, §2.2), given as a span indexed by state id.
 #pragma once
 
 #include <span>
@@ -11,6 +11,7 @@
 
 #include "slamtune/common/pose2.h"
 #include "slamtune/slam/pose_graph.h"
+#include "slamtune/slam/scans_by_laser.h"
 
 namespace slamtune::slam {
 
@@ -19,10 +20,10 @@ namespace slamtune::slam {
 int ClosestInChain(std::span<const int> chain, std::span<const Pose2> reference_poses, int scan);
 
 // FindNearChains(scan) of §5.4 with L = link_scan_maximum_distance: seeds from
-// NearLinked(scan, L); each unprocessed seed grows backwards and forwards over consecutive
-// state ids while d^2 < L^2 + 1e-6; a chain that would contain `scan` is dropped. Chains of any
-// size are returned, in seed order (the caller gates them by g).
+// NearLinked(scan, L); each unprocessed seed grows backwards and forwards over the consecutive
+// scans of its own laser (`lasers`) while d^2 < L^2 + 1e-6; a chain that would contain `scan`
+// is dropped. Chains of any size are returned, in seed order (the caller gates them by g).
 std::vector<std::vector<int>> FindNearChains(const PoseGraph& graph, std::span<const Pose2> reference_poses,
-                                             int scan, double link_distance);
+                                             const ScansByLaser& lasers, int scan, double link_distance);
 
 }  // namespace slamtune::slam

@@ -62,6 +62,7 @@ const char* EdgeKindName(EdgeKind kind) {
     case EdgeKind::kRunningBuffer: return "running_buffer";
     case EdgeKind::kNearChain: return "near_chain";
     case EdgeKind::kLoop: return "loop";
+    case EdgeKind::kLaserLink: return "laser_link";
   }
   return "?";
 }

@@ -18,10 +18,12 @@
 
 namespace slamtune::slam {
 
-// Why an edge was created (§5.3 steps 1-3, §6.1).
-enum class EdgeKind { kSequential = 0, kRunningBuffer = 1, kNearChain = 2, kLoop = 3 };
-inline constexpr int kNumEdgeKinds = 4;
-const char* EdgeKindName(EdgeKind kind);  // "sequential", "running_buffer", "near_chain", "loop"
+// Why an edge was created (§5.3 steps 1-3, §6.1); kLaserLink: a laser's first scan linked from
+// the first scan of each other laser (§3.5).
+enum class EdgeKind { kSequential = 0, kRunningBuffer = 1, kNearChain = 2, kLoop = 3, kLaserLink = 4 };
+inline constexpr int kNumEdgeKinds = 5;
+// "sequential", "running_buffer", "near_chain", "loop", "laser_link"
+const char* EdgeKindName(EdgeKind kind);
 
 // The constraint label of an edge (§5.1): measurement z = P1 (-) P2 (LinkMeasurement) and information
 // (Rz(-P1.theta) Sigma Rz(-P1.theta)^T)^-1, symmetrised from its upper triangle.

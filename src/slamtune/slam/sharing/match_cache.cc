@@ -15,18 +15,11 @@ namespace {
 std::uint64_t Bits(double v) { return KeyBits(v); }
 void AppendPose(const Pose2& p, std::vector<std::uint64_t>* key) { AppendKeyPose(p, key); }
 
-bool SameGeometry(const LaserGeometry& a, const LaserGeometry& b) {
-  std::vector<std::uint64_t> ka;
-  std::vector<std::uint64_t> kb;
-  AppendGeometryKey(a, &ka);
-  AppendGeometryKey(b, &kb);
-  return ka == kb;
-}
-
 std::uint64_t Address(const LaserScan& s) { return reinterpret_cast<std::uintptr_t>(s.ranges_ptr().get()); }
 
 // Header words = everything but the scans: [role, options..., flags, geometry...].
 constexpr std::size_t kMaxHeaders = std::size_t{1} << 16;
+constexpr std::size_t kMaxGeometries = std::size_t{1} << 16;
 // Key layout after the header id: matched scan (log index, address, corrected and sensor pose
 // bits), the base count, then the base ids two to a word.
 constexpr std::size_t kBaseIdsOffset = 10;
@@ -34,7 +27,7 @@ constexpr std::size_t kBaseIdsOffset = 10;
 // Approximate bookkeeping beside the key words: map node, bucket and the MatchResult of an
 // entry; map node, bucket and the by-id words and count of an interned scan.
 constexpr std::size_t kEntryOverheadBytes = 224;
-constexpr std::size_t kInternedBytes = 144;
+constexpr std::size_t kInternedBytes = 152;
 
 }  // namespace
 
@@ -64,9 +57,17 @@ void MatchCache::HoldReadingsLocked(const LaserScan& scan) {
   if (readings_.find(address) == readings_.end()) readings_.emplace(address, scan.ranges_ptr());
 }
 
-std::uint32_t MatchCache::InternLocked(const LaserScan& scan) {
+std::uint32_t MatchCache::GeometryIdLocked(const LaserGeometry& geometry) {
+  const GeometryWords words = GeometryKeyWords(geometry);
+  auto it = geometry_ids_.find(words);
+  if (it != geometry_ids_.end()) return it->second;
+  if (geometry_ids_.size() >= kMaxGeometries) return kFreeId;
+  return geometry_ids_.emplace(words, static_cast<std::uint32_t>(geometry_ids_.size())).first->second;
+}
+
+std::uint32_t MatchCache::InternLocked(const LaserScan& scan, std::uint32_t geometry_id) {
   const Pose2& p = scan.corrected_pose();
-  const ScanWords words = {KeyInt(scan.log_index), Address(scan), Bits(p.x), Bits(p.y), Bits(p.theta)};
+  const ScanWords words = {KeyInt(scan.log_index), Address(scan), Bits(p.x), Bits(p.y), Bits(p.theta), geometry_id};
   const std::uint32_t hint = scan.match_key_hint();
   if (hint < id_words_.size() && refs_[hint] != kFreeId && id_words_[hint] == words) return hint;
   auto it = scan_ids_.find(words);
@@ -97,9 +98,19 @@ std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatch
                                                  Refine refine, std::span<const std::uint64_t> extra) {
   std::vector<std::uint64_t> key;
   if (!scan.geometry_ptr() || !scan.ranges_ptr()) return key;
+  // The base scans' geometry ids, looked up once per geometry object (usually one or two).
+  std::vector<std::uint32_t> geometry_ids;
+  geometry_ids.reserve(base_scans.size());
+  const LaserGeometry* last = nullptr;
   for (const LaserScan* b : base_scans) {
     if (b == nullptr || !b->geometry_ptr() || !b->ranges_ptr()) return key;
-    if (b->geometry_ptr() != scan.geometry_ptr() && !SameGeometry(b->geometry(), scan.geometry())) return key;
+    if (&b->geometry() != last) {
+      last = &b->geometry();
+      geometry_ids.push_back(GeometryIdLocked(*last));
+      if (geometry_ids.back() == kFreeId) return key;  // bypass: the geometry table is full
+    } else {
+      geometry_ids.push_back(geometry_ids.back());
+    }
   }
   std::vector<std::uint64_t> header;
   header.reserve(32);
@@ -127,8 +138,10 @@ std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatch
   AppendPose(scan.SensorPose(), &key);
   key.push_back(base_scans.size());
   for (std::size_t i = 0; i < base_scans.size(); i += 2) {
-    std::uint64_t word = InternLocked(*base_scans[i]);
-    if (i + 1 < base_scans.size()) word |= static_cast<std::uint64_t>(InternLocked(*base_scans[i + 1])) << 32;
+    std::uint64_t word = InternLocked(*base_scans[i], geometry_ids[i]);
+    if (i + 1 < base_scans.size()) {
+      word |= static_cast<std::uint64_t>(InternLocked(*base_scans[i + 1], geometry_ids[i + 1])) << 32;
+    }
     key.push_back(word);
   }
   return key;

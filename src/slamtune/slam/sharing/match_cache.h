@@ -7,17 +7,20 @@
 // (the hash only picks the bucket, so a collision can never return a wrong result):
 //   - the matcher role and every ScanMatcherOptions field that affects results (all but
 //     `threads` and `branch_and_bound`, which are documented as result-independent),
-//   - the penalize / refine flags and the laser geometry,
+//   - the penalize / refine flags and the matched scan's laser geometry,
 //   - the matched scan: log index, address of its (immutable, shared) readings, the bits of
 //     its corrected and sensor poses,
-//   - the base scans in order: log index, readings address and the bits of the corrected pose
-//     of each (their geometry must equal the scan's, otherwise the call bypasses the cache).
+//   - the base scans in order: log index, readings address, the bits of the corrected pose
+//     and the laser geometry of each (a base scan may be another laser's, docs/engine.md §3.5).
 // Compact keys: the first group (the same for every call of a run) is interned once as a
-// header id, and each base scan's five words are interned as a 32-bit id, so a key is about
-// ten words plus half a word per base scan instead of five words per base scan (a running
-// buffer of 70 scans: ~45 words, not ~360). An id names its words exactly while any entry
-// refers to it (reference counts; an id is reused only after its last entry is dropped), and a
-// scan remembers its id as a hint that is checked against the interned words before use.
+// header id, each distinct geometry as a geometry id, and each base scan's six words as a
+// 32-bit id, so a key is about ten words plus half a word per base scan instead of six words
+// per base scan (a running buffer of 70 scans: ~45 words, not ~430). A scan id names its words
+// exactly while any entry refers to it (reference counts; an id is reused only after its last
+// entry is dropped), and a scan remembers its id as a hint that is checked against the interned
+// words before use. Geometry ids, like header ids, stay for the cache's life and are not counted
+// in its bytes (a run has one per laser; at most 65 536 are held, beyond which calls with a new
+// geometry bypass the cache).
 // The cache holds every readings buffer it has keyed, so an address in a key cannot be reused
 // by other data while the cache lives. A cache must only be shared by runs of the same log:
 // log indices of different logs mean different scans (the readings address tells them apart anyway).
@@ -25,7 +28,7 @@
 // Concurrency: thread-safe. Concurrent requests for the same key compute once: the first
 // caller computes, the others wait for its result. Memory is bounded by a byte budget; when
 // exceeded, the least recently used half of the finished entries is dropped (with the
-// interned ids only they used); a hit counts as a use, so the matches of the log's prefix that
+// interned scan ids only they used); a hit counts as a use, so the matches of the log's prefix that
 // every run repeats stay while one-off matches after runs diverge go. Whether an entry was
 // evicted changes only the time, never a result.
 #pragma once
@@ -106,8 +109,9 @@ class MatchCache {
                                    std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine);
 
  private:
-  // (log index, readings address, corrected pose x, y, theta bits) of a base scan.
-  using ScanWords = std::array<std::uint64_t, 5>;
+  // (log index, readings address, corrected pose x, y, theta bits, geometry id) of a base scan.
+  using ScanWords = std::array<std::uint64_t, 6>;
+  using GeometryWords = std::array<std::uint64_t, kGeometryKeyWords>;
   struct Entry {
     MatchResult result;
     bool ready = false;          // false while the first caller computes it
@@ -124,7 +128,9 @@ class MatchCache {
   MatchResult Find(MatchRole role, const ScanMatcherOptions& options, const LaserScan& scan,
                    std::span<const LaserScan* const> base_scans, Penalize penalize, Refine refine,
                    std::span<const std::uint64_t> extra, const std::function<MatchResult()>& compute);
-  std::uint32_t InternLocked(const LaserScan& scan);
+  // The id of a geometry's words, interned for the cache's life; kFreeId when the table is full.
+  std::uint32_t GeometryIdLocked(const LaserGeometry& geometry);
+  std::uint32_t InternLocked(const LaserScan& scan, std::uint32_t geometry_id);
   void HoldReadingsLocked(const LaserScan& scan);
   // Adds `delta` (+1 / -1) to the reference count of every base id in `key`; ids left
   // without references are freed.
@@ -137,6 +143,7 @@ class MatchCache {
   std::condition_variable computed_;  // signalled when an entry becomes ready or is dropped
   std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
   std::unordered_map<std::vector<std::uint64_t>, std::uint32_t, KeyWordsHash> headers_;
+  std::unordered_map<GeometryWords, std::uint32_t, KeyWordsHash> geometry_ids_;
   std::unordered_map<ScanWords, std::uint32_t, KeyWordsHash> scan_ids_;
   std::vector<ScanWords> id_words_;   // by id
   std::vector<std::uint32_t> refs_;   // by id: entries referring to it, or kFreeId

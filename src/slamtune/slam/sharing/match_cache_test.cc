@@ -162,7 +162,42 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   EXPECT_EQ(base, key(MatchRole::kSequential, f.options, copy, f.base_ptrs, Penalize::kYes, Refine::kYes));
 }
 
-// Base scans are named by interned ids: half a word each, not five.
+// Base scans of another laser (docs/engine.md §3.5) are keyed with their own geometry, not
+// bypassed: the same geometry in another object gives the same key, another geometry another.
+TEST(MatchCache, BaseScansOfAnotherLaserAreKeyedByTheirGeometry) {
+  Fixture f;
+  MatchCache cache;
+  const auto rebuilt = [&](const LaserGeometry& g) {
+    const auto ptr = std::make_shared<const LaserGeometry>(g);
+    std::vector<LaserScan> out;
+    for (const LaserScan& b : f.bases) {
+      out.emplace_back(ptr, b.ranges_ptr(), b.odometric_pose(), b.time());
+      out.back().log_index = b.log_index;
+    }
+    return out;
+  };
+  const auto key = [&](const std::vector<LaserScan>& bases) {
+    std::vector<const LaserScan*> ptrs;
+    for (const LaserScan& b : bases) ptrs.push_back(&b);
+    return cache.KeyOf(MatchRole::kSequential, f.options, f.scan, ptrs, Penalize::kYes, Refine::kYes);
+  };
+  LaserGeometry other = f.scan.geometry();
+  other.angular_resolution *= 1.5;
+  const auto other_key = key(rebuilt(other));
+  ASSERT_FALSE(other_key.empty());
+  EXPECT_EQ(other_key, key(rebuilt(other)));  // equal words in another object
+  EXPECT_NE(other_key, key(rebuilt(f.scan.geometry())));
+  LaserGeometry shorter = other;
+  shorter.range_threshold = 11.0;
+  EXPECT_NE(other_key, key(rebuilt(shorter)));
+  // Mixed within one call: the first base of the matched scan's own laser.
+  std::vector<LaserScan> mixed = rebuilt(other);
+  mixed[0] = f.bases[0];
+  EXPECT_NE(other_key, key(mixed));
+  EXPECT_EQ(cache.counters().bypassed, 0u);
+}
+
+// Base scans are named by interned ids: half a word each, not six.
 TEST(MatchCache, KeysAreCompact) {
   std::vector<LaserScan> bases;
   for (int i = 0; i < 70; ++i) bases.push_back(RoomScan({0.01 * i, 0, 0}, i));
