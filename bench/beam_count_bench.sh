@@ -66,7 +66,7 @@ r = json.load(open(folder + "/run.json"))
 lasers = r.get("lasers") or []
 nodes = "/".join(str(l["nodes"]) for l in lasers) if len(lasers) > 1 else str(r["nodes"])
 gt = r.get("gt_error") or {}
-print(f"| {log} | {choice} | {r['scans']} | {r.get('scans_wrong_reading_count', 0)} | {nodes} | "
+print(f"| {log} | {choice} | {r['scans']} | {r['scans_not_used']['wrong_reading_count']['count']} | {nodes} | "
       f"{r['loop_closures']} | {gt.get('trans_mean_m', float('nan')):.4f} | {r['wall_s']:.1f} |")
 PY
 }

@@ -106,8 +106,11 @@ awk 'BEGIN { pi = atan2(0, -1) }
 "$bin" run "$work/two_counts.clf" --out "$work/n" "${fast[@]}" --quiet >/dev/null 2>&1 || fail "run on two counts failed"
 "$bin" run "$work/two_counts.clf" --out "$work/g" --beams per-geometry "${fast[@]}" --quiet >"$work/g.out" 2>&1 ||
   fail "run --beams per-geometry failed: $(cat "$work/g.out")"
-[[ "$(json_int "$work/n/run.json" scans_wrong_reading_count)" -gt 100 ]] || fail "the node kept scans of another count"
-[[ "$(json_int "$work/g/run.json" scans_wrong_reading_count)" == "0" ]] || fail "per-geometry dropped scans"
+wrong_count() {  # RUN_JSON -> scans_not_used.wrong_reading_count.count
+  python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["scans_not_used"]["wrong_reading_count"]["count"])' "$1"
+}
+[[ "$(wrong_count "$work/n/run.json")" -gt 100 ]] || fail "the node kept scans of another count"
+[[ "$(wrong_count "$work/g/run.json")" == "0" ]] || fail "per-geometry dropped scans"
 [[ "$(grep -c '"name": "laser_' "$work/g/run.json")" == "2" ]] || fail "per-geometry: run.json does not list two lasers"
 grep -q '"laser_link": 1' "$work/g/run.json" || fail "per-geometry: the lasers' first scans are not linked"
 grep -q '^lasers: laser_0 (181 readings) .*, laser_1 (91 readings)' "$work/g.out" || fail "no lasers line: $(cat "$work/g.out")"
