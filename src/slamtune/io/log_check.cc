@@ -174,13 +174,15 @@ void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report
                      above_count, above.count, largest_above),
          above.count, above.scans, above.times});
   }
-  if (std::isfinite(range_max) && range_max > 0 && largest_valid < o.range_max_use_fraction * range_max) {
+  const bool no_range = readings > 0 && CountRanges(log) == 0;
+  // Without a single range, "no reading reaches range_max" says nothing more than no_valid_reading.
+  if (!no_range && std::isfinite(range_max) && range_max > 0 && largest_valid < o.range_max_use_fraction * range_max) {
     Problem(report, ProblemKind::kRangeMaxTooHigh,
             fmt::format("no reading reaches {:.0f} % of range_max: the largest is {:.3f} m, range_max {} m; if the "
                         "laser's real range is lower, readings at its limit may be taken for walls",
                         100.0 * o.range_max_use_fraction, largest_valid, range_max));
   }
-  if (readings > 0 && CountRanges(log) == 0) {
+  if (no_range) {
     Problem(report, ProblemKind::kNoValidReading,
             fmt::format("not one of the {} readings of the {} scans is a range (each is inf, NaN, negative, at or "
                         "above range_max or at or below range_min): a map would be empty; run and optimize refuse it",

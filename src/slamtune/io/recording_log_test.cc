@@ -266,7 +266,10 @@ TEST(RecordingToLog, ALogWithoutASingleRangeIsRefusedForMapping) {
   EXPECT_EQ(ErrorMessageOf([&] { RequireRanges(log); }),
             "drive.mcap: not one of the 45 readings of the 9 scans is a range (each is inf, NaN, negative, at or above "
             "range_max 10 m or at or below range_min): nothing to map");
-  EXPECT_TRUE(CheckRecordingContents(c, {}).Has(ProblemKind::kNoValidReading));
+  const CheckReport report = CheckRecordingContents(c, {});
+  EXPECT_TRUE(report.Has(ProblemKind::kNoValidReading));
+  // Without a single range there is no largest range to hold against range_max.
+  EXPECT_FALSE(report.Has(ProblemKind::kRangeMaxTooHigh));
   c.scans["/scan"][8].message.ranges[1] = 3.0f;
   EXPECT_NO_THROW(RequireRanges(RecordingToLog(c, {})));
   EXPECT_FALSE(CheckRecordingContents(c, {}).Has(ProblemKind::kNoValidReading));
