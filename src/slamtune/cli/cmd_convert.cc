@@ -42,12 +42,7 @@ int Convert(const ConvertArgs& args) {
                              "no-returns written as the max range");
   options.pose_decimals = 9;
   options.exact_ranges = true;
-  // Written beside the target and renamed: a reader never sees half a file.
-  const std::string partial = args.out + ".partial";
-  const io::CarmenWriteSummary written = io::WriteCarmenLog(partial, log, options);
-  std::error_code error;
-  std::filesystem::rename(partial, args.out, error);
-  if (error) throw InputError(args.out, 0, "cannot write: " + error.message());
+  const io::CarmenWriteSummary written = io::WriteCarmenLog(args.out, log, options);  // whole or not at all
   std::printf("convert: %zu scans, %zu ODOM records%s; wrote %s\n", written.scans, written.odometry,
               replaced > 0 ? fmt::format(", {} non-finite readings written as the max range", replaced).c_str() : "",
               args.out.c_str());

@@ -65,12 +65,7 @@ int Fault(const FaultArgs& args) {
   options.pose_decimals = 9;
   options.time_decimals = log.recording ? 9 : 6;  // a ROS stamp's nanoseconds, a CARMEN log's microseconds
   options.exact_ranges = true;
-  // Written beside the target and renamed: a reader never sees half a file.
-  const std::string partial = args.out + ".partial";
-  const io::CarmenWriteSummary written = io::WriteCarmenLog(partial, log, options);
-  std::error_code error;
-  std::filesystem::rename(partial, args.out, error);
-  if (error) throw InputError(args.out, 0, "cannot write: " + error.message());
+  const io::CarmenWriteSummary written = io::WriteCarmenLog(args.out, log, options);  // whole or not at all
 
   std::printf("fault: odometric travel %.3f m (%zu robot poses, %s)\n", planted.travel_m, planted.poses,
               planted.order.c_str());

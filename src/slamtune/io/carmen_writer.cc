@@ -4,12 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <iterator>
+#include <sstream>
 
+#include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
 #include "slamtune/io/carmen_reader.h"
 
@@ -150,11 +149,10 @@ CarmenWriteSummary WriteCarmenLog(std::ostream& out, const LaserLog& log, const 
 CarmenWriteSummary WriteCarmenLog(const std::string& path, const LaserLog& log, const CarmenWriteOptions& options) {
   options.Validate();
   CheckWritable(log);
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) throw InputError(path, 0, std::string("cannot write: ") + std::strerror(errno));
-  CarmenWriteSummary summary = WriteChecked(file, log, options);
-  file.close();
-  if (!file) throw InputError(path, 0, "cannot write: error while writing the file");
+  // Whole or not at all (common/atomic_file.h): a reader never sees half a log.
+  std::ostringstream text;
+  CarmenWriteSummary summary = WriteChecked(text, log, options);
+  WriteFileAtomically(path, text.view());
   return summary;
 }
 

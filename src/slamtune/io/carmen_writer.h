@@ -64,8 +64,9 @@ CarmenWriteSummary WriteCarmenLog(std::ostream& out, const LaserLog& log, const 
 // Returns how many readings were replaced.
 std::size_t PrepareForCarmen(LaserLog* log, bool keep_flaser = false);
 
-// Writes `log` to the file `path` (replaced if it exists). Throws InputError as above, or
-// "PATH: cannot write ..." when the file cannot be written.
+// Writes `log` to the file `path` (replaced if it exists) whole or not at all, through
+// PATH.partial (common/atomic_file.h). Throws InputError as above, or "PATH: cannot write ..."
+// when the file cannot be written.
 CarmenWriteSummary WriteCarmenLog(const std::string& path, const LaserLog& log,
                                   const CarmenWriteOptions& options = {});
 
