@@ -51,6 +51,9 @@ struct OptimizeArgs {
   unsigned generations = optim::OptimizeSettings{}.generations;
   std::size_t divisions = optim::OptimizeSettings{}.divisions;
   unsigned seed = 1;
+  // Budget flags the user gave; the others take the default of the search (the built-in world's,
+  // or a broken map's: optim::BrokenMapBudget).
+  bool population_given = false, divisions_given = false, generations_given = false, sound_answer_given = false;
   // The front end's informed start (optim/front_end_repair.h) when the default space is the
   // front end: the space's raised lower bounds and the repaired configuration; kept for --resume.
   std::map<std::string, double> space_lower;
@@ -63,8 +66,10 @@ struct OptimizeArgs {
   ResultNeutralOptions result_neutral;  // the options that may accompany --resume
 };
 
-// The budget of the main job on the built-in world: a few minutes on 2 cores (20 individuals
-// over the 66 reference points of 10 divisions).
+// The budget on a built-in world: a few minutes on 2 cores (20 individuals over the 66
+// reference points of 10 divisions, 8 generations). A world whose map breaks in the front end
+// (the main job's office-jump) takes the broken-map budget's population, divisions and stop,
+// within these 8 generations.
 constexpr std::size_t kBuiltInPopulation = 20;
 constexpr unsigned kBuiltInGenerations = 8;
 constexpr std::size_t kBuiltInDivisions = 10;
@@ -87,8 +92,7 @@ nlohmann::json InvocationJson(const OptimizeArgs& a) {
           {"front_end_repair", {{"lower_bounds", a.space_lower}, {"initial", a.initial}}},
           {"space_probed", a.space_probed},
           {"input_hashes", io::ContentHashes(InputFiles(a.inputs))},
-          {"settling",
-           {{"enabled", a.settling.enabled}, {"tolerance", a.settling.tolerance}, {"window", a.settling.window}}}};
+          {"settling", a.settling.ToJson()}};
 }
 
 // The recorded inputs that are the files named now must still have their recorded content
@@ -178,8 +182,7 @@ void PrepareResume(const RunFolder& folder, const CLI::App& app, OptimizeArgs& a
     args.objectives = inv->value("objectives", optim::ObjectiveSet::NameOf(optim::ObjectiveSetKind::kPaper));
     // ... and ran their whole budget.
     if (inv->contains("settling")) {
-      const auto& st = inv->at("settling");
-      args.settling = {st.at("enabled").get<bool>(), st.at("tolerance").get<double>(), st.at("window").get<int>()};
+      args.settling = optim::SettlingOptions::FromJson(inv->at("settling"));
     } else {
       args.settling.enabled = false;
     }
@@ -259,6 +262,27 @@ std::shared_ptr<optim::SlamEvaluationContext> ProbeDefaultSpace(const TuningInpu
   return probed;
 }
 
+// A log whose base map breaks in the front end: the broken-map budget (optim::BrokenMapBudget)
+// for what the user left to the tuner.
+void UseBrokenMapBudget(OptimizeArgs& args, optim::OptimizeSettings& settings) {
+  const optim::BrokenMapBudget budget;
+  if (!args.population_given) args.population = budget.population;
+  if (!args.divisions_given) args.divisions = budget.divisions;
+  if (!args.sound_answer_given) args.settling.sound_answer_window = budget.sound_answer_window;
+  settings.population = args.population;
+  settings.divisions = args.divisions;
+  settings.settling = args.settling;
+  if (!args.run.quiet) {
+    const int window = args.settling.sound_answer_window;
+    const std::string stop = window == 0 ? "stopping when the front settles"
+                                         : fmt::format("stopping once the recommended map is sound and unchanged for "
+                                                       "{} generation{}",
+                                                       window, window == 1 ? "" : "s");
+    std::fprintf(stderr, "budget for a broken map: population %zu over %zu divisions, %s (--population, --divisions, "
+                 "--sound-answer-window)\n", args.population, args.divisions, stop.c_str());
+  }
+}
+
 // --space NAME or FILE (or, resuming a folder written before named spaces, r and g around the base).
 optim::SearchSpace NamedOrFileSpace(const OptimizeArgs& args, const slam::MapperParams& base) {
   if (args.space_file == "loop") return optim::SearchSpace::Loop(base);
@@ -307,6 +331,7 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   if (args.space_file.empty() && !flag_space && !args.around_base_without_steps) {
     probed = ProbeDefaultSpace(inputs, folder, args, plan);
+    if (args.space_file == std::string("front-end")) UseBrokenMapBudget(args, settings);
   } else if (args.space_probed && !flag_space) {
     // Resuming a run whose space the base's run chose: that run again, for what it found of the
     // front end; the space and the informed start stay the recorded ones.
@@ -416,10 +441,14 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   } else {
     folder.RefuseHeldRun();
   }
+  args.population_given = app.get_option("--population")->count() > 0;
+  args.divisions_given = app.get_option("--divisions")->count() > 0;
+  args.generations_given = app.get_option("--generations")->count() > 0;
+  args.sound_answer_given = app.get_option("--sound-answer-window")->count() > 0;
   if (args.inputs.log.empty() && !folder.resume()) {  // the built-in world's budget
-    if (app.get_option("--population")->count() == 0) args.population = kBuiltInPopulation;
-    if (app.get_option("--generations")->count() == 0) args.generations = kBuiltInGenerations;
-    if (app.get_option("--divisions")->count() == 0) args.divisions = kBuiltInDivisions;
+    if (!args.population_given) args.population = kBuiltInPopulation;
+    if (!args.generations_given) args.generations = kBuiltInGenerations;
+    if (!args.divisions_given) args.divisions = kBuiltInDivisions;
   }
 
   // Preamble: every input is loaded and validated before any work starts.
@@ -507,18 +536,24 @@ const SubcommandRegistrar kRegistrar{{
           ->capture_default_str();
       app.add_option("--stop-window", args->settling.window, "... for this many generations in a row")
           ->capture_default_str();
+      app.add_option("--sound-answer-window", args->settling.sound_answer_window,
+                     fmt::format("also stop once the recommended map is sound (its run did not fail) and the same for "
+                                 "this many generations in a row; 0 = off (default 0; {} when the tuner searches the "
+                                 "front end of a broken map)",
+                                 optim::BrokenMapBudget{}.sound_answer_window));
       app.add_option("--population", args->population,
-                     fmt::format("population size (default {}; {} on the built-in world; the seed paper's: 66 "
-                                 "with --divisions 10)",
-                                 args->population, kBuiltInPopulation));
+                     fmt::format("population size (default {}; {} on the built-in world; {} when the tuner "
+                                 "searches the front end of a broken map; the seed paper's: 66 with --divisions 10)",
+                                 args->population, kBuiltInPopulation, optim::BrokenMapBudget{}.population));
       app.add_option("--generations", args->generations,
                      fmt::format("the most generations (default {}; {} on the built-in world); the run stops earlier "
                                  "once the answer has settled, unless --no-early-stop",
                                  args->generations, kBuiltInGenerations));
       app.add_option("--divisions", args->divisions,
                      fmt::format("Das-Dennis divisions of the reference points (default {}: {} points for the "
-                                 "three objectives; {} on the built-in world)",
-                                 args->divisions, nsga3::DasDennisCount(3, args->divisions), kBuiltInDivisions));
+                                 "three objectives; {} on the built-in world; {} for a broken map's front end)",
+                                 args->divisions, nsga3::DasDennisCount(3, args->divisions), kBuiltInDivisions,
+                                 optim::BrokenMapBudget{}.divisions));
       app.add_option("--seed", args->seed, "random seed: the same seed gives the same result")->capture_default_str();
       neutral.Add(args->run.AddParallelismTo(app));
       neutral.Add(app.add_flag("--verbose,-v", args->verbose,

@@ -12,13 +12,18 @@
 namespace slamtune::optim {
 namespace {
 
-// Per vector, the sum over objectives of (f - min) / (max - min) over all `scores` (zero ranges
-// count 0). `scores` must not be empty and its vectors must have one length.
-std::vector<double> NormalisedSums(const std::vector<std::vector<double>>& scores) {
+// Per vector, the sum over objectives of (f - min) / (max - min), min and max over the vectors
+// `counted` marks (all when it is empty or marks none; zero ranges count 0). `scores` must not
+// be empty and its vectors must have one length.
+std::vector<double> NormalisedSums(const std::vector<std::vector<double>>& scores,
+                                   const std::vector<bool>& counted = {}) {
   const std::size_t m = scores.front().size();
+  const bool all = std::find(counted.begin(), counted.end(), true) == counted.end();
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -lo[0]);
-  for (const auto& f : scores) {
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    const auto& f = scores[i];
     SLAMTUNE_CHECK(f.size() == m);
+    if (!all && !counted[i]) continue;
     for (std::size_t k = 0; k < m; ++k) {
       lo[k] = std::min(lo[k], f[k]);
       hi[k] = std::max(hi[k], f[k]);
@@ -55,7 +60,9 @@ std::size_t MajorityIndex(const std::vector<std::string>& keys, const std::vecto
   SLAMTUNE_CHECK(!keys.empty() && keys.size() == scores.size() && keys.size() == ok.size());
   std::map<std::string, int> count;
   for (const auto& key : keys) ++count[key];
-  const std::vector<double> sums = NormalisedSums(scores);
+  // Ranges over the runs that did not fail: a failed run's score (worse than any map, e.g. 1e9
+  // corner pixels) would squash one objective's range and leave the others to decide alone.
+  const std::vector<double> sums = NormalisedSums(scores, ok);
   std::size_t best = 0;
   for (std::size_t i = 1; i < keys.size(); ++i) {
     const int c = count[keys[i]], best_c = count[keys[best]];

@@ -27,8 +27,9 @@ struct Recommendation {
 
 // The recommendation on objective vectors, shared with the settling rule: index of the individual
 // whose parameter set (`keys[i]`) most individuals share, preferring runs that did not fail
-// (`ok[i]`); ties go to the lowest sum of objectives normalised over all individuals (min-max per
-// objective, zero ranges count 0), then to the earliest. All three vectors have one entry per
+// (`ok[i]`); ties go to the lowest sum of objectives normalised over the individuals that did not
+// fail (min-max per objective, zero ranges count 0; over all when every one failed), then to the
+// earliest. All three vectors have one entry per
 // individual and must not be empty.
 std::size_t MajorityIndex(const std::vector<std::string>& keys, const std::vector<std::vector<double>>& scores,
                           const std::vector<bool>& ok);

@@ -39,6 +39,15 @@ TEST(CandidateSelection, FailedSetsAreNeverRecommendedWhenAnOkOneExists) {
   EXPECT_EQ(pop[RecommendByMajority(pop, kPaper).index].key, "a");
 }
 
+TEST(CandidateSelection, AFailedRunsScoreDoesNotDecideBetweenRealMaps) {
+  // Among the maps, b is better on n_c and n_e by far and worse on eta by a little. Normalised
+  // over the maps alone b wins; a failed run's eta 1, n_c 1e9, n_e 1e9 in the ranges would
+  // leave eta to decide alone, for a.
+  auto failed = EvaluationRecord::Failed("x", {}, "broke");
+  const std::vector<EvaluationRecord> pop{failed, R("a", 0.030, 300, 30), R("b", 0.031, 100, 5)};
+  EXPECT_EQ(pop[RecommendByMajority(pop, kPaper).index].key, "b");
+}
+
 TEST(CandidateSelection, FrontKneeAndWorst) {
   const std::vector<EvaluationRecord> all{R("lo-eta", 0.01, 300, 9), R("mid", 0.02, 120, 4),
                                           R("lo-nc", 0.05, 100, 8), R("bad", 0.06, 400, 12),

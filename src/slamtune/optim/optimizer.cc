@@ -111,7 +111,7 @@ nlohmann::json OptimizeSettings::ToJson() const {
       {"seed", seed},
       {"engine", engine},
       {"objectives", objectives.name()},
-      {"settling", {{"enabled", settling.enabled}, {"tolerance", settling.tolerance}, {"window", settling.window}}}};
+      {"settling", settling.ToJson()}};
   if (!seeds.empty()) j["seeds"] = seeds;  // absent without: older folders compare equal
   return j;
 }
@@ -143,8 +143,7 @@ nlohmann::json UpgradedSettings(nlohmann::json stored, const nlohmann::json& cur
   }
   // ... and ran their whole budget.
   if (stored.is_object() && !stored.contains("settling")) {
-    const SettlingOptions fixed{false};
-    stored["settling"] = {{"enabled", fixed.enabled}, {"tolerance", fixed.tolerance}, {"window", fixed.window}};
+    stored["settling"] = SettlingOptions{false}.ToJson();
   }
   return stored;
 }
@@ -276,7 +275,9 @@ Generations::Generations(const OptimizeSettings& settings, BatchEvaluator& evalu
                              std::shared_ptr<BatchEvaluator>(&evaluator, [](BatchEvaluator*) {}))),
       pop_(problem_, 0u, settings.seed),
       runs_before_(store.Count()),
-      settling_(settings.settling, settings.space) {}
+      settling_(settings.settling, settings.space, [objectives = settings.objectives](const std::vector<double>& f) {
+        return objectives.IsFailureScore(f);
+      }) {}
 
 void Generations::Report(unsigned gen, Show show) {
   if (!hooks_.progress) return;
@@ -328,8 +329,10 @@ void Generations::Begin(OptimizationStart start) {
     StartFromGenerationZero();
   }
   current_f_.assign(pop_.get_f().begin(), pop_.get_f().end());
-  // The settling rule sees every finished generation, the saved ones replayed on a resume.
-  for (unsigned g = 1; g <= done_gens_; ++g) {
+  // The settling rule sees every finished generation from generation 0, the saved ones replayed
+  // on a resume.
+  for (unsigned g = 0; g <= done_gens_; ++g) {
+    if (!store_.Generation(static_cast<int>(g))) continue;  // a folder that kept no generation 0
     const GenerationSnapshot saved = StoredSnapshot(store_, g);
     settling_.Update(g, saved.decisions, saved.objectives);
   }

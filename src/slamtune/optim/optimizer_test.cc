@@ -297,6 +297,37 @@ TEST(Optimizer, StopsOnceTheAnswerHasSettledAndAResumeStopsAtTheSameGeneration) 
   EXPECT_EQ(full.settling, "ran the fixed budget of 12 generations");
 }
 
+TEST(Optimizer, TheSoundAnswerRuleStopsOnceTheRecommendationHoldsAndAResumeAgrees) {
+  // FakeSlam's three-way trade-off keeps the front moving; its recommendation holds sooner.
+  OptimizeSettings sound = SmallSettings();
+  sound.generations = 30;
+  sound.settling.sound_answer_window = 2;
+  OptimizeSettings front_only = sound;
+  front_only.settling.sound_answer_window = 0;
+  const OptimizeResult whole = Optimize(FreshStore("sound_whole"), OptimizationStart::kNew, FakeSlam, 1, sound);
+  const OptimizeResult front = Optimize(FreshStore("sound_front"), OptimizationStart::kNew, FakeSlam, 1, front_only);
+  EXPECT_THAT(whole.settling, ::testing::HasSubstr("the recommended map was sound"));
+  EXPECT_GE(whole.generations_run, 2u);  // counted from generation 0: at least 0, 1 and 2
+  EXPECT_LT(whole.generations_run, front.generations_run);
+
+  // Killed right after generation 1 is saved: the resumed run replays generations 0 and 1
+  // through the rule and stops where the uninterrupted one did.
+  const std::string cut = FreshStore("sound_cut");
+  {
+    EvaluationStore store(cut);
+    BatchEvaluator evaluator(FakeSlam, &store, 1);
+    OptimizeHooks hooks;
+    hooks.progress = [](const std::string& line, bool force) {
+      if (force && line.rfind("gen 1/", 0) == 0) throw Killed{};
+    };
+    EXPECT_THROW(RunOptimization(sound, evaluator, store, OptimizationStart::kNew, hooks), Killed);
+  }
+  const OptimizeResult resumed = Optimize(cut, OptimizationStart::kResume, FakeSlam, 1, sound);
+  EXPECT_EQ(resumed.generations_run, whole.generations_run);
+  EXPECT_EQ(resumed.settling, whole.settling);
+  EXPECT_EQ(resumed.candidates[0].record.key, whole.candidates[0].record.key);
+}
+
 TEST(Optimizer, StopsWithAReadableErrorWhenEveryRunFails) {
   const std::string path = FreshStore("all_failed");
   const EvaluateFn fail = [](const Assignment& a) {

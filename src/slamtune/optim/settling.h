@@ -14,10 +14,21 @@
 // than `tolerance` and the recommendation's and the knee's objective vectors stayed the same. The rule
 // reads only what every saved generation holds (decision and objective vectors), so a resumed
 // run replays the saved generations through it and stops at the same generation.
+//
+// A search for a broken map asks a narrower question — which parameters give a sound map — and
+// its front keeps moving long after that is answered (eleven parameters, most of them refining
+// maps that are already right; docs/benchmarks.md, "A budget for a broken map"). With
+// `sound_answer_window` N > 0 the rule also ends the search once the recommendation is a sound
+// map (its run did not fail: with the front-end search a run that breaks is stopped and failed)
+// and its objective vector stayed the same for N generations in a row, counted from
+// generation 0.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "slamtune/optim/search_space.h"
 
@@ -27,17 +38,29 @@ struct SettlingOptions {
   bool enabled = true;
   double tolerance = 0.0025;  // mean normalised front movement per generation, in (0, 1)
   int window = 3;             // generations in a row that must satisfy the rule, >= 1
+  // Also settled when the recommendation is a sound map, unchanged for this many generations in
+  // a row (>= 0; 0 = off).
+  int sound_answer_window = 0;
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
+  // As stored in the run folder; FromJson reads folders written before sound_answer_window
+  // existed as 0 (off), which is how they ran.
+  nlohmann::json ToJson() const;
+  static SettlingOptions FromJson(const nlohmann::json& j);
 };
+
+// Whether an objective vector is a failed run's score (ObjectiveSet::IsFailureScore).
+using FailureTest = std::function<bool(const std::vector<double>& scores)>;
 
 class SettlingRule {
  public:
-  SettlingRule(SettlingOptions options, SearchSpace space);
+  // `is_failure` tells failed runs' scores (needed by sound_answer_window; none without it).
+  SettlingRule(SettlingOptions options, SearchSpace space, FailureTest is_failure = nullptr);
 
   // Feeds one finished generation (its population); returns true once the optimisation has
-  // settled (and stays true). Generation numbers must increase by one.
+  // settled (and stays true). Generation numbers must increase by one, from 0 or 1: the front's
+  // movement is measured from generation 1 on, the sound answer from the first fed.
   bool Update(unsigned generation, const std::vector<std::vector<double>>& x,
               const std::vector<std::vector<double>>& f);
 
@@ -50,10 +73,17 @@ class SettlingRule {
  private:
   SettlingOptions options_;
   SearchSpace space_;
+  FailureTest is_failure_;
   std::vector<std::vector<double>> previous_front_;
   std::vector<double> previous_recommended_, previous_knee_;  // objective vectors
   bool last_answer_changed_ = false;
   int calm_generations_ = 0;
+  // The sound-answer rule: the recommendation of the last generation fed and for how many
+  // generations in a row (after the first) it was the same sound map.
+  std::vector<double> last_sound_answer_;
+  int sound_generations_ = 0;
+  bool settled_by_sound_answer_ = false;
+  bool fed_ = false;
   unsigned last_generation_ = 0;
   unsigned settled_at_ = 0;
   double last_movement_ = -1.0;

@@ -101,5 +101,67 @@ TEST(SettlingRule, DisabledNeverStopsAndBadOptionsAreRefused) {
   EXPECT_THROW(SettlingRule({true, 0.01, 0}, OneDimension()), InputError);
 }
 
+// The sound-answer rule (a broken map's search): the failed score is {9, 9}.
+SettlingOptions SoundAnswer(int window) {
+  SettlingOptions o;
+  o.sound_answer_window = window;
+  return o;
+}
+FailureTest NinesFail() {
+  return [](const std::vector<double>& f) { return f == std::vector<double>{9.0, 9.0}; };
+}
+
+TEST(SettlingRule, ASoundAnswerUnchangedForTheWindowSettlesWhileTheFrontMoves) {
+  SettlingRule rule(SoundAnswer(1), OneDimension(), NinesFail());
+  // The recommendation (lowest normalised sum: {1, 1}) stays; the rest of the front moves a lot.
+  EXPECT_FALSE(rule.Update(0, {{3.0}, {4.0}, {5.0}}, {{1.0, 1.0}, {0.0, 5.0}, {5.0, 0.0}}));
+  EXPECT_TRUE(rule.Update(1, {{3.0}, {4.0}, {5.0}}, {{1.0, 1.0}, {0.5, 4.0}, {4.0, 0.5}}));
+  EXPECT_EQ(rule.settled_at(), 1u);
+  EXPECT_THAT(rule.Describe(60), HasSubstr("stopped after generation 1 of 60: the recommended map was sound"));
+  EXPECT_THAT(rule.Describe(60), HasSubstr("the same for 1 generation in a row"));
+}
+
+TEST(SettlingRule, AFailedOrChangingRecommendationIsNoSoundAnswer) {
+  // Most individuals share a failed set: the recommendation is a failure, never settled on.
+  SettlingRule failed(SoundAnswer(1), OneDimension(), NinesFail());
+  for (unsigned g = 0; g <= 4; ++g) {
+    EXPECT_FALSE(failed.Update(g, {{3.0}, {3.0}, {4.0}}, {{9.0, 9.0}, {9.0, 9.0}, {1.0 + g, 2.0}})) << g;
+  }
+  // A sound recommendation that changes every generation.
+  SettlingRule changing(SoundAnswer(2), OneDimension(), NinesFail());
+  EXPECT_FALSE(changing.Update(0, {{3.0}}, {{1.0, 1.0}}));
+  EXPECT_FALSE(changing.Update(1, {{3.0}}, {{1.0, 1.0}}));  // once the same: the window is 2
+  EXPECT_FALSE(changing.Update(2, {{4.0}}, {{0.5, 1.0}}));  // changed: counted afresh
+  EXPECT_FALSE(changing.Update(3, {{4.0}}, {{0.5, 1.0}}));
+  EXPECT_TRUE(changing.Update(4, {{4.0}}, {{0.5, 1.0}}));
+  EXPECT_EQ(changing.settled_at(), 4u);
+}
+
+TEST(SettlingRule, TheSoundAnswerRuleIsOffByDefaultAndWithTheEarlyStop) {
+  const Vectors x = {{3.0}, {4.0}, {5.0}};
+  SettlingRule off(SettlingOptions{}, OneDimension(), NinesFail());
+  SettlingOptions disabled = SoundAnswer(1);
+  disabled.enabled = false;
+  SettlingRule no_early_stop(disabled, OneDimension(), NinesFail());
+  for (unsigned g = 0; g <= 6; ++g) {
+    const double shift = 0.5 / (g + 1);  // the front keeps moving
+    const Vectors f = {{1.0, 1.0}, {shift, 5.0}, {5.0, shift}};
+    EXPECT_FALSE(off.Update(g, x, f)) << g;
+    EXPECT_FALSE(no_early_stop.Update(g, x, f)) << g;
+  }
+  EXPECT_THROW(SettlingRule(SoundAnswer(-1), OneDimension()), InputError);
+}
+
+TEST(SettlingOptions, JsonRoundTripAndFoldersWithoutTheSoundAnswerRule) {
+  SettlingOptions o = SoundAnswer(2);
+  o.window = 4;
+  const SettlingOptions back = SettlingOptions::FromJson(o.ToJson());
+  EXPECT_EQ(back.sound_answer_window, 2);
+  EXPECT_EQ(back.window, 4);
+  // Off is not written, so settings stored before the rule existed compare equal.
+  EXPECT_FALSE(SettlingOptions{}.ToJson().contains("sound_answer_window"));
+  EXPECT_EQ(SettlingOptions::FromJson({{"enabled", true}, {"tolerance", 0.01}, {"window", 3}}).sound_answer_window, 0);
+}
+
 }  // namespace
 }  // namespace slamtune::optim

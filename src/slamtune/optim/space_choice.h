@@ -28,6 +28,19 @@ struct DefaultSpaceChoice {
   std::string Reason() const;
 };
 
+// The budget of the front-end search the tuner chooses for a broken map (the user gave no
+// --population, --divisions or --sound-answer-window). The question is which parameters give a
+// sound map, and each run of a wide search window is dear: a small population (12 individuals
+// over the 10 reference points of 3 divisions), stopped once the recommendation is a sound map
+// that two more generations did not change (settling.h). One generation is too few: generation
+// 1 rarely beats the informed start's repaired set, which is sound but not yet good
+// (docs/benchmarks.md, "A budget for a broken map").
+struct BrokenMapBudget {
+  std::size_t population = 12;
+  std::size_t divisions = 3;
+  int sound_answer_window = 2;
+};
+
 // Runs the base configuration once on `context` (one SLAM run; its matches go to the context's
 // caches, so the optimisation repeats none of them) and chooses.
 DefaultSpaceChoice ChooseDefaultSpace(const SlamEvaluationContext& context);
