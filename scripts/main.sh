@@ -3,7 +3,7 @@
 # argument it runs on the built-in world office-jump, whose odometry reports 1 m of travel that
 # did not happen: at slam_karto's defaults the sequential match cannot follow and walls come out
 # doubled; the optimisation sees the break, searches the front-end parameters and repairs the map
-# (about 3 minutes on 2 cores). Arguments are passed to `slamtune optimize` (e.g. a recording and
+# (about 2 minutes on 2 cores). Arguments are passed to `slamtune optimize` (e.g. a recording and
 # --out DIR). Run again, it continues (or reports) the same folder.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -262,8 +262,9 @@ std::shared_ptr<optim::SlamEvaluationContext> ProbeDefaultSpace(const TuningInpu
   return probed;
 }
 
-// A log whose base map breaks in the front end: the broken-map budget (optim::BrokenMapBudget)
-// for what the user left to the tuner.
+// A base map that breaks in the front end: the broken-map budget (optim::BrokenMapBudget) for
+// what the user left to the tuner. Not for a featureless stretch alone, where no run breaks and
+// every map would count as sound.
 void UseBrokenMapBudget(OptimizeArgs& args, optim::OptimizeSettings& settings) {
   const optim::BrokenMapBudget budget;
   if (!args.population_given) args.population = budget.population;
@@ -331,7 +332,10 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
   std::shared_ptr<optim::SlamEvaluationContext> probed;
   if (args.space_file.empty() && !flag_space && !args.around_base_without_steps) {
     probed = ProbeDefaultSpace(inputs, folder, args, plan);
-    if (args.space_file == std::string("front-end")) UseBrokenMapBudget(args, settings);
+    // A break (not only a featureless stretch): runs that break there fail, so a sound map means one that held.
+    if (args.space_file == std::string("front-end") && plan.base_front_end->evidence.breaks > 0) {
+      UseBrokenMapBudget(args, settings);
+    }
   } else if (args.space_probed && !flag_space) {
     // Resuming a run whose space the base's run chose: that run again, for what it found of the
     // front end; the space and the informed start stay the recorded ones.

@@ -28,8 +28,9 @@ struct DefaultSpaceChoice {
   std::string Reason() const;
 };
 
-// The budget of the front-end search the tuner chooses for a broken map (the user gave no
-// --population, --divisions or --sound-answer-window). The question is which parameters give a
+// The budget of the front-end search the tuner chooses for a broken map: the base run shows a
+// break (not only a featureless stretch, where no run breaks and every map would count as sound)
+// and the user gave no --population, --divisions or --sound-answer-window. The question is which parameters give a
 // sound map, and each run of a wide search window is dear: a small population (12 individuals
 // over the 10 reference points of 3 divisions), stopped once the recommendation is a sound map
 // that two more generations did not change (settling.h). One generation is too few: generation
