@@ -103,9 +103,12 @@ bool SettlingRule::Update(unsigned generation, const std::vector<std::vector<dou
   if (settled()) return true;
   const std::vector<double> recommended = RecommendedScores(space_, is_failure_, x, f);
   const bool sound = !is_failure_ || !is_failure_(recommended);
-  sound_generations_ = sound && recommended == last_sound_answer_ ? sound_generations_ + 1 : 0;
-  last_sound_answer_ = sound ? recommended : std::vector<double>{};
-  if (generation == 0) return false;  // the front's movement is measured from generation 1 on
+  // (A failed recommendation equal to the previous one is failed too: the count stays 0.)
+  sound_generations_ = sound && recommended == previous_recommended_ ? sound_generations_ + 1 : 0;
+  if (generation == 0) {  // the front's movement is measured from generation 1 on
+    previous_recommended_ = recommended;
+    return false;
+  }
   const auto front = NonDominatedVectors(f);
   const std::vector<double> knee = f[KneeIndex(f)];
   const bool had_previous = !previous_front_.empty();

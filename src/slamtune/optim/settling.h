@@ -78,9 +78,8 @@ class SettlingRule {
   std::vector<double> previous_recommended_, previous_knee_;  // objective vectors
   bool last_answer_changed_ = false;
   int calm_generations_ = 0;
-  // The sound-answer rule: the recommendation of the last generation fed and for how many
-  // generations in a row (after the first) it was the same sound map.
-  std::vector<double> last_sound_answer_;
+  // The sound-answer rule: for how many generations in a row (after the first) the
+  // recommendation was the same sound map as in the generation before.
   int sound_generations_ = 0;
   bool settled_by_sound_answer_ = false;
   bool fed_ = false;
