@@ -7,15 +7,8 @@
 # Usage: bad_input_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR   (datasets are not needed)
 # Exit 0 = pass, 1 = fail, 77 = skip (binary missing).
 set -u
-bin=${1:?usage: bad_input_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-if [[ ! -x "$bin" ]]; then
-  echo "SKIP: $bin is not an executable" >&2
-  exit 77
-fi
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_bad_input_cli.XXXXXX")
-trap 'chmod -R u+w "$work" 2>/dev/null; rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin bad_input_cli_test "$@"
 
 # expect_error LINE ARGS...: `slamtune ARGS` exits 2 and prints exactly LINE on stderr.
 expect_error() {
@@ -55,7 +48,7 @@ rawlaser() {  # T
 }
 
 # A small simulated corridor log for the commands that need a real one.
-"$bin" simulate --world corridor --seed 3 --out "$work/sim" >/dev/null 2>&1 || { echo "FAIL: simulate" >&2; exit 1; }
+simulate_world "$work/sim" corridor --seed 3
 log="$work/sim/corridor.clf"
 fast=(--max-scans 80 --set minimum_travel_distance=0.4 --quiet)
 
@@ -146,8 +139,4 @@ code=$?
   fail "render on a full disk: $(cat "$work/err.txt")"
 [[ -z "$(ls "$work/r12b")" ]] || fail "render on a full disk left $(ls "$work/r12b")"
 
-if ((failures > 0)); then
-  echo "$failures failure(s)" >&2
-  exit 1
-fi
-echo "bad input CLI: all checks passed"
+cli_test_end

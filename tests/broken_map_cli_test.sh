@@ -7,15 +7,10 @@
 # at the defaults. Flags the user gives keep their values.
 # Usage: broken_map_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: broken_map_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-command -v python3 > /dev/null || { echo "SKIP: python3 not installed (scripts/install-deps.sh)" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_broken_map.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin broken_map_cli_test "$@" -- python3
 
-"$bin" simulate --world office --out "$work/sim" > /dev/null || { echo "FAIL: simulate" >&2; exit 1; }
+simulate_world "$work/sim" office
 log="$work/sim/office.clf"
 relations="$work/sim/office.relations"
 "$bin" fault "$log" --fault jump,20,0.1,1.5 --out "$work/jump.clf" --quiet > /dev/null || { echo "FAIL: fault" >&2; exit 1; }
@@ -54,5 +49,4 @@ rc=$?
 [[ $rc -eq 2 ]] || fail "--sound-answer-window -1: exit $rc, want 2"
 grep -q "^slamtune: error: .*--sound-answer-window = -1 is out of range" "$work/bad.err" || fail "message: $(cat "$work/bad.err")"
 
-if [[ $failures -gt 0 ]]; then echo "broken_map_cli_test: $failures failure(s)"; exit 1; fi
-echo "broken_map_cli_test: all checks passed"
+cli_test_end

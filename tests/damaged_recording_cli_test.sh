@@ -4,18 +4,12 @@
 # room) with one fault each.
 # Usage: damaged_recording_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: damaged_recording_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-command -v python3 >/dev/null || { echo "SKIP: python3 is needed to write the bags" >&2; exit 77; }
-tests="$(cd "$(dirname "$0")" && pwd)"
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_damaged.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin damaged_recording_cli_test "$@" -- python3
 
 # bag NAME PYTHON [DRIVE_ARGS]: writes $work/NAME.bag from a Drive(DRIVE_ARGS) `b` changed by PYTHON.
 bag() {
-  PYTHONPATH="$tests" python3 - "$work/$1.bag" <<EOF || fail "could not write $1.bag"
+  PYTHONPATH="$tests_dir" python3 - "$work/$1.bag" <<EOF || fail "could not write $1.bag"
 import math, sys
 import ros1_bag
 b = ros1_bag.Drive(${3:-})
@@ -82,7 +76,7 @@ grep -q '<p class="warning">Not used: 11 scans without odometry' "$work/opt_tfna
 "$bin" check "$work/tfnan.bag" --json > "$work/check_tfnan.json" || fail "check --json on tfnan.bag"
 [[ $(count "$work/check_tfnan.json" scans_not_used no_odometry count) == 11 ]] || fail "check --json: count"
 # A recording cut off after its first chunk (no end marker): read up to there, and said.
-python3 - "$tests/fixtures/recordings/office_zstd.mcap" "$work/first_chunk.mcap" <<'EOF2'
+python3 - "$tests_dir/fixtures/recordings/office_zstd.mcap" "$work/first_chunk.mcap" <<'EOF2'
 import struct, sys
 data = open(sys.argv[1], "rb").read()
 pos = 8
@@ -131,10 +125,9 @@ grep -q "^problem no_valid_reading: not one of the 18100 readings of the 100 sca
   fail "check does not report the log without a range: $(grep -E '^(problem|verdict)' "$work/check_noranges.txt")"
 
 # 5. A rosbag2 folder whose metadata.yaml lists the same split twice: refused, naming both entries.
-cp -r "$tests/fixtures/recordings/office_db3" "$work/twice"
+cp -r "$tests_dir/fixtures/recordings/office_db3" "$work/twice"
 sed -i 's/^    - office_db3_0.db3$/    - office_db3_0.db3\n    - office_db3_0.db3/' "$work/twice/metadata.yaml"
 expect_line "slamtune: error: $work/twice/metadata.yaml: relative_file_paths lists $work/twice/office_db3_0.db3 twice (entries 1 and 2, \"office_db3_0.db3\" and \"office_db3_0.db3\"): refused, as reading it twice would give every message twice; remove the repeated entry" \
   "$bin" info "$work/twice"
 
-if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
-echo "damaged recordings: all checks passed"
+cli_test_end

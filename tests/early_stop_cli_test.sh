@@ -6,17 +6,8 @@
 # front still moves is tested on a synthetic problem in optim/settling_test.cc.)
 # Usage: early_stop_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail.
 set -u
-bin=${1:?usage: early_stop_cli_test.sh SLAMTUNE_BINARY}
-command -v sqlite3 > /dev/null || { echo "SKIP: sqlite3 not installed (scripts/install-deps.sh)" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_early_stop.XXXXXX")
-background=()
-cleanup() {
-  for p in "${background[@]}"; do kill "$p" 2>/dev/null; done
-  rm -rf "$work"
-}
-trap cleanup EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin early_stop_cli_test "$@" -- sqlite3
 
 # Seed 4 settles after 8 generations (seed 1 after 23): long enough to interrupt before the stop,
 # short enough to run twice (whole, then cut and resumed) in a test.
@@ -73,8 +64,4 @@ for f in best.yaml best_change.yaml best_slam_karto.yaml table3_best_worst_param
   cmp -s "$work/whole/$f" "$work/cut/$f" || fail "$f differs between the uninterrupted and the resumed run"
 done
 
-if (( failures > 0 )); then
-  echo "$failures failure(s)" >&2
-  exit 1
-fi
-echo "PASS: settled after generation $settled of 30; interrupted after $interrupted, resumed to the same stop"
+cli_test_end "settled after generation $settled of 30; interrupted after $interrupted, resumed to the same stop"

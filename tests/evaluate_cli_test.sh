@@ -3,15 +3,8 @@
 # Usage: evaluate_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR   (datasets are not needed)
 # Exit 0 = pass, 1 = fail, 77 = skip (binary missing).
 set -u
-bin=${1:?usage: evaluate_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-if [[ ! -x "$bin" ]]; then
-  echo "SKIP: $bin is not an executable" >&2
-  exit 77
-fi
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_evaluate_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin evaluate_cli_test "$@"
 
 # A 12 x 10 map: one room with walls on columns 1..10 and rows 1..8 (10 x 8 outline = 32
 # wall cells), free inside, unknown around. Bytes: wall, free, unknown, then optional gap.
@@ -106,8 +99,4 @@ expect_error "harris_k = 0.3: must be in (0, 0.25)" "$work/room.pgm" --harris-k 
 expect_error "blur_size = 2: must be odd" "$work/room.pgm" "$work/room.pgm" --blur-size 2
 expect_error "missing.pgm" "$work/room.pgm" "$work/missing.pgm" --json
 
-if ((failures > 0)); then
-  echo "evaluate_cli_test: $failures failure(s)" >&2
-  exit 1
-fi
-echo "evaluate_cli_test: all checks passed"
+cli_test_end

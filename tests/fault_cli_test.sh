@@ -5,15 +5,11 @@
 # line and exit 2 with nothing written.
 # Usage: fault_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR (datasets are not needed). Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: fault_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-fixtures="$(cd "$(dirname "$0")" && pwd)/fixtures/recordings"
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_fault_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin fault_cli_test "$@"
+fixtures="$tests_dir/fixtures/recordings"
 
-"$bin" simulate --world office --out "$work/sim" > /dev/null || { echo "FAIL: simulate" >&2; exit 1; }
+simulate_world "$work/sim" office
 log="$work/sim/office.clf"
 relations="$work/sim/office.relations"
 
@@ -91,8 +87,4 @@ expect_error "--out is a folder" "$log" --fault jump,20,0.1,1 --out "$work"
 expect_error "no-such.clf" "$work/no-such.clf" --fault jump,20,0.1,1 --out "$work/x.clf"
 [[ ! -e "$work/x.clf" && ! -e "$work/x.clf.partial" ]] || fail "a refused command wrote its output"
 
-if [[ $failures -gt 0 ]]; then
-  echo "fault CLI test: $failures failure(s)" >&2
-  exit 1
-fi
-echo "fault CLI test passed"
+cli_test_end

@@ -4,13 +4,8 @@
 # with a clear message instead of hanging.
 # Usage: mpi_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: mpi_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-command -v mpirun > /dev/null || { echo "SKIP: mpirun not installed (openmpi-bin)" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_mpi_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin mpi_cli_test "$@" -- mpirun
 # As root (CI) Open MPI wants to be told; --oversubscribe: 2 ranks even where fewer slots are set.
 mpi=(timeout 600 mpirun --allow-run-as-root --oversubscribe -np 2)
 small=(--population 8 --generations 2 --divisions 3 --seed 5)
@@ -63,5 +58,4 @@ expect_error "already holds an optimisation" "${mpi[@]}" "$bin" optimize --out "
 expect_error "cannot open" "${mpi[@]}" "$bin" sweep "$work/missing.clf" --vary g=6:8 --out "$work/x2" --quiet
 expect_error "different settings" "${mpi[@]}" "$bin" optimize --resume "$work/mpi" --seed 6 --population 8 --generations 2 --divisions 3
 
-if [[ $failures -gt 0 ]]; then echo "mpi_cli_test: $failures failure(s)"; exit 1; fi
-echo "mpi_cli_test: all checks passed"
+cli_test_end

@@ -4,12 +4,8 @@
 # accepted whatever their order; runs that produce an empty map never recommended.
 # Usage: optimize_bad_input_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: optimize_bad_input_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_opt_bad.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin optimize_bad_input_cli_test "$@"
 tiny=(--population 4 --generations 1 --divisions 2 --jobs 2 --quiet)
 
 # expect_line EXPECTED_STDERR_LINE CMD...: exit 2, exactly that one line on stderr, no run folder left.
@@ -100,5 +96,4 @@ grep -q ',failed,the map has no occupied cell' "$work/minrange/evaluations.csv" 
 rec=$(sed -n '/"recommended": {/,/"status"/p' "$work/minrange/results.json" | grep '"status"')
 [[ "$rec" == *'"ok"'* ]] || fail "an empty map was recommended: $rec"
 
-if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
-echo "optimize bad input: all checks passed"
+cli_test_end

@@ -3,12 +3,8 @@
 # outputs, an exact resume after `kill -9` in the middle of a generation, and input errors.
 # Usage: optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_opt_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin optimize_cli_test "$@"
 small=(--population 8 --generations 3 --divisions 3 --seed 5 --jobs 2 --quiet)
 
 # 1. An uninterrupted run writes every output.
@@ -58,7 +54,7 @@ setting() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["se
 "$bin" optimize --out "$work/world_budget" --population 4 --generations 1 --seed 5 --jobs 2 --quiet > /dev/null 2>&1 ||
   fail "optimize (world budget) failed"
 [[ $(setting "$work/world_budget/results.json" divisions) == 10 ]] || fail "the built-in world's divisions are not 10"
-"$bin" simulate --world office --out "$work/office_log" > /dev/null 2>&1 || fail "simulate failed"
+simulate_world "$work/office_log" office
 "$bin" optimize "$work/office_log/office.clf" --max-scans 40 --generations 1 --seed 5 --jobs 2 --quiet \
   --out "$work/log_budget" > "$work/log_budget.txt" 2>&1 || fail "optimize (log budget) failed: $(tail -3 "$work/log_budget.txt")"
 [[ $(setting "$work/log_budget/results.json" population) == 36 && $(setting "$work/log_budget/results.json" divisions) == 7 ]] ||
@@ -113,5 +109,4 @@ expect_error "cannot create output folder" "$bin" optimize --out "$work/afile/su
 [[ $(grep -c "loop_match_minimum_chain_size" "$work/sweep/sweep.csv") -ge 1 ]] || fail "sweep.csv lacks the parameter"
 expect_error "bounds reversed" "$bin" sweep --vary r=6:2 --out "$work/sweep2"
 
-if [[ $failures -gt 0 ]]; then echo "optimize_cli_test: $failures failure(s)"; exit 1; fi
-echo "optimize_cli_test: all checks passed"
+cli_test_end

@@ -6,13 +6,9 @@
 # best.yaml` starts the next run from exactly the recommendation.
 # Usage: params_files_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: params_files_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-fixtures="$(cd "$(dirname "$0")" && pwd)/fixtures/params"
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_params_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin params_files_cli_test "$@"
+fixtures="$tests_dir/fixtures/params"
 common=(--population 8 --divisions 3 --seed 3 --jobs 2)
 small=("${common[@]}" --generations 2)
 short=("${common[@]}" --generations 1 --quiet)
@@ -82,5 +78,4 @@ grep -q "is not registered by slam_toolbox" "$work/bad.txt" || fail "no plugin p
 grep -q '"base": "slam_toolbox'"'"'s defaults"' "$work/preset/results.json" || fail "preset baseline not named"
 grep -q '"loop_search_maximum_distance": 3.0' "$work/preset/results.json" || fail "slam_toolbox's r = 3.0 not the baseline"
 
-if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
-echo "params files: all checks passed"
+cli_test_end

@@ -5,16 +5,12 @@
 # convert, check (clean and planted faults), and malformed recordings.
 # Usage: recording_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: recording_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-fixtures="$(cd "$(dirname "$0")" && pwd)/fixtures/recordings"
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_rec_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin recording_cli_test "$@"
+fixtures="$tests_dir/fixtures/recordings"
 # The world the fixtures were made from (their README).
-"$bin" simulate --world office --seed 1 --speed 1.0 --scan-rate 3 --laser-offset 0.12,-0.04,0.05 --float32-scans \
-  --range-resolution 0.001953125 --out "$work/sim" > /dev/null || { echo "FAIL: simulate" >&2; exit 1; }
+simulate_world "$work/sim" office --seed 1 --speed 1.0 --scan-rate 3 --laser-offset 0.12,-0.04,0.05 --float32-scans \
+  --range-resolution 0.001953125
 carmen="$work/sim/office.clf"
 bags=(office_zstd.mcap office_db3 office_lz4.bag office_bz2.bag)
 
@@ -95,5 +91,4 @@ expect_error "two scan topics" "$fixtures/fault_two_scan_topics.mcap" "--scan-to
 expect_error "unknown scan topic" "$fixtures/office_zstd.mcap" "--scan-topic /nope" --scan-topic /nope
 expect_error "bad --beams" "$fixtures/office_zstd.mcap" "--beams 'x'" --beams x
 
-if [[ $failures -gt 0 ]]; then echo "$failures failure(s)" >&2; exit 1; fi
-echo "recording CLI: all checks passed"
+cli_test_end

@@ -5,15 +5,11 @@
 # parameter tables — as the world's CARMEN log.
 # Usage: recording_optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: recording_optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-fixtures="$(cd "$(dirname "$0")" && pwd)/fixtures/recordings"
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_rec_opt.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
-"$bin" simulate --world office --seed 1 --speed 1.0 --scan-rate 3 --laser-offset 0.12,-0.04,0.05 --float32-scans \
-  --range-resolution 0.001953125 --out "$work/sim" > /dev/null || { echo "FAIL: simulate" >&2; exit 1; }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin recording_optimize_cli_test "$@"
+fixtures="$tests_dir/fixtures/recordings"
+simulate_world "$work/sim" office --seed 1 --speed 1.0 --scan-rate 3 --laser-offset 0.12,-0.04,0.05 --float32-scans \
+  --range-resolution 0.001953125
 budget=(--population 12 --generations 4 --divisions 4 --seed 7 --jobs 2)
 candidates() { grep -E '^(recommended|knee|worst|default) ' "$1"; }
 
@@ -32,5 +28,4 @@ for b in office_zstd.mcap office_db3 office_lz4.bag office_bz2.bag; do
   grep -q "^laser offset: x 0.1200 m, y -0.0400 m" "$work/$b.txt" || fail "optimize $b does not print the laser offset"
 done
 echo "recommended on every recording: $(grep '^recommended' "$work/carmen.candidates")"
-if [[ $failures -gt 0 ]]; then echo "$failures failure(s)" >&2; exit 1; fi
-echo "recording optimize CLI: all checks passed"
+cli_test_end

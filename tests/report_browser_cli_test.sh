@@ -12,17 +12,13 @@
 # Usage: report_browser_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip
 # (no Chromium: scripts/install-deps.sh installs the Debian package `chromium`).
 set -u
-bin=${1:?usage: report_browser_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin report_browser_cli_test "$@"
 browser=""
 for b in chromium chromium-browser google-chrome; do
   if command -v "$b" > /dev/null 2>&1; then browser=$(command -v "$b"); break; fi
 done
 [[ -n "$browser" ]] || { echo "SKIP: no chromium (apt-get install chromium, or scripts/install-deps.sh)" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_browser_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 shots=${SLAMTUNE_SCREENSHOTS:-${TMPDIR:-/tmp}/slamtune_report_screenshots}
 mkdir -p "$shots"
 
@@ -144,5 +140,4 @@ done
 echo "screenshots: $shots/report_top.png $shots/report_maps.png $shots/report_population.png" \
   "$shots/report_front-end.png $shots/report_history.png $shots/report_evaluations.png"
 
-if [[ $failures -gt 0 ]]; then echo "$failures failure(s)" >&2; exit 1; fi
-echo "PASS"
+cli_test_end

@@ -7,16 +7,11 @@
 # `slamtune render --params FILE` reads the file with the same loader.
 # Usage: reproduce_cli_test.sh SLAMTUNE_BINARY. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: reproduce_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-command -v python3 >/dev/null || { echo "SKIP: python3 is needed to read results.json" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_reproduce_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin reproduce_cli_test "$@" -- python3
 
 # On the hall world (drift doubles walls) both bases are improved with this small budget.
-"$bin" simulate --world hall --seed 2 --out "$work/sim" >/dev/null 2>&1 || { echo "FAIL: simulate failed" >&2; exit 1; }
+simulate_world "$work/sim" hall --seed 2
 log="$work/sim/hall.clf"
 rel="$work/sim/hall.relations"
 
@@ -73,8 +68,4 @@ done
 grep -q '"node_mode": "slam_toolbox_sync"' "$work/run_slam_toolbox_sync/run.json" ||
   fail "run --params best.yaml did not take the mode best.yaml was tuned for"
 
-if ((failures > 0)); then
-  echo "$failures failure(s)" >&2
-  exit 1
-fi
-echo "reproduce_cli_test: all passed"
+cli_test_end

@@ -12,14 +12,8 @@
 # resumed process runs only what was not stored).
 # Usage: resume_equal_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: resume_equal_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-command -v sqlite3 >/dev/null || { echo "SKIP: sqlite3 is not installed" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_resume_equal.XXXXXX")
-background=()
-trap 'for p in "${background[@]}"; do kill -9 "$p" 2>/dev/null; done; rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin resume_equal_cli_test "$@" -- sqlite3
 
 # generation DIR: the last generation stored in DIR's run database (-1 before the first).
 generation() {
@@ -188,5 +182,4 @@ rm "$run/results.json"
   fail "--resume of a finished folder failed: $(cat "$work/finished.err")"
 same_folder "$work/whole" "$run" "results.json deleted"
 
-if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
-echo "resume equal: all checks passed"
+cli_test_end

@@ -6,13 +6,8 @@
 # tables).
 # Usage: resume_safety_cli_test.sh SLAMTUNE_BINARY [DATASETS_DIR]. Exit 0 pass, 1 fail, 77 skip.
 set -u
-bin=${1:?usage: resume_safety_cli_test.sh SLAMTUNE_BINARY}
-[[ -x "$bin" ]] || { echo "SKIP: $bin is not an executable" >&2; exit 77; }
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_resume_safety.XXXXXX")
-background=()
-trap 'for p in "${background[@]}"; do kill -9 "$p" 2>/dev/null; done; rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin resume_safety_cli_test "$@"
 
 # expect_line EXPECTED CMD...: exit 2 and exactly the one line EXPECTED on stdout and stderr together.
 expect_line() {
@@ -161,5 +156,4 @@ for f in table3_best_worst_params.csv table4_6_objectives.csv table7_loop_closur
   cmp -s "$work/whole/$f" "$work/cut/$f" || fail "$f differs between the uninterrupted and the resumed run"
 done
 
-if (( failures > 0 )); then echo "$failures failure(s)" >&2; exit 1; fi
-echo "resume safety: all checks passed"
+cli_test_end

@@ -5,16 +5,8 @@
 # Usage: run_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR
 # Exit 0 = pass, 1 = fail, 77 = skip (binary missing).
 set -u
-bin=${1:?usage: run_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR}
-datasets=${2:-}
-if [[ ! -x "$bin" ]]; then
-  echo "SKIP: $bin is not an executable" >&2
-  exit 77
-fi
-work=$(mktemp -d "${TMPDIR:-/tmp}/slamtune_run_cli.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "$0")/lib.sh"
+cli_test_begin run_cli_test "$@"
 json_has() {  # FILE KEY: a top-level key "KEY": in the pretty-printed JSON
   grep -q "^  \"$2\":" "$1" || fail "$1 has no top-level key $2"
 }
@@ -22,8 +14,7 @@ json_int() {  # FILE KEY -> integer value of a top-level key
   sed -n "s/^  \"$2\": \([0-9]*\),\{0,1\}$/\1/p" "$1"
 }
 
-"$bin" simulate --world corridor --speed 1.0 --seed 3 --out "$work/sim" >/dev/null 2>&1 ||
-  { echo "FAIL: slamtune simulate failed" >&2; exit 1; }
+simulate_world "$work/sim" corridor --speed 1.0 --seed 3
 log="$work/sim/corridor.clf"
 rel="$work/sim/corridor.relations"
 fast=(--set minimum_travel_distance=0.4 --set scan_buffer_size=20 --set loop_match_minimum_chain_size=5)
@@ -148,8 +139,4 @@ else
   echo "note: datasets not found, aces slice skipped" >&2
 fi
 
-if ((failures > 0)); then
-  echo "$failures failure(s)" >&2
-  exit 1
-fi
-echo "run CLI: all checks passed"
+cli_test_end
