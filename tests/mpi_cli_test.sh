@@ -8,7 +8,8 @@ source "$(dirname "$0")/lib.sh"
 cli_test_begin mpi_cli_test "$@" -- mpirun
 # As root (CI) Open MPI wants to be told; --oversubscribe: 2 ranks even where fewer slots are set.
 mpi=(timeout 600 mpirun --allow-run-as-root --oversubscribe -np 2)
-small=(--population 8 --generations 2 --divisions 3 --seed 5)
+office_slice
+small=("${slice[@]}" --population 8 --generations 2 --divisions 3 --seed 5)
 
 "${mpi[@]}" "$bin" optimize --out "$work/mpi" "${small[@]}" > "$work/mpi.txt" 2>&1
 rc=$?
@@ -35,7 +36,7 @@ n=$(sed -n 's/^\([0-9]*\) of the SLAM runs ran on the 1 worker ranks$/\1/p' "$wo
 [[ -n "$n" && "$n" -gt 0 ]] || fail "no SLAM run ran on the worker rank: $(tail -3 "$work/mpi.txt")"
 
 # sweep under mpirun: the same table as one process (wall_s, column 14, is not a result).
-sweep=(sweep --vary g=6:20:7 --fix r=2)
+sweep=(sweep "${slice[@]}" --vary g=6:20:7 --fix r=2)
 "${mpi[@]}" "$bin" "${sweep[@]}" --out "$work/sweep_mpi" > "$work/sweep_mpi.txt" 2>&1 ||
   fail "mpirun sweep failed: $(tail -5 "$work/sweep_mpi.txt")"
 "$bin" "${sweep[@]}" --out "$work/sweep_one" --jobs 2 --quiet > /dev/null 2>&1 || fail "single-process sweep failed"

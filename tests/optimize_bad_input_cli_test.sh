@@ -6,7 +6,8 @@
 set -u
 source "$(dirname "$0")/lib.sh"
 cli_test_begin optimize_bad_input_cli_test "$@"
-tiny=(--population 4 --generations 1 --divisions 2 --jobs 2 --quiet)
+office_slice
+tiny=("${slice[@]}" --population 4 --generations 1 --divisions 2 --jobs 2 --quiet)
 
 # expect_line EXPECTED_STDERR_LINE CMD...: exit 2, exactly that one line on stderr, no run folder left.
 n=0
@@ -50,7 +51,7 @@ expect_line "slamtune: error: $work/space_dir: cannot open: is a directory" "$bi
 # give says that value is the base's.
 expect_line "slamtune: error: mapper parameters correlation_search_space_resolution = 1 and correlation_search_space_smear_deviation = 0.03 are inconsistent: the smear deviation must be in [0.5, 10] x the resolution = [0.5, 10] (correlation_search_space_smear_deviation is not given with --set: the base configuration's value; set it too, or choose values that fit it)" \
   "$bin" optimize --set correlation_search_space_dimension=2 --set correlation_search_space_resolution=1.0
-"$bin" run --out "$work/run_set" --quiet --set correlation_search_space_dimension=2 \
+"$bin" run "${slice[@]}" --out "$work/run_set" --quiet --set correlation_search_space_dimension=2 \
   --set correlation_search_space_resolution=1.0 --set correlation_search_space_smear_deviation=1.0 >/dev/null 2>"$work/run_set.err" ||
   fail "run refused a consistent --set of the matcher: $(cat "$work/run_set.err")"
 
@@ -89,7 +90,7 @@ grep -q '"loop_match_minimum_response_coarse": 0.7' "$work/flags/results.json" |
 
 # Readings all filtered out give an empty map: such runs fail, and one is never recommended.
 s=$(space minrange 'vary:\n  min_laser_range: {min: 0, max: 37}\n')
-"$bin" optimize --space "$s" --out "$work/minrange" --population 8 --generations 2 --divisions 3 --jobs 2 --quiet \
+"$bin" optimize "${slice[@]}" --space "$s" --out "$work/minrange" --population 8 --generations 2 --divisions 3 --jobs 2 --quiet \
   >/dev/null 2>"$work/minrange.err" || fail "optimize over min_laser_range failed: $(cat "$work/minrange.err")"
 grep -q ',failed,the map has no occupied cell' "$work/minrange/evaluations.csv" ||
   fail "no run with an empty map was marked failed"

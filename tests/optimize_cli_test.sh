@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# End-to-end test of `slamtune optimize` and `slamtune sweep` on the built-in office world:
-# outputs, an exact resume after `kill -9` in the middle of a generation, and input errors.
+# End-to-end test of `slamtune optimize` and `slamtune sweep` on a slice of the simulated office
+# world (the built-in world itself for its default budget): outputs, an exact resume after `kill -9`
+# in the middle of a generation, and input errors.
 # Usage: optimize_cli_test.sh SLAMTUNE_BINARY DATASETS_DIR. Exit 0 pass, 1 fail, 77 skip.
 set -u
 source "$(dirname "$0")/lib.sh"
 cli_test_begin optimize_cli_test "$@"
-small=(--population 8 --generations 3 --divisions 3 --seed 5 --jobs 2 --quiet)
+# The plumbing runs on a slice of the office world's log; what is particular to the built-in world
+# (its default budget) on the world itself.
+office_slice
+small=("${slice[@]}" --population 8 --generations 3 --divisions 3 --seed 5 --jobs 2 --quiet)
 
 # 1. An uninterrupted run writes every output.
 "$bin" optimize --out "$work/whole" "${small[@]}" > "$work/whole.txt" 2>&1 || fail "optimize failed: $(tail -3 "$work/whole.txt")"
@@ -30,7 +34,7 @@ grep -Eq '"set": *"occupied"' "$work/whole/results.json" || fail "results.json: 
 
 # With --verbose, progress lines (plain, not a terminal) say how much scan matching the runs
 # shared and the end lists the caches; without it, or with --no-share, nothing of it.
-tiny=(--population 4 --generations 1 --divisions 3 --seed 5 --jobs 2)
+tiny=("${slice[@]}" --population 4 --generations 1 --divisions 3 --seed 5 --jobs 2)
 "$bin" optimize --out "$work/tiny" "${tiny[@]}" --verbose > "$work/tiny.txt" 2>&1 || fail "optimize (tiny) failed: $(tail -3 "$work/tiny.txt")"
 grep -Eq '^gen 1/1 .*\| matches: [0-9.]+% of [0-9.]+( [kM])? shared, [0-9.]+( [kM])? computed$' "$work/tiny.txt" ||
   fail "progress lacks the shared-match summary: $(grep '^gen' "$work/tiny.txt" | tail -1)"
@@ -54,8 +58,7 @@ setting() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["se
 "$bin" optimize --out "$work/world_budget" --population 4 --generations 1 --seed 5 --jobs 2 --quiet > /dev/null 2>&1 ||
   fail "optimize (world budget) failed"
 [[ $(setting "$work/world_budget/results.json" divisions) == 10 ]] || fail "the built-in world's divisions are not 10"
-simulate_world "$work/office_log" office
-"$bin" optimize "$work/office_log/office.clf" --max-scans 40 --generations 1 --seed 5 --jobs 2 --quiet \
+"$bin" optimize "$work/office/office.clf" --max-scans 40 --generations 1 --seed 5 --jobs 2 --quiet \
   --out "$work/log_budget" > "$work/log_budget.txt" 2>&1 || fail "optimize (log budget) failed: $(tail -3 "$work/log_budget.txt")"
 [[ $(setting "$work/log_budget/results.json" population) == 36 && $(setting "$work/log_budget/results.json" divisions) == 7 ]] ||
   fail "a log's default budget is not population 36 over 7 divisions"
@@ -104,7 +107,7 @@ touch "$work/afile"
 expect_error "cannot create output folder" "$bin" optimize --out "$work/afile/sub" "${small[@]}"
 
 # 4. sweep along g at r = 2 (the paper's Figure 14), three values.
-"$bin" sweep --vary g=6:20:7 --fix r=2 --out "$work/sweep" --quiet > "$work/sweep.txt" 2>&1 || fail "sweep failed"
+"$bin" sweep "${slice[@]}" --vary g=6:20:7 --fix r=2 --out "$work/sweep" --quiet > "$work/sweep.txt" 2>&1 || fail "sweep failed"
 [[ -s "$work/sweep/sweep.csv" && -s "$work/sweep/sweep.png" ]] || fail "sweep outputs missing"
 [[ $(grep -c "loop_match_minimum_chain_size" "$work/sweep/sweep.csv") -ge 1 ]] || fail "sweep.csv lacks the parameter"
 expect_error "bounds reversed" "$bin" sweep --vary r=6:2 --out "$work/sweep2"

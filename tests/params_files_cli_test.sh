@@ -9,7 +9,8 @@ set -u
 source "$(dirname "$0")/lib.sh"
 cli_test_begin params_files_cli_test "$@"
 fixtures="$tests_dir/fixtures/params"
-common=(--population 8 --divisions 3 --seed 3 --jobs 2)
+office_slice
+common=("${slice[@]}" --population 8 --divisions 3 --seed 3 --jobs 2)
 small=("${common[@]}" --generations 2)
 short=("${common[@]}" --generations 1 --quiet)
 

@@ -10,7 +10,7 @@ cli_test_begin recording_optimize_cli_test "$@"
 fixtures="$tests_dir/fixtures/recordings"
 simulate_world "$work/sim" office --seed 1 --speed 1.0 --scan-rate 3 --laser-offset 0.12,-0.04,0.05 --float32-scans \
   --range-resolution 0.001953125
-budget=(--population 12 --generations 4 --divisions 4 --seed 7 --jobs 2)
+budget=(--population 8 --generations 2 --divisions 3 --seed 7 --jobs 2)
 candidates() { grep -E '^(recommended|knee|worst|default) ' "$1"; }
 
 "$bin" optimize "$work/sim/office.clf" --out "$work/carmen" "${budget[@]}" > "$work/carmen.txt" 2>&1 ||

@@ -114,7 +114,8 @@ sys.exit(0 if ok else 1)
 EOF
 }
 
-small=(--population 4 --generations 2 --divisions 2 --seed 5 --jobs 1)
+office_slice
+small=("${slice[@]}" --population 4 --generations 2 --divisions 2 --seed 5 --jobs 1)
 run="$work/run"
 "$bin" optimize --out "$run" "${small[@]}" --quiet >/dev/null 2>"$work/whole.err" ||
   { fail "the uninterrupted run failed: $(cat "$work/whole.err")"; exit 1; }

@@ -108,10 +108,11 @@ wait_for() {
   return 1
 }
 
-# 15 and 16. A run on the built-in world is stopped by SIGINT after its first generation; while
-# it works, a second process is refused naming the folder and the pid.
+# 15 and 16. A run on a slice of the office world is stopped by SIGINT after its first
+# generation; while it works, a second process is refused naming the folder and the pid.
 set -m  # background jobs get SIGINT only with job control on
-small=(--population 4 --generations 2 --divisions 2 --seed 5 --jobs 2)
+office_slice 1200  # long enough a generation to be stopped in the next
+small=("${slice[@]}" --population 4 --generations 2 --divisions 2 --seed 5 --jobs 2)
 "$bin" optimize --out "$work/whole" "${small[@]}" --quiet >/dev/null 2>&1 &
 whole_pid=$!
 background+=("$whole_pid")
