@@ -6,15 +6,15 @@
 // trajectories must be identical.
 //
 //   bench_engine [--dataset intel] [--world office] [--max-scans N] [--repeat K] [--json]
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,8 +33,8 @@ struct Measurement {
   int loops = 0;
   int near_chain_matches = 0;
   int near_chain_skipped = 0;
-  double wall_s = 0.0;           // median of `repeat` runs, near-chain skipping on (the default)
-  double wall_no_skip_s = 0.0;   // median of `repeat` runs, skipping off
+  double wall_s = 0.0;          // median of `repeat` runs, near-chain skipping on (the default)
+  double wall_no_skip_s = 0.0;  // median of `repeat` runs, skipping off
   double log_duration_s = 0.0;
 };
 
@@ -138,10 +138,10 @@ int main(int argc, char** argv) {
         std::printf(
             "%-14s %6d scans %5d nodes %3d loops  %8.2f s wall  %8.1f scans/s  %7.1f nodes/s  real-time x%.1f\n",
             m.name.c_str(), m.scans, m.nodes, m.loops, m.wall_s, scans_per_s, nodes_per_s, rtf);
-        std::printf("%-14s near chains: %d of %d matches skipped; every near chain matched: %.2f s, so x%.2f "
-                    "from skipping (medians of %d, same trajectory)\n",
-                    "", m.near_chain_skipped, m.near_chain_matches, m.wall_no_skip_s, m.wall_no_skip_s / m.wall_s,
-                    repeat);
+        std::printf(
+            "%-14s near chains: %d of %d matches skipped; every near chain matched: %.2f s, so x%.2f "
+            "from skipping (medians of %d, same trajectory)\n",
+            "", m.near_chain_skipped, m.near_chain_matches, m.wall_no_skip_s, m.wall_no_skip_s / m.wall_s, repeat);
       }
     }
     if (json) std::printf("%s\n", out.dump(2).c_str());

@@ -37,8 +37,8 @@ slamtune::io::MapImage OfficeMap(int size, double coverage) {
       const SyntheticRoom room{start + (i + 0.5) * pitch, start + (j + 0.5) * pitch, pitch - 6.0, pitch - 10.0, 0.0};
       rooms.push_back(room);
       if (doubled(rng)) {
-        rooms.push_back({room.center_col + shift(rng), room.center_row + shift(rng), room.width, room.height,
-                         angle(rng)});
+        rooms.push_back(
+            {room.center_col + shift(rng), room.center_row + shift(rng), room.width, room.height, angle(rng)});
       }
     }
   }

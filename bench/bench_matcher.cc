@@ -84,8 +84,8 @@ std::vector<LaserScan> SyntheticScans() {
   struct Seg {
     double ax, ay, bx, by;
   };
-  const std::vector<Seg> walls = {{0, 0, 12, 0}, {12, 0, 12, 9},  {12, 9, 0, 9},  {0, 9, 0, 0},
-                                  {4, 3, 8, 3},  {8, 3, 8, 6},    {8, 6, 4, 6},   {4, 6, 4, 3},
+  const std::vector<Seg> walls = {{0, 0, 12, 0}, {12, 0, 12, 9},   {12, 9, 0, 9},     {0, 9, 0, 0},
+                                  {4, 3, 8, 3},  {8, 3, 8, 6},     {8, 6, 4, 6},      {4, 6, 4, 3},
                                   {1, 7, 2, 8},  {10, 1, 11, 1.5}, {6.5, 7.5, 7, 7.5}};
   auto g = std::make_shared<LaserGeometry>();
   g->min_angle = -slamtune::kPi / 2;
@@ -272,8 +272,14 @@ BENCHMARK(BM_LoopCoarse)
     ->ArgNames({"threads", "bnb"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(BM_SequentialWide)->Arg(30)->Arg(60)->Arg(90)->Arg(120)->Arg(160)->ArgName("window_cm")->Unit(
-    benchmark::kMillisecond);
+BENCHMARK(BM_SequentialWide)
+    ->Arg(30)
+    ->Arg(60)
+    ->Arg(90)
+    ->Arg(120)
+    ->Arg(160)
+    ->ArgName("window_cm")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLoopCoarse)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GridBuild)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OccupancyGrid)->Unit(benchmark::kMillisecond);

@@ -13,16 +13,12 @@
 // "grid" weight vectors, so N = 91. Each algorithm evolves the same seeded initial population
 // (its first 91 members for MOEA/D). IGD and hypervolume use the non-dominated members of
 // the final population.
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <sstream>
-#include <string>
-#include <vector>
-
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <pagmo/algorithms/moead.hpp>
 #include <pagmo/algorithms/nsga2.hpp>
@@ -30,6 +26,9 @@
 #include <pagmo/problems/dtlz.hpp>
 #include <pagmo/utils/hypervolume.hpp>
 #include <pagmo/utils/multi_objective.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "slamtune/common/error.h"
 #include "slamtune/nsga3/igd.h"
@@ -152,8 +151,8 @@ int Run(const std::vector<std::string>& problems, unsigned seeds, double generat
       slamtune::nsga3::Nsga3Options options;
       options.generations = generations;
       options.divisions = kDivisions;
-      results["NSGA-III"].push_back(Timed(
-          [&] { return slamtune::nsga3::Nsga3(options, seed).evolve(start); }, targets, hv_reference));
+      results["NSGA-III"].push_back(
+          Timed([&] { return slamtune::nsga3::Nsga3(options, seed).evolve(start); }, targets, hv_reference));
       const pagmo::nsga2 nsga2(generations, std::nextafter(1.0, 0.0), 30.0, 1.0 / static_cast<double>(n), 20.0, seed);
       results["NSGA-II"].push_back(Timed([&] { return nsga2.evolve(start); }, targets, hv_reference));
       const pagmo::moead moead(generations, "grid", "tchebycheff", 20u, 1.0, 0.5, 20.0, 0.9, 2u, true, seed);
@@ -170,7 +169,10 @@ int Run(const std::vector<std::string>& problems, unsigned seeds, double generat
       const Stats si = Summarize(igd, true), sh = Summarize(hv, false);
       const double per_run = seconds / static_cast<double>(seeds);
       if (json) {
-        out.push_back({{"problem", c.name}, {"algorithm", algo}, {"generations", generations}, {"seeds", seeds},
+        out.push_back({{"problem", c.name},
+                       {"algorithm", algo},
+                       {"generations", generations},
+                       {"seeds", seeds},
                        {"igd", {{"best", si.best}, {"median", si.median}, {"worst", si.worst}, {"all", igd}}},
                        {"hypervolume", {{"best", sh.best}, {"median", sh.median}, {"worst", sh.worst}, {"all", hv}}},
                        {"seconds_per_run", per_run}});

@@ -10,9 +10,9 @@
 //   bench_objectives LOG --relations FILE [--space front-end|loop] [--runs N] [--jobs J] [--seed S]
 //   bench_objectives --world NAME [...]            (a built-in world, seed 1)
 //   ... [--csv FILE]                               every run: parameters, figures, error
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -185,8 +185,8 @@ int Run(int argc, char** argv) {
   const double broken_above = std::max(2.0 * best, best + 0.05);
   auto broken = [&](const EvaluationRecord& r) { return r.trans_mean_m > broken_above; };
   const auto n_broken = std::count_if(ok.begin(), ok.end(), broken);
-  std::printf("%zu of %zu runs ok, %.0f s; error min %.4f median %.4f max %.4f m; broken (> %.4f m): %ld\n",
-              ok.size(), all.size(), wall, best, sorted[sorted.size() / 2], sorted.back(), broken_above, n_broken);
+  std::printf("%zu of %zu runs ok, %.0f s; error min %.4f median %.4f max %.4f m; broken (> %.4f m): %ld\n", ok.size(),
+              all.size(), wall, best, sorted[sorted.size() / 2], sorted.back(), broken_above, n_broken);
 
   std::printf("\n| figure | Spearman rho vs error |\n|---|---|\n");
   for (const auto& fig : Figures()) {
@@ -196,8 +196,9 @@ int Run(int argc, char** argv) {
     std::printf("| %s | %s |\n", fig.name.c_str(), rho.defined ? fmt::format("{:+.3f}", rho.rho).c_str() : "undefined");
   }
 
-  std::printf("\n| objectives | front size | broken in front | front error min..max m | knee error m | knee broken |\n"
-              "|---|---|---|---|---|---|\n");
+  std::printf(
+      "\n| objectives | front size | broken in front | front error min..max m | knee error m | knee broken |\n"
+      "|---|---|---|---|---|---|\n");
   for (ObjectiveSetKind kind : {ObjectiveSetKind::kDrawn, ObjectiveSetKind::kOccupied, ObjectiveSetKind::kConsistency,
                                 ObjectiveSetKind::kPaper}) {
     const ObjectiveSet set(kind);

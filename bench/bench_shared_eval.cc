@@ -13,12 +13,10 @@
 //
 //   bench_shared_eval [LOG] [--quick] [--sets N] [--jobs J] [--seed S]
 //   bench_shared_eval [LOG] --whole [--population N] [--generations G] [--jobs J] [--seed S]
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <pagmo/problem.hpp>
-#include <pagmo/rng.hpp>
-#include <pagmo/utils/generic.hpp>
+#include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -27,12 +25,13 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <pagmo/problem.hpp>
+#include <pagmo/rng.hpp>
+#include <pagmo/utils/generic.hpp>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <unistd.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/carmen_reader.h"
@@ -144,8 +143,8 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
   settings.log_path = label;
   settings.Validate();
 
-  std::printf("%s: %zu scans; whole optimisation, population %zu, %u generations, %d jobs, seed %u\n",
-              label.c_str(), plain.log->scans.size(), population, generations, jobs, seed);
+  std::printf("%s: %zu scans; whole optimisation, population %zu, %u generations, %d jobs, seed %u\n", label.c_str(),
+              plain.log->scans.size(), population, generations, jobs, seed);
   std::fflush(stdout);
   // The yardstick is the median of three standalone default runs, two before the optimisation
   // and one after it, so that neither one slow sample nor a drift of the machine's speed during
@@ -285,8 +284,7 @@ int Run(int argc, char** argv) {
   shared.shared_work.solve_cache = std::make_shared<slamtune::slam::SolveCache>();
   shared.shared_work.barycenter_cache = std::make_shared<slamtune::slam::BarycenterCache>();
 
-  std::printf("%s: %zu scans, %d sets, %d jobs, seed %u\n", label.c_str(), log->scans.size(), sets,
-              jobs, seed);
+  std::printf("%s: %zu scans, %d sets, %d jobs, seed %u\n", label.c_str(), log->scans.size(), sets, jobs, seed);
   std::fflush(stdout);
   const BatchResult a = Evaluate(plain, batch, jobs);
   const std::string hwm_a = ProcStatus("VmHWM");

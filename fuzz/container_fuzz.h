@@ -15,17 +15,10 @@ using ContainerRead = std::function<void(const io::ContainerReadOptions&, const 
 inline void DecodeRecorded(const io::RecordedTopic& topic, const io::RecordedMessage& message) {
   try {
     switch (io::KindOfRosType(topic.type)) {
-      case io::RosMessageKind::kLaserScan:
-        io::DecodeLaserScan(message.data, topic.serialization);
-        break;
-      case io::RosMessageKind::kOdometry:
-        io::DecodeOdometry(message.data, topic.serialization);
-        break;
-      case io::RosMessageKind::kTf:
-        io::DecodeTfMessage(message.data, topic.serialization);
-        break;
-      case io::RosMessageKind::kOther:
-        break;
+      case io::RosMessageKind::kLaserScan: io::DecodeLaserScan(message.data, topic.serialization); break;
+      case io::RosMessageKind::kOdometry: io::DecodeOdometry(message.data, topic.serialization); break;
+      case io::RosMessageKind::kTf: io::DecodeTfMessage(message.data, topic.serialization); break;
+      case io::RosMessageKind::kOther: break;
     }
   } catch (const InputError&) {
   }

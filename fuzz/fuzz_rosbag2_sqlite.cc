@@ -7,8 +7,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   slamtune::fuzz::FuzzContainer([&](const auto& options, const auto& on_message) {
-    slamtune::io::ReadRosbag2SqliteBytes(std::vector<std::uint8_t>(data, data + size), "fuzz.db3", options,
-                                         on_message);
+    slamtune::io::ReadRosbag2SqliteBytes(std::vector<std::uint8_t>(data, data + size), "fuzz.db3", options, on_message);
   });
   return 0;
 }

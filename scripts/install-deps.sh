@@ -10,6 +10,7 @@ PKGS=(
   libopenmpi-dev openmpi-bin
   sqlite3 python3  # the CLI tests inspect run databases and results.json and compute a CRC-32 with them
   chromium  # report_browser_cli_test.sh opens report.html in headless Chromium
+  clang-format  # the house test checks that the sources are formatted as .clang-format says
 )
 missing=()
 for p in "${PKGS[@]}"; do

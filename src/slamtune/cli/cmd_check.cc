@@ -1,10 +1,9 @@
 // `slamtune check RECORDING`: what to know about a log or bag before tuning on it
 // (io/log_check.h): its topics and choices, and each problem with its scans and times.
 // Exit 0; with --strict, 1 when a problem is found; 2 for an unreadable file.
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
@@ -40,10 +39,8 @@ nlohmann::ordered_json ToJson(const io::CheckReport& report) {
 }
 
 const SubcommandRegistrar kCheck(Subcommand{
-    "check",
-    "Check a log or bag before tuning: scan stamps, beams, range_max, odometry, tf, laser offset; a verdict",
-    12,
-    [](CLI::App& app) -> std::function<int()> {
+    "check", "Check a log or bag before tuning: scan stamps, beams, range_max, odometry, tf, laser offset; a verdict",
+    12, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<CheckArgs>();
       app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag or CARMEN log")->required();
       app.add_flag("--json", args->json, "Print the report as one JSON object");

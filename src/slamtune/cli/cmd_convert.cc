@@ -38,8 +38,9 @@ int Convert(const ConvertArgs& args) {
   io::CarmenWriteOptions options;
   options.comments.push_back("converted by slamtune from " + args.log);
   for (const std::string& line : input) options.comments.push_back(line);
-  options.comments.push_back("ROBOTLASER1 laser pose = robot pose (+) laser offset (PARAM robot_frontlaser_*); "
-                             "no-returns written as the max range");
+  options.comments.push_back(
+      "ROBOTLASER1 laser pose = robot pose (+) laser offset (PARAM robot_frontlaser_*); "
+      "no-returns written as the max range");
   options.pose_decimals = 9;
   options.exact_ranges = true;
   const io::CarmenWriteSummary written = io::WriteCarmenLog(args.out, log, options);  // whole or not at all
@@ -50,10 +51,8 @@ int Convert(const ConvertArgs& args) {
 }
 
 const SubcommandRegistrar kConvert(Subcommand{
-    "convert",
-    "Write what slamtune reads from a log or bag as a CARMEN log (ROBOTLASER1 with laser and robot poses)",
-    15,
-    [](CLI::App& app) -> std::function<int()> {
+    "convert", "Write what slamtune reads from a log or bag as a CARMEN log (ROBOTLASER1 with laser and robot poses)",
+    15, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<ConvertArgs>();
       app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag (or a CARMEN log)")->required();
       app.add_option("--out", args->out, "CARMEN log to write (.clf)")->required();

@@ -1,12 +1,12 @@
 // `slamtune evaluate MAP [MAP...]`: the map-quality figures (metrics/map_quality.h) of saved
 // maps, from this engine or any SLAM system that writes map_server PGM/YAML or PNG.
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -121,8 +121,7 @@ const SubcommandRegistrar kEvaluate(Subcommand{
     "evaluate",
     "Map-quality figures of saved maps (map_server YAML, PGM or PNG): occupied-cell ratio (eta), Harris corner "
     "pixels (n_c) and enclosed areas (n_e); lower is better",
-    40,
-    [](CLI::App& app) -> std::function<int()> {
+    40, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<EvaluateArgs>();
       metrics::MapQualityOptions& o = args->options;
       app.add_option("MAP", args->maps, "Map files: map_server .yaml (with its image), or a .pgm / .png alone")
@@ -130,8 +129,7 @@ const SubcommandRegistrar kEvaluate(Subcommand{
       app.add_flag("--json", args->json, "Print a JSON list, one object per map");
       app.add_option("--debug-dir", args->debug_dir,
                      "Write an overlay PNG per map here (enclosed areas filled, corners in red)");
-      app.add_option("--blur-size", o.blur_size, "Gaussian kernel side before Harris, px, odd")
-          ->capture_default_str();
+      app.add_option("--blur-size", o.blur_size, "Gaussian kernel side before Harris, px, odd")->capture_default_str();
       app.add_option("--blur-sigma", o.blur_sigma, "Gaussian sigma, px (0 = from the kernel size)")
           ->capture_default_str();
       app.add_option("--harris-block-size", o.harris_block_size, "Harris window, px")->capture_default_str();

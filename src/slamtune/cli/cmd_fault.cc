@@ -80,8 +80,7 @@ const SubcommandRegistrar kFault(Subcommand{
     "fault",
     "Plant odometry faults (spin, jump, reverse) into a recorded log or bag, written as a CARMEN log with the same "
     "scans and timestamps",
-    17,
-    [](CLI::App& app) -> std::function<int()> {
+    17, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<FaultArgs>();
       app.add_option("LOG", args->log, "CARMEN log (plain or gzip) or ROS 2 / ROS 1 bag")->required();
       app.add_option("--fault", args->faults,

@@ -1,10 +1,9 @@
 // `slamtune gt-error TRAJECTORY RELATIONS`: relation-based error of a trajectory against the
 // Freiburg ground-truth relations (metrics/gt_error.h), as text or JSON.
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
@@ -38,8 +37,7 @@ const SubcommandRegistrar kGtError(Subcommand{
     "gt-error",
     "Relation-based error (Kuemmerle et al. 2009) of a trajectory (timestamp x y theta) against "
     "ground-truth relations (t1 t2 x y z roll pitch yaw)",
-    60,
-    [](CLI::App& app) -> std::function<int()> {
+    60, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<GtErrorArgs>();
       app.add_option("TRAJECTORY", args->trajectory, "Trajectory file: timestamp x y theta per line")->required();
       app.add_option("RELATIONS", args->relations, "Freiburg relations file")->required();

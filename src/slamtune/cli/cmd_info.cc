@@ -1,10 +1,9 @@
 // `slamtune info LOG`: what a log holds (io/log_summary.h) — a CARMEN log or a ROS recording —
 // as a table or JSON.
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
@@ -72,11 +71,9 @@ const SubcommandRegistrar kInfo(Subcommand{
     "info",
     "Summarise a log (CARMEN, or a ROS 2 / ROS 1 bag): scans, beam geometry, no-return value, odometry, "
     "laser offset, time-order anomalies",
-    10,
-    [](CLI::App& app) -> std::function<int()> {
+    10, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<InfoArgs>();
-      app.add_option("LOG", args->log,
-                     "CARMEN log (.clf, plain or gzip), MCAP / .db3 / rosbag2 folder, or ROS 1 .bag")
+      app.add_option("LOG", args->log, "CARMEN log (.clf, plain or gzip), MCAP / .db3 / rosbag2 folder, or ROS 1 .bag")
           ->required();
       app.add_flag("--json", args->json, "Print the summary as one JSON object");
       args->input.AddTo(app);

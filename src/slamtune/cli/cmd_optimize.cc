@@ -1,10 +1,10 @@
 // `slamtune optimize [LOG] --out DIR`: NSGA-III over the loop-closure parameters, scored by
 // the map objectives of each SLAM run, with a report an engineer can act on. Under mpirun,
 // rank 0 optimises and writes; the other ranks evaluate (optim/mpi_evaluation.h).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -16,11 +16,11 @@
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/folder_lock.h"
-#include "slamtune/optim/front_end_repair.h"
 #include "slamtune/common/progress.h"
 #include "slamtune/common/signal_notice.h"
 #include "slamtune/io/content_hash.h"
 #include "slamtune/nsga3/reference_points.h"
+#include "slamtune/optim/front_end_repair.h"
 #include "slamtune/optim/mpi_evaluation.h"
 #include "slamtune/optim/optimizer.h"
 #include "slamtune/optim/slam_evaluation.h"
@@ -223,8 +223,9 @@ std::optional<optim::SearchSpace> FlagSpace(const OptimizeArgs& args) {
     throw InputError("give the search space either with --space or with --vary/--fix, not both");
   }
   if (args.vary.empty() && !args.fix.empty()) {
-    throw InputError("--fix goes with --vary (it holds a value while others are searched); to change a base "
-                     "value, use --set NAME=VALUE");
+    throw InputError(
+        "--fix goes with --vary (it holds a value while others are searched); to change a base "
+        "value, use --set NAME=VALUE");
   }
   if (args.vary.empty()) return std::nullopt;
   return optim::SearchSpace::FromFlags(args.vary, args.fix);
@@ -249,16 +250,16 @@ std::shared_ptr<optim::SlamEvaluationContext> ProbeDefaultSpace(const TuningInpu
     if (!repair.repaired.empty()) {
       optim::Assignment individual;
       for (const optim::Dimension& d : optim::WithLowerBounds(space, repair.lower_bounds).dimensions) {
-        individual[d.name] = repair.repaired.count(d.name) ? repair.repaired.at(d.name)
-                                                            : slam::GetNumeric(inputs.base, d.name);
+        individual[d.name] =
+            repair.repaired.count(d.name) ? repair.repaired.at(d.name) : slam::GetNumeric(inputs.base, d.name);
       }
       args.initial = {individual};
     }
     informed = repair.Describe();
     if (!args.run.quiet && !informed.empty()) std::fprintf(stderr, "%s\n", informed.c_str());
   }
-  plan.base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(), informed,
-                                            std::move(choice.map), std::move(choice.trajectory)};
+  plan.base_front_end = optim::BaseFrontEnd{choice.evidence, std::move(choice.steps), choice.Reason(),
+                                            informed,        std::move(choice.map),   std::move(choice.trajectory)};
   return probed;
 }
 
@@ -276,11 +277,14 @@ void UseBrokenMapBudget(OptimizeArgs& args, optim::OptimizeSettings& settings) {
   if (!args.run.quiet) {
     const int window = args.settling.sound_answer_window;
     const std::string stop = window == 0 ? "stopping when the front settles"
-                                         : fmt::format("stopping once the recommended map is sound and unchanged for "
-                                                       "{} generation{}",
-                                                       window, window == 1 ? "" : "s");
-    std::fprintf(stderr, "budget for a broken map: population %zu over %zu divisions, %s (--population, --divisions, "
-                 "--sound-answer-window)\n", args.population, args.divisions, stop.c_str());
+                                         : fmt::format(
+                                               "stopping once the recommended map is sound and unchanged for "
+                                               "{} generation{}",
+                                               window, window == 1 ? "" : "s");
+    std::fprintf(stderr,
+                 "budget for a broken map: population %zu over %zu divisions, %s (--population, --divisions, "
+                 "--sound-answer-window)\n",
+                 args.population, args.divisions, stop.c_str());
   }
 }
 
@@ -356,7 +360,9 @@ OptimizationPlan PlanOptimization(const TuningInputs& inputs, RunFolder& folder,
   settings.Validate();
   const bool named_space = args.space_file == "loop" || args.space_file == "paper" || args.space_file == "front-end";
   optim::CheckSpaceAgainst(settings.space, inputs.base,
-                           flag_space ? "--vary/--fix" : named_space ? "--space" : args.space_file);
+                           flag_space    ? "--vary/--fix"
+                           : named_space ? "--space"
+                                         : args.space_file);
   plan.context =
       probed && settings.space.fixed.empty() ? probed : MakeEvaluationContext(inputs, settings.space.fixed, args.run);
   optim::DrawWall(*plan.context, optim::WallDrawingFor(settings.objectives));
@@ -532,8 +538,9 @@ const SubcommandRegistrar kRegistrar{{
                      "breaking apart); 'auto': 'occupied' unless the search varies the node spacing, the laser "
                      "range or the resolution (which change the count of wall cells), then 'drawn'")
           ->capture_default_str();
-      app.add_flag("--no-early-stop", [args](std::int64_t) { args->settling.enabled = false; },
-                   "run every generation of the budget instead of stopping once the answer has settled");
+      app.add_flag(
+          "--no-early-stop", [args](std::int64_t) { args->settling.enabled = false; },
+          "run every generation of the budget instead of stopping once the answer has settled");
       app.add_option("--stop-tolerance", args->settling.tolerance,
                      "settled when the non-dominated front moves less than this per generation (normalised by its "
                      "range) and the recommendation and knee stay the same...")

@@ -1,23 +1,22 @@
 // `slamtune params FILE...`: what a slam_toolbox or slam_karto parameter file means to the
 // engine, and whether its node would load it (slam/ros_node_files.h CheckNodeFile). Several
 // files are applied in order, as a launch file stacks them (your file, then a change file).
-#include <nlohmann/json.hpp>
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/text_file.h"
+#include "slamtune/slam/base_configuration.h"
 #include "slamtune/slam/params_yaml.h"
 #include "slamtune/slam/ros_node_files.h"
 #include "slamtune/slam/ros_params_section.h"
-#include "slamtune/slam/base_configuration.h"
-#include <yaml-cpp/yaml.h>
 
 namespace slamtune::cli {
 namespace {

@@ -2,20 +2,20 @@
 // from given poses (a simulated world's truth.txt, another system's trajectory, or raw
 // odometry), with its map metrics — e.g. to check that the metrics prefer the true map.
 // map.pgm, map.yaml and map.png are written whole or not at all (io/map_image.h).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <memory>
 
 #include "slamtune/cli/command_registry.h"
+#include "slamtune/cli/log_input.h"
+#include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
-#include "slamtune/cli/log_input.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/metrics/map_quality.h"
-#include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/slam/base_configuration.h"
 #include "slamtune/slam/pose_map.h"
 

@@ -6,7 +6,6 @@
 // world simulated in memory (`--world`, `--world-seed`, as `optimize` does), and the world's
 // relations give the error against its true trajectory unless --relations names others.
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -15,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -332,13 +332,14 @@ void PrintRunSummary(const slam::RunSummary& summary, slam::NodeMode mode, const
                                   ? fmt::format(", {} scans dropped (reading count differs from the first scan's)",
                                                 summary.scans_wrong_reading_count)
                                   : "";
-  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s%s; wrote %s\n",
-              summary.scans_read, summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s,
+  std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s%s; wrote %s\n", summary.scans_read,
+              summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s,
               RefusedByNodeText(summary, mode).c_str(), dropped.c_str(), gt_line.c_str(), out.c_str());
   std::printf("%s\n", front_end.Summary().c_str());
   if (front_end.points_at_front_end()) {
-    std::printf("  (front_end_map.png marks them on the map, front_end.csv has every match; the default "
-                "optimize searches the front-end parameters for this log)\n");
+    std::printf(
+        "  (front_end_map.png marks them on the map, front_end.csv has every match; the default "
+        "optimize searches the front-end parameters for this log)\n");
   }
 }
 
@@ -379,8 +380,7 @@ const SubcommandRegistrar kRun(Subcommand{
     "run",
     "Run the Karto-faithful SLAM engine on a log or bag: map.pgm/map.yaml/map.png, trajectory.txt, "
     "loop_closures.csv, front_end.csv, front_end_map.png and run.json in --out",
-    20,
-    [](CLI::App& app) -> std::function<int()> {
+    20, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RunArgs>();
       app.add_option("LOG", args->log,
                      "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag; none: the built-in world --world");

@@ -23,8 +23,8 @@ struct SimulateState {
   sim::SimulationOptions options;
   std::string out;
   bool list = false;
-  std::vector<double> laser_offset;  // X,Y,YAW when given
-  std::vector<std::string> faults;   // --fault KIND,START_M,LENGTH_M[,MAGNITUDE], in order
+  std::vector<double> laser_offset;   // X,Y,YAW when given
+  std::vector<std::string> faults;    // --fault KIND,START_M,LENGTH_M[,MAGNITUDE], in order
   bool without_world_faults = false;  // --without-world-faults
 };
 
@@ -101,8 +101,7 @@ std::function<int()> Setup(CLI::App& app) {
                  "backwards), over LENGTH_M of true travel from START_M along the route");
   app.add_flag("--without-world-faults", state->without_world_faults,
                "Leave out the world's planted faults (e.g. corridor-long's odometry scale error): the healthy "
-               "twin of a fault world, for the error it would have without its failure")
-      ;
+               "twin of a fault world, for the error it would have without its failure");
   app.add_option("--relation-stride", o.relations.stride, "Scans between relation samples")->capture_default_str();
   app.add_option("--relation-gap", o.relations.local_gap_s, "Time between the scans of a local relation (s)")
       ->capture_default_str();

@@ -2,9 +2,9 @@
 // and the three map objectives (and errors, with relations) along one parameter — the seed
 // paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18). Under mpirun, rank 0
 // writes and the other ranks evaluate, as for optimize (optim/mpi_evaluation.h).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -75,7 +75,7 @@ std::vector<optim::Assignment> SweepBatch(const SweepRange& range, const std::ve
     if (v > range.hi + 1e-9 * std::max(1.0, std::fabs(range.hi))) break;
     optim::Assignment a = fixed;
     a[range.name] = std::round(v * 1e9) / 1e9;  // 2 + 3 * 0.25 prints as 2.75, not 2.7500000000000004
-    context.ParamsFor(a);                      // validates names and values before any work
+    context.ParamsFor(a);                       // validates names and values before any work
     batch.push_back(a);
   }
   return batch;

@@ -57,10 +57,11 @@ io::LogReadOptions LogInputOptions::ToReadOptions() const {
 }
 
 nlohmann::json LogInputOptions::ToJson() const {
-  return {{"lenient", lenient},       {"no_return", no_return},   {"max_scans", max_scans},
-          {"beams", beams},           {"scan_topic", scan_topic}, {"odom_topic", odom_topic},
-          {"odom_frame", odom_frame}, {"base_frame", base_frame}, {"laser_offset", laser_offset},
-          {"max_odom_gap_s", max_odom_gap_s}};
+  return {{"lenient", lenient},           {"no_return", no_return},
+          {"max_scans", max_scans},       {"beams", beams},
+          {"scan_topic", scan_topic},     {"odom_topic", odom_topic},
+          {"odom_frame", odom_frame},     {"base_frame", base_frame},
+          {"laser_offset", laser_offset}, {"max_odom_gap_s", max_odom_gap_s}};
 }
 
 LogInputOptions LogInputOptions::FromJson(const nlohmann::json& j) {

@@ -6,7 +6,6 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-
 #include <string>
 #include <vector>
 
@@ -16,8 +15,8 @@ namespace slamtune::cli {
 
 struct LogInputOptions {
   bool lenient = false;
-  double no_return = 0.0;     // m; 0 = from the log
-  std::size_t max_scans = 0;  // 0 = all
+  double no_return = 0.0;      // m; 0 = from the log
+  std::size_t max_scans = 0;   // 0 = all
   std::string beams = "node";  // io::BeamPolicy by name
   std::string scan_topic, odom_topic, odom_frame, base_frame;
   std::vector<double> laser_offset;  // X,Y,YAW when given

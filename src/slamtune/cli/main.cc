@@ -3,7 +3,6 @@
 // Thin entry point: builds the CLI from the registered subcommands, runs the chosen one
 // and turns user-input errors into one line on stderr and a non-zero exit.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -24,8 +23,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "slamtune 0.1.0");
 
   auto& commands = Registry();
-  std::stable_sort(commands.begin(), commands.end(),
-                   [](const auto& a, const auto& b) { return a.order < b.order; });
+  std::stable_sort(commands.begin(), commands.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
   std::function<int()> action;
   for (auto& command : commands) {
     CLI::App* sub = app.add_subcommand(command.name, command.description);

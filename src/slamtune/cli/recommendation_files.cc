@@ -42,12 +42,13 @@ std::string BehaviourWarning(const Target& target, const TuningInputs& inputs, c
   const bool offset = frame.robot_poses && frame.offset != Pose2{};
   const bool node_robot_graph = target.node == slam::RosNode::kSlamToolbox;
   if (!offset || params.robot_pose_graph == node_robot_graph) return "";
-  return fmt::format("the values were found with {} but {}'s Karto builds {}, and this robot's laser is {:.3f} m, "
-                     "{:.3f} m, {:.3f} rad off the base: for {} exactly, tune with {}",
-                     params.robot_pose_graph ? "a robot-pose graph (slam_toolbox)" : "a sensor-pose graph (slam_karto)",
-                     slam::RosNodeName(target.node), target.behaviour, frame.offset.x, frame.offset.y,
-                     frame.offset.theta, slam::RosNodeName(target.node),
-                     node_robot_graph ? "--preset slam_toolbox (or its --params file)" : "--preset slam_karto");
+  return fmt::format(
+      "the values were found with {} but {}'s Karto builds {}, and this robot's laser is {:.3f} m, "
+      "{:.3f} m, {:.3f} rad off the base: for {} exactly, tune with {}",
+      params.robot_pose_graph ? "a robot-pose graph (slam_toolbox)" : "a sensor-pose graph (slam_karto)",
+      slam::RosNodeName(target.node), target.behaviour, frame.offset.x, frame.offset.y, frame.offset.theta,
+      slam::RosNodeName(target.node),
+      node_robot_graph ? "--preset slam_toolbox (or its --params file)" : "--preset slam_karto");
 }
 
 std::vector<std::string> Header(const Target& target, const TuningInputs& inputs, const optim::OptimizeResult& result,
@@ -60,20 +61,23 @@ std::vector<std::string> Header(const Target& target, const TuningInputs& inputs
     lines.push_back(fmt::format("{}: the recommendation ({}) gives a cleaner map than {} on {}", tuned_for,
                                 recommended_summary, inputs.base_label, inputs.log_label));
   } else {
-    lines.push_back(fmt::format("{}: NOT better than {} ({}: {}); keep your values — this file is {} "
-                                "unchanged and the change file is empty",
-                                tuned_for, inputs.base_label, optim::VerdictKindName(result.verdict_kind),
-                                recommended_summary, inputs.base_label));
+    lines.push_back(
+        fmt::format("{}: NOT better than {} ({}: {}); keep your values — this file is {} "
+                    "unchanged and the change file is empty",
+                    tuned_for, inputs.base_label, optim::VerdictKindName(result.verdict_kind), recommended_summary,
+                    inputs.base_label));
   }
   if (target.node == slam::RosNode::kSlamToolbox) {
     lines.push_back(fmt::format("slam_toolbox (ROS 2): ros2 launch slam_toolbox {} slam_params_file:={}",
                                 ToolboxLaunchFile(inputs.base.node_mode), target.full));
   } else {
-    lines.push_back(fmt::format("slam_karto (ROS 1): rosparam load {} /slam_karto, or <rosparam file=\"{}\"/> in the "
-                                "slam_karto node of the launch file",
-                                target.full, target.full));
-    lines.push_back("loop_match_maximum_variance_coarse, distance_variance_penalty and angle_variance_penalty are "
-                    "written as slam_karto passes them to Karto, which squares them (0.4 means 0.16 m^2)");
+    lines.push_back(
+        fmt::format("slam_karto (ROS 1): rosparam load {} /slam_karto, or <rosparam file=\"{}\"/> in the "
+                    "slam_karto node of the launch file",
+                    target.full, target.full));
+    lines.push_back(
+        "loop_match_maximum_variance_coarse, distance_variance_penalty and angle_variance_penalty are "
+        "written as slam_karto passes them to Karto, which squares them (0.4 means 0.16 m^2)");
   }
   return lines;
 }

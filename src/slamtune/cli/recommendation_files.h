@@ -16,9 +16,9 @@
 namespace slamtune::cli {
 
 struct RecommendationFiles {
-  std::vector<std::string> written;  // file names, in the folder
-  std::vector<std::string> changes;  // "name: base -> tuned" (slam_toolbox's names)
-  std::vector<std::string> warnings; // e.g. the behaviour tuned with is not the node's
+  std::vector<std::string> written;   // file names, in the folder
+  std::vector<std::string> changes;   // "name: base -> tuned" (slam_toolbox's names)
+  std::vector<std::string> warnings;  // e.g. the behaviour tuned with is not the node's
 };
 
 RecommendationFiles WriteRecommendationFiles(const std::string& dir, const TuningInputs& inputs,

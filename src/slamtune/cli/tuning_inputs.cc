@@ -1,13 +1,13 @@
 #include "slamtune/cli/tuning_inputs.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
-
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/text_file.h"
@@ -46,8 +46,14 @@ void PrintParamsWarnings(const slam::BaseConfiguration& base) {
 }
 
 nlohmann::json TuningInputOptions::ToJson() const {
-  nlohmann::json j{{"log", log},       {"relations", relations}, {"world", world}, {"world_seed", world_seed},
-                   {"preset", preset}, {"params", params_file}, {"sets", sets},   {"input", input.ToJson()},
+  nlohmann::json j{{"log", log},
+                   {"relations", relations},
+                   {"world", world},
+                   {"world_seed", world_seed},
+                   {"preset", preset},
+                   {"params", params_file},
+                   {"sets", sets},
+                   {"input", input.ToJson()},
                    {"base_rule", base_rule == slam::BaseRule::kNodeDefaults ? "node_defaults" : "preset_then_file"}};
   // A file's identity: its size and modification time, so a changed file is noticed on --resume.
   for (const char* key : {"log", "relations", "params"}) {
@@ -110,8 +116,9 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes note
     sim_options.world = options.world;
     sim_options.seed = options.world_seed;
     sim_options.Validate();
-    if (!quiet) std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n",
-                             options.world.c_str(), options.world_seed);
+    if (!quiet)
+      std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n", options.world.c_str(),
+                   options.world_seed);
     sim::Simulation simulation = sim::Simulate(sim_options);
     in.log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
     in.log_label = fmt::format("built-in world {} (seed {})", options.world, options.world_seed);

@@ -8,14 +8,12 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "slamtune/cli/log_input.h"
 #include "slamtune/io/laser_log.h"
@@ -32,7 +30,7 @@
 namespace slamtune::cli {
 
 struct TuningInputOptions {
-  std::string log;             // empty: simulate `world`
+  std::string log;  // empty: simulate `world`
   std::string relations;
   std::string world = "office";
   unsigned world_seed = 1;
@@ -53,14 +51,14 @@ struct TuningInputOptions {
 struct TuningInputs {
   std::shared_ptr<const io::LaserLog> log;
   std::vector<io::Relation> relations;
-  slam::MapperParams base;      // the base configuration every run starts from
-  std::string base_label;       // "your configuration (FILE)", "slam_toolbox's defaults", ...
-  std::string base_file_text;   // the user's parameter file, "" without --params
+  slam::MapperParams base;                              // the base configuration every run starts from
+  std::string base_label;                               // "your configuration (FILE)", "slam_toolbox's defaults", ...
+  std::string base_file_text;                           // the user's parameter file, "" without --params
   slam::RosNode base_node = slam::RosNode::kSlamKarto;  // the node the base is written for
-  std::string log_label;        // path, or "built-in world NAME (seed N)"
-  std::string relations_label;  // path, "simulated", or empty
-  std::vector<std::string> log_input;  // what was read and chosen (io::DescribeLogInput)
-  io::ScanLosses scans_not_used;       // the log's scans no run maps (io::ReadingLosses for the base's node)
+  std::string log_label;                                // path, or "built-in world NAME (seed N)"
+  std::string relations_label;                          // path, "simulated", or empty
+  std::vector<std::string> log_input;                   // what was read and chosen (io::DescribeLogInput)
+  io::ScanLosses scans_not_used;  // the log's scans no run maps (io::ReadingLosses for the base's node)
 };
 
 // The --preset option of every command that starts from a base configuration

@@ -35,11 +35,11 @@ class InputError : public std::runtime_error {
 }  // namespace slamtune
 
 // Aborts with a message when `cond` is false. For invariants only, never for user input.
-#define SLAMTUNE_CHECK(cond)                                     \
-  do {                                                           \
+#define SLAMTUNE_CHECK(cond)                                             \
+  do {                                                                   \
     if (!(cond)) ::slamtune::CheckFailed(#cond, __FILE__, __LINE__, ""); \
   } while (0)
-#define SLAMTUNE_CHECK_MSG(cond, detail)                              \
-  do {                                                                \
+#define SLAMTUNE_CHECK_MSG(cond, detail)                                       \
+  do {                                                                         \
     if (!(cond)) ::slamtune::CheckFailed(#cond, __FILE__, __LINE__, (detail)); \
   } while (0)

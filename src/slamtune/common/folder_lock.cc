@@ -42,8 +42,9 @@ FolderLock::FolderLock(const std::string& dir) : path_((std::filesystem::path(di
     fd_ = -1;
     if (error != EWOULDBLOCK) throw InputError(path_, 0, std::string("cannot lock: ") + std::strerror(error));
     throw InputError(dir, 0,
-                     "another slamtune process (pid " + pid + ") is working in this folder; wait for it to end or "
-                     "stop it");
+                     "another slamtune process (pid " + pid +
+                         ") is working in this folder; wait for it to end or "
+                         "stop it");
   }
   WritePid(fd_);
 }

@@ -42,8 +42,8 @@ TEST(KeyWords, HashOfAnArrayEqualsHashOfTheSameWordsInAVector) {
 
 TEST(KeyWords, LeastRecentlyUsedHalfCutDropsTheOlderHalfAndAtLeastOne) {
   EXPECT_EQ(LeastRecentlyUsedHalfCut({}), 0u);
-  EXPECT_EQ(LeastRecentlyUsedHalfCut({7}), 8u);      // the single entry goes
-  EXPECT_EQ(LeastRecentlyUsedHalfCut({9, 3}), 9u);   // 3 goes, 9 stays
+  EXPECT_EQ(LeastRecentlyUsedHalfCut({7}), 8u);           // the single entry goes
+  EXPECT_EQ(LeastRecentlyUsedHalfCut({9, 3}), 9u);        // 3 goes, 9 stays
   EXPECT_EQ(LeastRecentlyUsedHalfCut({5, 1, 4, 2}), 4u);  // 1 and 2 go
 }
 
@@ -60,7 +60,8 @@ TEST(KeyWords, EvictLeastRecentlyUsedHalfDropsTheOlderHalfAndItsBytes) {
     entries[k] = {use, static_cast<std::size_t>(k + 1)};
     bytes += k + 1;
   }
-  const std::size_t dropped = EvictLeastRecentlyUsedHalf(entries, [](const Value& v) { return v.bytes; }, &bytes);
+  const std::size_t dropped = EvictLeastRecentlyUsedHalf(
+      entries, [](const Value& v) { return v.bytes; }, &bytes);
   EXPECT_EQ(dropped, 5u);
   std::size_t left = 0;
   for (const auto& [k, v] : entries) {
@@ -69,7 +70,9 @@ TEST(KeyWords, EvictLeastRecentlyUsedHalfDropsTheOlderHalfAndItsBytes) {
   }
   EXPECT_EQ(bytes, left);
   std::unordered_map<int, Value> empty;
-  EXPECT_EQ(EvictLeastRecentlyUsedHalf(empty, [](const Value& v) { return v.bytes; }, &bytes), 0u);
+  EXPECT_EQ(EvictLeastRecentlyUsedHalf(
+                empty, [](const Value& v) { return v.bytes; }, &bytes),
+            0u);
 }
 
 }  // namespace

@@ -1,10 +1,9 @@
 #include "slamtune/common/progress.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cmath>
-
-#include <fmt/format.h>
 
 namespace slamtune {
 

@@ -23,9 +23,13 @@ TEST(ReadTextFile, ReadsTheWholeFileAndStripsAByteOrderMark) {
   Write(plain, "a: 1\nb: 2\n");
   EXPECT_EQ(ReadTextFile(plain), "a: 1\nb: 2\n");
   const std::string bom = TempPath("text_file_bom.yaml");
-  Write(bom, "\xEF\xBB\xBF" "a: 1\n");
+  Write(bom,
+        "\xEF\xBB\xBF"
+        "a: 1\n");
   EXPECT_EQ(ReadTextFile(bom), "a: 1\n");
-  EXPECT_EQ(ReadWholeFile(bom), "\xEF\xBB\xBF" "a: 1\n");  // bytes as they are
+  EXPECT_EQ(ReadWholeFile(bom),
+            "\xEF\xBB\xBF"
+            "a: 1\n");  // bytes as they are
 }
 
 TEST(ReadTextFile, RefusesDirectoriesMissingAndEmptyPaths) {

@@ -1,10 +1,10 @@
 #include "slamtune/io/beam_geometry.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 
@@ -67,7 +67,8 @@ BeamPolicy ParseBeamPolicy(const std::string& text) {
   if (text == "node" || text == "strict") return BeamPolicy::kNode;
   if (text == "per-geometry") return BeamPolicy::kPerGeometry;
   if (text == "nearest-beam" || text == "resample") return BeamPolicy::kNearestBeam;
-  throw InputError("--beams '" + text + "': must be 'node' (as the ROS node: scans of another reading count than the "
+  throw InputError("--beams '" + text +
+                   "': must be 'node' (as the ROS node: scans of another reading count than the "
                    "first are dropped), 'per-geometry' (one Karto laser per beam geometry) or 'nearest-beam' (scans "
                    "resampled onto the most common geometry, an approximation)");
 }
@@ -80,8 +81,7 @@ std::size_t ExpectedReadings(KartoLaserRule rule, const LaserScanRecord& first) 
     // laser_utils.cpp, in its float arithmetic on the message's values.
     const float fmin = static_cast<float>(min), fmax = static_cast<float>(max), finc = static_cast<float>(inc);
     const float angular_range = std::fabs(fmax - fmin);
-    bool is_360 = std::fabs(angular_range - 2.0 * kPi) <
-                  (finc - (std::numeric_limits<float>::epsilon() * 2.0f * kPi));
+    bool is_360 = std::fabs(angular_range - 2.0 * kPi) < (finc - (std::numeric_limits<float>::epsilon() * 2.0f * kPi));
     if (angular_range > 6.10865 &&
         static_cast<std::size_t>(std::round(angular_range / finc)) + 1 == first.ranges.size()) {
       is_360 = false;
@@ -131,10 +131,8 @@ void HarmonizeBeams(BeamPolicy policy, LaserLog* log) {
                              std::pair{KartoLaserRule::kSlamToolbox, &report.slam_toolbox}}) {
     count->expected = ExpectedReadings(rule, log->scans.front());
     const std::size_t expected = count->expected;
-    count->dropped = static_cast<std::size_t>(std::count_if(log->scans.begin(), log->scans.end(),
-                                                            [&](const LaserScanRecord& s) {
-                                                              return s.ranges.size() != expected;
-                                                            }));
+    count->dropped = static_cast<std::size_t>(std::count_if(
+        log->scans.begin(), log->scans.end(), [&](const LaserScanRecord& s) { return s.ranges.size() != expected; }));
   }
   if (policy != BeamPolicy::kNearestBeam || report.geometries.size() < 2) return;
   const BeamGeometry reference = report.geometries.front().geometry;

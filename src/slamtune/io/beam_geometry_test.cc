@@ -106,7 +106,7 @@ TEST(BeamGeometry, ExpectedReadingsFollowEachNodesRule) {
   scan.angle_max = static_cast<double>(static_cast<float>(kPi));
   scan.angle_increment = inc;
   scan.ranges.assign(360, 1.0);
-  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamKarto, scan), 361u);   // open_karto: + 1 always
+  EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamKarto, scan), 361u);    // open_karto: + 1 always
   EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamToolbox, scan), 360u);  // laser_utils.cpp: a 360 laser
   // The same angles with 361 readings (a last beam repeating the first): not a 360 laser to slam_toolbox.
   scan.ranges.assign(361, 1.0);
@@ -138,7 +138,7 @@ TEST(BeamGeometry, SameCountOtherAnglesAreResampledFloatNoiseIsNot) {
   EXPECT_EQ(log.beams.scans_resampled, 1u);
   EXPECT_EQ(log.scans[2].angle_min, noisy.angle_min);  // untouched
   EXPECT_EQ(log.scans[3].angle_min, -90 * kDeg);
-  EXPECT_TRUE(std::isinf(log.scans[3].ranges[0]));   // -90 .. -81 are outside -80..100
+  EXPECT_TRUE(std::isinf(log.scans[3].ranges[0]));  // -90 .. -81 are outside -80..100
   EXPECT_DOUBLE_EQ(log.scans[3].ranges[10], 0.001 * -80 + 0.1);
   EXPECT_EQ(log.beams.readings_outside, 10u);
 }

@@ -16,7 +16,7 @@ namespace {
 
 using carmen::CarmenRecordError;
 
-constexpr std::size_t kMaxSkippedReasons = 10;       // reasons kept under --lenient
+constexpr std::size_t kMaxSkippedReasons = 10;  // reasons kept under --lenient
 constexpr double kClusterMinFraction = 0.0005;  // rule 4: >= 0.05 % of the FLASER readings ...
 constexpr double kClusterBand = 0.01;           // ... within 1 % below the largest reading
 
@@ -159,8 +159,8 @@ void PlaceRawLaserScans(ReadState* st) {
     if (st->raw_digit[i] != 0) {
       if (scan.ipc_time < first_odom || scan.ipc_time > last_odom) {
         if (log.scans_without_odometry++ == 0) {
-          log.first_scan_without_odometry = fmt::format("line {} at {} s; ODOM {} .. {} s", scan.line, scan.ipc_time,
-                                                        first_odom, last_odom);
+          log.first_scan_without_odometry =
+              fmt::format("line {} at {} s; ODOM {} .. {} s", scan.line, scan.ipc_time, first_odom, last_odom);
         }
         continue;
       }

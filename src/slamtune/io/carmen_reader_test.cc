@@ -2,14 +2,13 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <unistd.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
@@ -45,8 +44,7 @@ std::string ErrorOf(const std::string& text, const LogReadOptions& options = {})
 }
 
 std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() /
-          ("slamtune_carmen_test_" + std::to_string(::getpid()) + "_" + name))
+  return (std::filesystem::temp_directory_path() / ("slamtune_carmen_test_" + std::to_string(::getpid()) + "_" + name))
       .string();
 }
 
@@ -222,8 +220,8 @@ TEST(CarmenReaderTest, RobotLaserFovThatContradictsTheStepsIsRefused) {
   EXPECT_EQ(ReadText(RobotLaser181("-1.570796", "3.141593", "0.017453")).scans.size(), 1u);
   LogReadOptions lenient;
   lenient.lenient = true;
-  const LaserLog log = ReadText(RobotLaser181("-1.570796", "3.141593", "0.017453") + RobotLaser181("-90", "180", "1"),
-                                lenient);
+  const LaserLog log =
+      ReadText(RobotLaser181("-1.570796", "3.141593", "0.017453") + RobotLaser181("-90", "180", "1"), lenient);
   EXPECT_EQ(log.scans.size(), 1u);
   EXPECT_EQ(log.skipped_records, 1u);
 }

@@ -7,7 +7,6 @@
 
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/beam_geometry.h"
-
 #include "slamtune/io/carmen_reader.h"
 #include "slamtune/io/line_reader.h"
 
@@ -81,8 +80,8 @@ void CheckGeometry(const Fields& f, double fov, std::size_t n, const LaserScanRe
     throw CarmenRecordError(Where(f, 2, "start_angle") + " " + std::string(f[2]) + " is beyond +-2pi: " + kHint);
   }
   if (std::fabs(fov) > kMaxBeamAngle) {
-    throw CarmenRecordError(fmt::format("{} {} ({:.0f} deg) is more than a full turn: {}", Where(f, 3, "fov"), f[3],
-                                        RadToDeg(fov), kHint));
+    throw CarmenRecordError(
+        fmt::format("{} {} ({:.0f} deg) is more than a full turn: {}", Where(f, 3, "fov"), f[3], RadToDeg(fov), kHint));
   }
   if (const std::string problem = BeamAnglesProblem(scan.angle_min, scan.angle_increment, n); !problem.empty()) {
     throw CarmenRecordError(Where(f, 4, "angular_res") + ": " + problem);

@@ -82,8 +82,10 @@ void CheckWritable(const LaserLog& log) {
             i, s.angle_min, s.angle_increment, s.ranges.size(), angle_min, increment));
       }
     } else if (!std::isfinite(s.max_range) || !std::isfinite(s.angle_min) || !std::isfinite(s.angle_increment)) {
-      throw InputError(fmt::format("cannot write laser scan {} as ROBOTLASER1: max range {}, first angle {}, step {} "
-                                   "must be finite", i, s.max_range, s.angle_min, s.angle_increment));
+      throw InputError(
+          fmt::format("cannot write laser scan {} as ROBOTLASER1: max range {}, first angle {}, step {} "
+                      "must be finite",
+                      i, s.max_range, s.angle_min, s.angle_increment));
     }
     for (std::size_t b = 0; b < s.ranges.size(); ++b) {
       if (!std::isfinite(s.ranges[b])) {
@@ -171,8 +173,8 @@ CarmenWriteSummary WriteChecked(std::ostream& out, const LaserLog& log, const Ca
     if (buffer.size() > (1 << 16)) flush();
   };
   const auto trailer = [&](double ipc_time, double logger_time) {
-    fmt::format_to(std::back_inserter(buffer), " {:.{}f} {} {:.{}f}", ipc_time, options.time_decimals,
-                   options.hostname, logger_time, options.time_decimals);
+    fmt::format_to(std::back_inserter(buffer), " {:.{}f} {} {:.{}f}", ipc_time, options.time_decimals, options.hostname,
+                   logger_time, options.time_decimals);
     line_end();
   };
 

@@ -27,14 +27,14 @@
 namespace slamtune::io {
 
 struct CarmenWriteOptions {
-  std::vector<std::string> comments;   // extra header lines, each written as "# <text>"
-  std::string hostname = "slamtune";   // ipc_hostname column; non-empty, no whitespace
-  int range_decimals = 3;              // digits after the point for ranges, in [0, 9]
+  std::vector<std::string> comments;  // extra header lines, each written as "# <text>"
+  std::string hostname = "slamtune";  // ipc_hostname column; non-empty, no whitespace
+  int range_decimals = 3;             // digits after the point for ranges, in [0, 9]
   // Ranges as the shortest text that reads back to the same double (range_decimals unused):
   // for readings that are not whole millimetres, e.g. float32 values as a ROS LaserScan holds.
   bool exact_ranges = false;
-  int pose_decimals = 6;               // for x, y, theta, tv, rv, accel, in [0, 12]
-  int time_decimals = 6;               // for timestamps, in [0, 9]
+  int pose_decimals = 6;  // for x, y, theta, tv, rv, accel, in [0, 12]
+  int time_decimals = 6;  // for timestamps, in [0, 9]
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
@@ -67,7 +67,6 @@ std::size_t PrepareForCarmen(LaserLog* log, bool keep_flaser = false);
 // Writes `log` to the file `path` (replaced if it exists) whole or not at all, through
 // PATH.partial (common/atomic_file.h). Throws InputError as above, or "PATH: cannot write ..."
 // when the file cannot be written.
-CarmenWriteSummary WriteCarmenLog(const std::string& path, const LaserLog& log,
-                                  const CarmenWriteOptions& options = {});
+CarmenWriteSummary WriteCarmenLog(const std::string& path, const LaserLog& log, const CarmenWriteOptions& options = {});
 
 }  // namespace slamtune::io

@@ -9,9 +9,9 @@
 namespace slamtune::io {
 namespace {
 
-constexpr std::size_t kChunkBytes = std::size_t{1} << 20;  // raw bytes read per call
+constexpr std::size_t kChunkBytes = std::size_t{1} << 20;        // raw bytes read per call
 constexpr unsigned char kGzipMagic0 = 0x1f, kGzipMagic1 = 0x8b;  // RFC 1952 §2.3.1 ID1, ID2
-constexpr int kGzipWindowBits = 15 + 16;  // zlib: 32 KiB window, expect a gzip wrapper
+constexpr int kGzipWindowBits = 15 + 16;                         // zlib: 32 KiB window, expect a gzip wrapper
 
 }  // namespace
 

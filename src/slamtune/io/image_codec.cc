@@ -28,8 +28,8 @@ void CheckSize(std::uint64_t width, std::uint64_t height, const std::string& pat
     Fail(path, fmt::format("cannot decode the image: truncated, corrupt or empty ({} x {})", width, height), suffix);
   }
   if (width > kMaxImagePixels || height > kMaxImagePixels || width * height > kMaxImagePixels) {
-    Fail(path, fmt::format("declares {} x {} pixels, more than the {} an image may have", width, height,
-                           kMaxImagePixels),
+    Fail(path,
+         fmt::format("declares {} x {} pixels, more than the {} an image may have", width, height, kMaxImagePixels),
          suffix);
   }
 }
@@ -83,15 +83,17 @@ GreyImage DecodePgm(std::string_view bytes, const std::string& path, const std::
   const std::uint64_t count = width * height;
   const std::string_view data = bytes.substr(std::min(header.pos(), bytes.size()));
   if (binary && data.size() < count) {
-    Fail(path, fmt::format("truncated: the header declares {} x {} = {} pixels, the file holds {}", width, height,
-                           count, data.size()),
+    Fail(path,
+         fmt::format("truncated: the header declares {} x {} = {} pixels, the file holds {}", width, height, count,
+                     data.size()),
          suffix);
   }
   // P2 holds at least one digit per pixel and one whitespace between pixels: a header promising
   // more than the text can hold is refused before the pixels are allocated.
   if (!binary && data.size() < 2 * count - 1) {
-    Fail(path, fmt::format("truncated: the header declares {} x {} = {} pixels, the {} bytes of text hold at most {}",
-                           width, height, count, data.size(), (data.size() + 1) / 2),
+    Fail(path,
+         fmt::format("truncated: the header declares {} x {} = {} pixels, the {} bytes of text hold at most {}", width,
+                     height, count, data.size(), (data.size() + 1) / 2),
          suffix);
   }
   image.pixels.resize(count);
@@ -177,8 +179,11 @@ GreyImage DecodePng(std::string_view bytes, const std::string& path, const std::
   }
   const std::uint32_t width = BigEndian32(bytes, 16), height = BigEndian32(bytes, 20);
   const int depth = static_cast<unsigned char>(bytes[24]), colour = static_cast<unsigned char>(bytes[25]);
-  const char* channels = colour == 0 ? "1-channel" : colour == 4 ? "2-channel (grey + alpha)"
-                         : colour == 6 ? "4-channel" : colour == 3 ? "3-channel (palette)" : "3-channel";
+  const char* channels = colour == 0   ? "1-channel"
+                         : colour == 4 ? "2-channel (grey + alpha)"
+                         : colour == 6 ? "4-channel"
+                         : colour == 3 ? "3-channel (palette)"
+                                       : "3-channel";
   if (colour != 0 || depth > 8) {
     Fail(path, fmt::format("is a {} {}-bit image; {}", channels, depth > 8 ? 16 : 8, kConvertHint), suffix);
   }
@@ -194,9 +199,10 @@ GreyImage DecodePng(std::string_view bytes, const std::string& path, const std::
       height + static_cast<std::uint64_t>(width) * height * static_cast<std::uint64_t>(depth) / 8;
   const std::uint64_t max_data = static_cast<std::uint64_t>(bytes.size()) * kMaxDeflateRatio;
   if (min_data > max_data) {
-    Fail(path, fmt::format("truncated: the header declares {} x {} pixels ({} bytes of image data), more than the "
-                           "file's {} bytes can hold compressed",
-                           width, height, min_data, bytes.size()),
+    Fail(path,
+         fmt::format("truncated: the header declares {} x {} pixels ({} bytes of image data), more than the "
+                     "file's {} bytes can hold compressed",
+                     width, height, min_data, bytes.size()),
          suffix);
   }
   GreyImage image;

@@ -50,11 +50,13 @@ TEST(ImageCodec, TruncatedOrHugePgmIsOneErrorAndNothingPrinted) {
   EXPECT_EQ(ErrorOf("P5\n100000 100000\n255\n\x01\x02", &printed),
             "m.img: declares 100000 x 100000 pixels, more than the 1073741824 an image may have");
   EXPECT_EQ(printed, "");
-  EXPECT_EQ(ErrorOf("P5\n3 2\n65535\n"), "m.img: is a 1-channel 16-bit image; maps must be 8-bit greyscale with one "
-                                         "channel (convert it first, e.g. `convert IN -colorspace Gray -depth 8 "
-                                         "OUT.pgm`)");
-  EXPECT_EQ(ErrorOf("P5\n3"), "m.img: cannot decode the image: the PGM header (width, height, maxval) is truncated or "
-                              "not numbers");
+  EXPECT_EQ(ErrorOf("P5\n3 2\n65535\n"),
+            "m.img: is a 1-channel 16-bit image; maps must be 8-bit greyscale with one "
+            "channel (convert it first, e.g. `convert IN -colorspace Gray -depth 8 "
+            "OUT.pgm`)");
+  EXPECT_EQ(ErrorOf("P5\n3"),
+            "m.img: cannot decode the image: the PGM header (width, height, maxval) is truncated or "
+            "not numbers");
 }
 
 TEST(ImageCodec, TruncatedOrHugePngIsOneErrorAndNothingPrinted) {
@@ -65,8 +67,9 @@ TEST(ImageCodec, TruncatedOrHugePngIsOneErrorAndNothingPrinted) {
   EXPECT_EQ(printed, "");
   std::string huge = png;  // IHDR width and height 0x00ffffff: 2.8e14 pixels
   huge.replace(16, 8, std::string("\x00\xff\xff\xff\x00\xff\xff\xff", 8));
-  EXPECT_EQ(ErrorOf(huge, &printed), "m.img: declares 16777215 x 16777215 pixels, more than the 1073741824 an image "
-                                     "may have");
+  EXPECT_EQ(ErrorOf(huge, &printed),
+            "m.img: declares 16777215 x 16777215 pixels, more than the 1073741824 an image "
+            "may have");
   EXPECT_EQ(printed, "");
   std::string corrupt = png;  // a flipped byte inside the IDAT data: CRC mismatch
   corrupt[corrupt.size() - 16] ^= 0x55;
@@ -88,12 +91,14 @@ TEST(ImageCodec, InterlacedPngIsRead) {
 TEST(ImageCodec, SizeBeyondWhatTheFileCanHoldIsRefusedBeforeAllocating) {
   // 35 bytes declaring a 1 x 268435457 grey PNG: within the pixel limit, but deflate cannot
   // expand 35 bytes into 268 MB of rows.
-  const std::string png("\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x00\x01\x10\x00\x00\x01"
-                        "\x08\x00\x02\x00\x00\xd0\x00\x00M`\x86",
-                        35);
+  const std::string png(
+      "\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x00\x01\x10\x00\x00\x01"
+      "\x08\x00\x02\x00\x00\xd0\x00\x00M`\x86",
+      35);
   std::string printed;
-  EXPECT_EQ(ErrorOf(png, &printed), "m.img: truncated: the header declares 1 x 268435457 pixels (536870914 bytes of "
-                                    "image data), more than the file's 35 bytes can hold compressed");
+  EXPECT_EQ(ErrorOf(png, &printed),
+            "m.img: truncated: the header declares 1 x 268435457 pixels (536870914 bytes of "
+            "image data), more than the file's 35 bytes can hold compressed");
   EXPECT_EQ(printed, "");
   // Bit depth 0, which would make the data bound 0 bytes per row.
   std::string depth0 = png;

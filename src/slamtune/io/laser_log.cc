@@ -1,8 +1,8 @@
 #include "slamtune/io/laser_log.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/line_reader.h"
@@ -30,8 +30,8 @@ bool BeamGeometry::SameAs(const BeamGeometry& other, double tolerance_rad) const
 
 std::string BeamGeometry::ToString() const {
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  return fmt::format("{} beams, {:.2f} .. {:.2f} deg, step {:.4f} deg", readings, angle_min * kDeg,
-                     angle_max() * kDeg, angle_increment * kDeg);
+  return fmt::format("{} beams, {:.2f} .. {:.2f} deg, step {:.4f} deg", readings, angle_min * kDeg, angle_max() * kDeg,
+                     angle_increment * kDeg);
 }
 
 BeamGeometry GeometryOf(const LaserScanRecord& scan) {
@@ -58,8 +58,8 @@ void RecordingReadOptions::Validate() const {
   if (laser_offset) {
     const Pose2& o = *laser_offset;
     if (!std::isfinite(o.x) || !std::isfinite(o.y) || !(std::fabs(o.theta) <= 3.14159265358979323846)) {
-      throw InputError(fmt::format("--laser-offset = {},{},{}: must be finite, yaw in [-pi, pi] rad", o.x, o.y,
-                                   o.theta));
+      throw InputError(
+          fmt::format("--laser-offset = {},{},{}: must be finite, yaw in [-pi, pi] rad", o.x, o.y, o.theta));
     }
   }
 }

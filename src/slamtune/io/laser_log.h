@@ -4,8 +4,8 @@
 #pragma once
 
 #include <cstddef>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -95,7 +95,7 @@ struct BeamReport {
     BeamGeometry geometry;
     std::size_t scans = 0;
   };
-  std::vector<Seen> geometries;  // distinct geometries, most scans first (the first seen on a tie)
+  std::vector<Seen> geometries;      // distinct geometries, most scans first (the first seen on a tie)
   std::size_t scans_resampled = 0;   // nearest-beam: scans put onto the most common geometry
   std::size_t readings_outside = 0;  // nearest-beam: beams with no beam of the scan near them (+inf)
   NodeBeamCount slam_karto;          // before any resampling
@@ -117,10 +117,10 @@ inline constexpr const char* kBadRangeMaxRule =
     "and the range threshold is the node's own (--no-return M sets a limit)";
 
 struct RecordingInfo {
-  std::string format;                 // "MCAP", "rosbag2 SQLite3", "ROS 1 bag v2.0"
+  std::string format;  // "MCAP", "rosbag2 SQLite3", "ROS 1 bag v2.0"
   std::vector<std::string> files;
-  bool complete = true;               // the container's end marker was found
-  std::string ending;                 // how the data ended
+  bool complete = true;                  // the container's end marker was found
+  std::string ending;                    // how the data ended
   std::uint64_t dropped_tail_bytes = 0;  // a tail cut off inside a record (or corrupt, --lenient), not read
   std::string dropped_tail_reason;
   struct Topic {
@@ -144,33 +144,33 @@ struct RecordingInfo {
   std::vector<std::string> unplaced_examples;  // the first few, "scan K at T s: why"
   std::size_t scans_malformed = 0;             // --lenient: undecodable or inconsistent, not used
   std::vector<std::string> malformed_examples;
-  std::size_t scans_other_frame = 0;           // frame_id differs from the first scan's (used)
+  std::size_t scans_other_frame = 0;  // frame_id differs from the first scan's (used)
   // Scans whose range_max is NaN, infinite, 0 or negative: read with no upper limit (inf and NaN
   // readings are no-returns, every other reading above range_min is a range); the first, e.g.
   // "scan 0 at 100.000000 s: range_max nan".
   std::size_t scans_bad_range_max = 0;
   std::string bad_range_max_example;
-  std::size_t messages_undecodable = 0;        // --lenient: tf / odometry messages skipped
-  std::vector<std::string> tf_edges;           // "parent -> child (static)" / "(N samples)"
-  std::size_t tf_parent_conflicts = 0;         // transforms giving a frame a second parent, ignored
-  std::size_t tf_bad_rotations = 0;            // transforms refused for a bad quaternion
-  std::size_t tf_refused_frames = 0;           // refused: a frame its own parent, or an empty frame id
-  std::vector<std::string> tf_loops;           // loops of the tree not on the frames used, "a -> b -> a"
+  std::size_t messages_undecodable = 0;  // --lenient: tf / odometry messages skipped
+  std::vector<std::string> tf_edges;     // "parent -> child (static)" / "(N samples)"
+  std::size_t tf_parent_conflicts = 0;   // transforms giving a frame a second parent, ignored
+  std::size_t tf_bad_rotations = 0;      // transforms refused for a bad quaternion
+  std::size_t tf_refused_frames = 0;     // refused: a frame its own parent, or an empty frame id
+  std::vector<std::string> tf_loops;     // loops of the tree not on the frames used, "a -> b -> a"
 };
 
 struct LaserLog {
-  std::string path;  // as given to the reader ("<memory>" for streams)
+  std::string path;                    // as given to the reader ("<memory>" for streams)
   std::vector<LaserScanRecord> scans;  // file order
   std::vector<OdomRecord> odometry;    // file order
   // Records seen per type name as written in the file ("FLASER", "ODOM", "PARAM", "#" for
   // comments, and unknown names as they appear), including skipped ones.
   std::map<std::string, std::size_t> record_counts;
   std::map<std::string, std::string> params;  // PARAM name -> value (last wins)
-  std::size_t unknown_records = 0;  // lines of unknown type, skipped
-  std::size_t skipped_records = 0;  // malformed records skipped under --lenient
-  std::vector<std::string> skipped_reasons;  // "LINE: reason" for the first few skipped
-  std::size_t skipped_scans = 0;             // of those, laser records (FLASER, ROBOTLASER1, RAWLASER1..4)
-  std::string first_skipped_scan;            // "line N: reason" of the first
+  std::size_t unknown_records = 0;            // lines of unknown type, skipped
+  std::size_t skipped_records = 0;            // malformed records skipped under --lenient
+  std::vector<std::string> skipped_reasons;   // "LINE: reason" for the first few skipped
+  std::size_t skipped_scans = 0;              // of those, laser records (FLASER, ROBOTLASER1, RAWLASER1..4)
+  std::string first_skipped_scan;             // "line N: reason" of the first
   // RAWLASER scans outside the time span of the ODOM records: no pose to interpolate, so they
   // are left out of `scans` (never posed by clamping) and counted here; the first one in
   // words, e.g. "line 12 at 130.5 s; ODOM 100 .. 120 s".
@@ -185,21 +185,21 @@ struct LaserLog {
   std::size_t time_backward_steps = 0;
   double largest_backward_step_s = 0.0;
   // Reading context.
-  std::size_t lines_read = 0;         // lines consumed (all of them unless max_scans stopped early)
-  bool compressed = false;            // the input was gzip
-  bool stopped_at_max_scans = false;  // LogReadOptions::max_scans ended the read early
-  std::size_t total_readings = 0;     // sum of ranges.size() over scans
-  std::size_t total_no_returns = 0;   // sum of no_returns over scans
-  BeamReport beams;                   // one geometry for the engine (beam_geometry.h)
+  std::size_t lines_read = 0;              // lines consumed (all of them unless max_scans stopped early)
+  bool compressed = false;                 // the input was gzip
+  bool stopped_at_max_scans = false;       // LogReadOptions::max_scans ended the read early
+  std::size_t total_readings = 0;          // sum of ranges.size() over scans
+  std::size_t total_no_returns = 0;        // sum of no_returns over scans
+  BeamReport beams;                        // one geometry for the engine (beam_geometry.h)
   std::optional<RecordingInfo> recording;  // set when the log was read from a ROS recording
 };
 
 // Choices made when turning a ROS recording into a log (recording_log.h); empty = automatic.
 struct RecordingReadOptions {
-  std::string scan_topic;   // sensor_msgs/LaserScan topic; "" = the only one
-  std::string odom_topic;   // nav_msgs/Odometry topic for the poses; "" = odom -> base from /tf
-  std::string odom_frame;   // "" = "odom"
-  std::string base_frame;   // "" = base_footprint, else base_link, as found in the tf tree
+  std::string scan_topic;             // sensor_msgs/LaserScan topic; "" = the only one
+  std::string odom_topic;             // nav_msgs/Odometry topic for the poses; "" = odom -> base from /tf
+  std::string odom_frame;             // "" = "odom"
+  std::string base_frame;             // "" = base_footprint, else base_link, as found in the tf tree
   std::optional<Pose2> laser_offset;  // base -> laser (m, m, rad), instead of the tf tree's
   double max_odom_gap_s = 0.5;        // odometry samples farther apart are not interpolated
 
@@ -207,11 +207,11 @@ struct RecordingReadOptions {
 };
 
 struct LogReadOptions {
-  bool lenient = false;        // skip malformed records (and count them) instead of failing
-  double no_return_value = 0;  // > 0 overrides the detected no-return value (m)
-  std::size_t max_scans = 0;   // stop after this many laser scans (0 = all); for short slices
-  BeamPolicy beams = BeamPolicy::kNode;      // applied by ReadLaserLog (log_reader.h)
-  RecordingReadOptions recording;            // for ROS recordings
+  bool lenient = false;                  // skip malformed records (and count them) instead of failing
+  double no_return_value = 0;            // > 0 overrides the detected no-return value (m)
+  std::size_t max_scans = 0;             // stop after this many laser scans (0 = all); for short slices
+  BeamPolicy beams = BeamPolicy::kNode;  // applied by ReadLaserLog (log_reader.h)
+  RecordingReadOptions recording;        // for ROS recordings
 
   // Throws InputError naming the field if no_return_value is negative, NaN or infinite.
   void Validate() const;

@@ -112,9 +112,9 @@ double RequireFinite(const LineReader& reader, std::string_view text, std::size_
                          std::string(text) + "'");
   }
   if (!std::isfinite(*value)) {
-    throw InputError(reader.name(), reader.line_number(),
-                     "column " + std::to_string(column) + " (" + std::string(what) + ") is not finite: " +
-                         std::string(text));
+    throw InputError(
+        reader.name(), reader.line_number(),
+        "column " + std::to_string(column) + " (" + std::string(what) + ") is not finite: " + std::string(text));
   }
   return *value;
 }

@@ -96,14 +96,19 @@ TEST(LineReaderTest, CrLfEmptyLinesAndALineLongerThanTheBuffer) {
 }
 
 TEST(LineReaderTest, ByteOrderMarkBeforeTheFirstLineIsDroppedPlainAndGzip) {
-  const std::string text = "\xEF\xBB\xBF" "FLASER 1 2\n\xEF\xBB\xBF" "kept\n";
+  const std::string text =
+      "\xEF\xBB\xBF"
+      "FLASER 1 2\n\xEF\xBB\xBF"
+      "kept\n";
   for (const std::string& bytes : {text, Gzip(text)}) {
     std::istringstream in(bytes);
     LineReader reader(&in, "bom");
     const auto lines = AllLines(reader);
     ASSERT_EQ(lines.size(), 2u);
     EXPECT_EQ(lines[0], "FLASER 1 2");
-    EXPECT_EQ(lines[1], "\xEF\xBB\xBF" "kept");  // only the file's start carries a mark
+    EXPECT_EQ(lines[1],
+              "\xEF\xBB\xBF"
+              "kept");  // only the file's start carries a mark
   }
 }
 

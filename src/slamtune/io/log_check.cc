@@ -96,9 +96,9 @@ void CheckStamps(const std::vector<double>& stamps, const CheckOptions& o, Check
   Report(report, ProblemKind::kScanGap, gaps,
          fmt::format("{} gaps between scan stamps longer than {} x the median period (longest {:.3f} s)", gaps.count,
                      o.gap_factor, longest));
-  Report(report, ProblemKind::kScanStampBackward, back,
-         fmt::format("{} scan stamps earlier than the one before (largest step back {:.3f} s)", back.count,
-                     largest_back));
+  Report(
+      report, ProblemKind::kScanStampBackward, back,
+      fmt::format("{} scan stamps earlier than the one before (largest step back {:.3f} s)", back.count, largest_back));
   Report(report, ProblemKind::kScanStampDuplicate, duplicate,
          fmt::format("{} scans with the same stamp as the one before", duplicate.count));
 }
@@ -118,8 +118,8 @@ void CheckBeams(const LaserLog& log, CheckReport* report) {
   }
   const std::size_t first = log.scans.front().ranges.size();
   std::size_t dropped = 0;
-  for (auto [node, rule] : {std::pair{"slam_karto", KartoLaserRule::kSlamKarto},
-                            std::pair{"slam_toolbox", KartoLaserRule::kSlamToolbox}}) {
+  for (auto [node, rule] :
+       {std::pair{"slam_karto", KartoLaserRule::kSlamKarto}, std::pair{"slam_toolbox", KartoLaserRule::kSlamToolbox}}) {
     const std::size_t expected = ExpectedReadings(rule, log.scans.front());
     const auto refused = static_cast<std::size_t>(std::count_if(
         log.scans.begin(), log.scans.end(), [&](const LaserScanRecord& s) { return s.ranges.size() != expected; }));
@@ -131,7 +131,9 @@ void CheckBeams(const LaserLog& log, CheckReport* report) {
                      "angle_min, angle_max and angle_increment) and the first scan has {}; the driver's angles and "
                      "reading count disagree for that node",
                      node, refused, log.scans.size(), expected, first),
-         refused, {0}, {log.scans.front().ipc_time}});
+         refused,
+         {0},
+         {log.scans.front().ipc_time}});
   }
   Report(report, ProblemKind::kBeamGeometryChange, changes,
          fmt::format("the beam geometry changes {} times between scans ({}); the node drops the {} of {} scans whose "
@@ -163,9 +165,10 @@ void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report
     no_returns += scan.no_returns;
   }
   const double share = readings > 0 ? static_cast<double>(no_returns) / static_cast<double>(readings) : 0.0;
-  report->facts.push_back(fmt::format("readings: {}, largest below range_max {:.3f} m, range_max {} m, no-returns "
-                                      "{:.1f} %",
-                                      readings, largest_valid, range_max, 100.0 * share));
+  report->facts.push_back(
+      fmt::format("readings: {}, largest below range_max {:.3f} m, range_max {} m, no-returns "
+                  "{:.1f} %",
+                  readings, largest_valid, range_max, 100.0 * share));
   if (above.count > 0) {
     report->problems.push_back(
         {ProblemKind::kRangeMaxTooLow,
@@ -489,7 +492,9 @@ CheckReport CheckRecordingContents(const RecordingContents& contents, const LogR
     early.push_back({ProblemKind::kSeveralScanTopics,
                      fmt::format("{} LaserScan topics: {}; the rest of the check reads {} (choose with --scan-topic)",
                                  contents.scans.size(), names, busiest),
-                     contents.scans.size(), {}, {}});
+                     contents.scans.size(),
+                     {},
+                     {}});
     attempt.recording.scan_topic = busiest;
   }
   LaserLog log;
@@ -510,7 +515,10 @@ CheckReport CheckRecordingContents(const RecordingContents& contents, const LogR
     const bool no_offset = std::string(e.what()).find("no laser offset") != std::string::npos;
     if (!no_offset || attempt.recording.laser_offset) throw;
     early.push_back({ProblemKind::kNoLaserOffset,
-                     std::string(e.what()) + " (the rest of the check assumes the laser at the base)", 1, {}, {}});
+                     std::string(e.what()) + " (the rest of the check assumes the laser at the base)",
+                     1,
+                     {},
+                     {}});
     attempt.recording.laser_offset = Pose2{};
     log = RecordingToLog(contents, attempt);
   }

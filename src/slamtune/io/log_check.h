@@ -36,14 +36,14 @@
 namespace slamtune::io {
 
 struct CheckOptions {
-  double gap_factor = 3.0;             // a scan gap is longer than this x the median period
-  double range_max_use_fraction = 0.5; // largest reading below this fraction of range_max: too high
-  double no_return_majority = 0.5;     // share of no-returns counted as a problem
-  double max_speed_mps = 3.0;          // odometry faster than this between samples: a jump
-  double max_turn_rate_rad_s = 6.0;    // or turning faster than this (and by > 0.2 rad)
-  double stall_s = 1.0;                // no odometry sample for this long while scanning: a stall
-  double moving_speed_mps = 0.05;      // |tv| above this means the robot is moving
-  double late_s = 0.5;                 // odometry received this long after its scan: late
+  double gap_factor = 3.0;                // a scan gap is longer than this x the median period
+  double range_max_use_fraction = 0.5;    // largest reading below this fraction of range_max: too high
+  double no_return_majority = 0.5;        // share of no-returns counted as a problem
+  double max_speed_mps = 3.0;             // odometry faster than this between samples: a jump
+  double max_turn_rate_rad_s = 6.0;       // or turning faster than this (and by > 0.2 rad)
+  double stall_s = 1.0;                   // no odometry sample for this long while scanning: a stall
+  double moving_speed_mps = 0.05;         // |tv| above this means the robot is moving
+  double late_s = 0.5;                    // odometry received this long after its scan: late
   double velocity_mismatch_share = 0.05;  // share of moving steps that disagree, to report
 
   void Validate() const;
@@ -77,10 +77,10 @@ const char* ProblemKindName(ProblemKind kind);
 
 struct CheckProblem {
   ProblemKind kind;
-  std::string what;                 // one line, with the numbers
-  std::size_t count = 0;            // occurrences
-  std::vector<std::size_t> scans;   // the first few scans concerned
-  std::vector<double> times_s;      // their times (stamps)
+  std::string what;                // one line, with the numbers
+  std::size_t count = 0;           // occurrences
+  std::vector<std::size_t> scans;  // the first few scans concerned
+  std::vector<double> times_s;     // their times (stamps)
 };
 
 struct CheckReport {

@@ -100,13 +100,15 @@ std::vector<std::string> BeamLines(const LaserLog& log) {
   const auto dropped = [&](const NodeBeamCount& c) {
     if (c.dropped == 0) return std::string();
     if (c.expected != first) {
-      return fmt::format("drops {} of {} scans: the Karto laser it makes from the first scan expects {} readings "
-                         "(from angle_min, angle_max and angle_increment) and the first scan has {}",
-                         c.dropped, n, c.expected, first);
+      return fmt::format(
+          "drops {} of {} scans: the Karto laser it makes from the first scan expects {} readings "
+          "(from angle_min, angle_max and angle_increment) and the first scan has {}",
+          c.dropped, n, c.expected, first);
     }
-    return fmt::format("drops {} of {} scans: their beam count differs from the first scan's ({}); make the driver "
-                       "publish a fixed count",
-                       c.dropped, n, first);
+    return fmt::format(
+        "drops {} of {} scans: their beam count differs from the first scan's ({}); make the driver "
+        "publish a fixed count",
+        c.dropped, n, first);
   };
   const std::string karto = dropped(b.slam_karto);
   const std::string toolbox = dropped(b.slam_toolbox);
@@ -117,13 +119,15 @@ std::vector<std::string> BeamLines(const LaserLog& log) {
     if (!toolbox.empty()) out.push_back("beams: slam_toolbox " + toolbox);
   }
   if (b.policy == BeamPolicyName(BeamPolicy::kPerGeometry) && b.varies()) {
-    out.push_back(fmt::format("beams: --beams per-geometry: one Karto laser for each of the {} geometries; no scan "
-                              "dropped or changed (the node does not do this)",
-                              b.geometries.size()));
+    out.push_back(
+        fmt::format("beams: --beams per-geometry: one Karto laser for each of the {} geometries; no scan "
+                    "dropped or changed (the node does not do this)",
+                    b.geometries.size()));
   } else if (b.policy == BeamPolicyName(BeamPolicy::kNearestBeam) && b.scans_resampled > 0) {
-    out.push_back(fmt::format("beams: --beams nearest-beam: {} scans resampled onto {} ({} readings outside their own "
-                              "field of view set to no-return): an approximation, the node never sees these scans",
-                              b.scans_resampled, b.geometries[0].geometry.ToString(), b.readings_outside));
+    out.push_back(
+        fmt::format("beams: --beams nearest-beam: {} scans resampled onto {} ({} readings outside their own "
+                    "field of view set to no-return): an approximation, the node never sees these scans",
+                    b.scans_resampled, b.geometries[0].geometry.ToString(), b.readings_outside));
   }
   return out;
 }
@@ -219,9 +223,7 @@ std::vector<std::pair<std::string, std::string>> InputRows(const std::vector<std
 
 std::string FormatLogSummary(const LogSummary& s) {
   std::string out;
-  auto row = [&out](std::string_view key, const std::string& value) {
-    out += fmt::format("{:<24} {}\n", key, value);
-  };
+  auto row = [&out](std::string_view key, const std::string& value) { out += fmt::format("{:<24} {}\n", key, value); };
   row("log", s.path + (s.compressed ? " (gzip)" : "") + (s.stopped_at_max_scans ? " (first scans only)" : ""));
   for (const auto& [name, value] : InputRows(s.input)) row(name, value);
   if (s.lines > 0) row("lines", std::to_string(s.lines));
@@ -233,14 +235,14 @@ std::string FormatLogSummary(const LogSummary& s) {
   row("laser scans", std::to_string(s.scans));
   row("odometry records", std::to_string(s.odometry_records));
   row("time span", fmt::format("{:.6f} .. {:.6f} s", s.first_time_s, s.last_time_s));
-  row("duration", fmt::format("{:.3f} s ({:.2f} min), {:.2f} scans/s", s.duration_s, s.duration_s / 60.0,
-                              s.scan_rate_hz));
+  row("duration",
+      fmt::format("{:.3f} s ({:.2f} min), {:.2f} scans/s", s.duration_s, s.duration_s / 60.0, s.scan_rate_hz));
   row("readings per scan", s.readings_per_scan_varies
                                ? fmt::format("varies: {} .. {}", s.readings_per_scan_min, s.readings_per_scan_max)
                                : std::to_string(s.readings_per_scan));
-  row("beam angles", fmt::format("{:.2f} .. {:.2f} deg (span {:.2f} deg, step {:.4f} deg){}", s.angle_min_deg,
-                                 s.angle_max_deg, s.angular_span_deg, s.angular_resolution_deg,
-                                 s.geometry_varies ? ", varies between scans" : ""));
+  row("beam angles",
+      fmt::format("{:.2f} .. {:.2f} deg (span {:.2f} deg, step {:.4f} deg){}", s.angle_min_deg, s.angle_max_deg,
+                  s.angular_span_deg, s.angular_resolution_deg, s.geometry_varies ? ", varies between scans" : ""));
   row("readings", fmt::format("{} (min {:.3f} m, max {:.3f} m, max below no-return {:.3f} m)", s.readings,
                               s.min_reading_m, s.max_reading_m, s.max_valid_reading_m));
   row("no-return value", fmt::format("{} m (rule: {})", s.no_return_value_m, s.no_return_rule));

@@ -30,7 +30,7 @@ struct LogSummary {
   // Time span of the scans (s).
   double first_time_s = 0.0;
   double last_time_s = 0.0;
-  double duration_s = 0.0;  // last - first
+  double duration_s = 0.0;    // last - first
   double scan_rate_hz = 0.0;  // (scans - 1) / duration, 0 if undefined
   // Beam geometry of the first scan; *_varies say whether any other scan differs.
   std::size_t readings_per_scan = 0;
@@ -38,7 +38,7 @@ struct LogSummary {
   std::size_t readings_per_scan_max = 0;
   bool readings_per_scan_varies = false;
   double angle_min_deg = 0.0;
-  double angle_max_deg = 0.0;  // angle of the last beam
+  double angle_max_deg = 0.0;     // angle of the last beam
   double angular_span_deg = 0.0;  // angle_max - angle_min
   double angular_resolution_deg = 0.0;
   bool geometry_varies = false;

@@ -58,8 +58,7 @@ TEST(LogSummaryTest, CountsSpansAndOdometry) {
 }
 
 TEST(LogSummaryTest, VaryingBeamCountsAreFlaggedAndFormatted) {
-  const std::string text =
-      "FLASER 3 1 2 3 0 0 0 0 0 0 1 h 1\nFLASER 5 1 2 3 4 5 0 0 0 0 0 0 2 h 2\n";
+  const std::string text = "FLASER 3 1 2 3 0 0 0 0 0 0 1 h 1\nFLASER 5 1 2 3 4 5 0 0 0 0 0 0 2 h 2\n";
   const LogSummary s = SummarizeLog(ReadText(text));
   EXPECT_TRUE(s.readings_per_scan_varies);
   EXPECT_TRUE(s.geometry_varies);

@@ -179,26 +179,28 @@ CellClass ClassifyGrey(std::uint8_t v, bool negate, double occupied_thresh, doub
 
 void ValidateMapImage(const MapImage& map, const std::string& what) {
   if (map.width <= 0 || map.height <= 0) {
-    throw InputError(what, 0, fmt::format("empty map ({} x {} cells); a map needs at least one cell",
-                                          map.width, map.height));
+    throw InputError(what, 0,
+                     fmt::format("empty map ({} x {} cells); a map needs at least one cell", map.width, map.height));
   }
   const std::size_t expected = static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height);
   if (map.pixels.size() != expected) {
-    throw InputError(what, 0, fmt::format("map has {} pixels but width x height = {} x {} = {}",
-                                          map.pixels.size(), map.width, map.height, expected));
+    throw InputError(what, 0,
+                     fmt::format("map has {} pixels but width x height = {} x {} = {}", map.pixels.size(), map.width,
+                                 map.height, expected));
   }
   if (!std::isfinite(map.resolution) || map.resolution <= 0.0) {
     throw InputError(what, 0, "resolution = " + Number(map.resolution) + " m/cell; must be finite and > 0");
   }
-  for (const auto& [name, value] : {std::pair{"occupied_thresh", map.occupied_thresh},
-                                    std::pair{"free_thresh", map.free_thresh}}) {
+  for (const auto& [name, value] :
+       {std::pair{"occupied_thresh", map.occupied_thresh}, std::pair{"free_thresh", map.free_thresh}}) {
     if (!(value >= 0.0 && value <= 1.0)) {
       throw InputError(what, 0, std::string(name) + " = " + Number(value) + "; must be in [0, 1]");
     }
   }
   if (map.free_thresh > map.occupied_thresh) {
-    throw InputError(what, 0, "free_thresh = " + Number(map.free_thresh) + " > occupied_thresh = " +
-                                  Number(map.occupied_thresh) + "; free_thresh must not exceed occupied_thresh");
+    throw InputError(what, 0,
+                     "free_thresh = " + Number(map.free_thresh) + " > occupied_thresh = " +
+                         Number(map.occupied_thresh) + "; free_thresh must not exceed occupied_thresh");
   }
 }
 

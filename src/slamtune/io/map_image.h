@@ -36,9 +36,9 @@ inline constexpr double kDefaultResolution = 0.05;  // m per cell, for a bare im
 struct MapImage {
   int width = 0;
   int height = 0;
-  double resolution = kDefaultResolution;  // m per cell
-  Pose2 origin;                            // world pose of the lower-left cell (map_server `origin`)
-  bool negate = false;                     // true: p = v / 255 instead of (255 - v) / 255
+  double resolution = kDefaultResolution;           // m per cell
+  Pose2 origin;                                     // world pose of the lower-left cell (map_server `origin`)
+  bool negate = false;                              // true: p = v / 255 instead of (255 - v) / 255
   double occupied_thresh = kDefaultOccupiedThresh;  // p above this -> occupied
   double free_thresh = kDefaultFreeThresh;          // p below this -> free
   // Row-major grey values, width * height, row 0 = top row of the image.

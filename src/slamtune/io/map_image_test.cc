@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <csignal>
-
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
@@ -31,10 +30,10 @@ MapImage SmallMap() {
   map.height = 4;
   map.resolution = 0.025;
   map.origin = Pose2{-12.345678901234, 3.3, 0.7};
-  map.pixels = {kMapOccupied, kMapOccupied, kMapFree,    kMapFree,    kMapUnknown, kMapUnknown,
-                kMapFree,     kMapFree,     kMapFree,    kMapOccupied, kMapUnknown, kMapUnknown,
-                kMapUnknown,  kMapFree,     kMapOccupied, kMapFree,    kMapFree,    kMapUnknown,
-                kMapUnknown,  kMapUnknown,  kMapUnknown, kMapUnknown, kMapFree,    kMapOccupied};
+  map.pixels = {kMapOccupied, kMapOccupied, kMapFree,     kMapFree,     kMapUnknown, kMapUnknown,
+                kMapFree,     kMapFree,     kMapFree,     kMapOccupied, kMapUnknown, kMapUnknown,
+                kMapUnknown,  kMapFree,     kMapOccupied, kMapFree,     kMapFree,    kMapUnknown,
+                kMapUnknown,  kMapUnknown,  kMapUnknown,  kMapUnknown,  kMapFree,    kMapOccupied};
   return map;
 }
 
@@ -42,8 +41,7 @@ class MapImageFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("slamtune_map_image_" + std::to_string(::getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() / ("slamtune_map_image_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -66,23 +66,23 @@ struct MessageLocation {
 };
 
 struct RecordedMessage {
-  std::size_t topic = 0;           // index into ContainerSummary::topics (also passed to the callback)
-  std::int64_t log_time_ns = 0;    // receive time: MCAP log_time, rosbag2 timestamp, ROS 1 `time`
+  std::size_t topic = 0;               // index into ContainerSummary::topics (also passed to the callback)
+  std::int64_t log_time_ns = 0;        // receive time: MCAP log_time, rosbag2 timestamp, ROS 1 `time`
   std::span<const std::uint8_t> data;  // serialized payload, valid only during the callback
   MessageLocation location;
 };
 
 struct ContainerSummary {
   ContainerFormat format = ContainerFormat::kMcap;
-  std::vector<std::string> files;     // files read, in order (one, or a bag folder's splits)
-  std::vector<RecordedTopic> topics;  // in order of first appearance
-  std::size_t messages = 0;           // messages delivered
-  std::size_t chunks = 0;             // chunk records read (MCAP, ROS 1)
+  std::vector<std::string> files;                        // files read, in order (one, or a bag folder's splits)
+  std::vector<RecordedTopic> topics;                     // in order of first appearance
+  std::size_t messages = 0;                              // messages delivered
+  std::size_t chunks = 0;                                // chunk records read (MCAP, ROS 1)
   std::map<std::string, std::size_t> chunk_compression;  // "none", "zstd", "lz4", "bz2" -> chunks
-  std::string message_compression;    // rosbag2 per-message compression ("" or "zstd")
-  std::string file_compression;       // rosbag2 per-file compression ("" or "zstd")
-  std::size_t skipped_records = 0;    // records a linear reader skips (indexes, attachments, ...)
-  std::size_t unknown_records = 0;    // records of unknown opcode / op, skipped
+  std::string message_compression;                       // rosbag2 per-message compression ("" or "zstd")
+  std::string file_compression;                          // rosbag2 per-file compression ("" or "zstd")
+  std::size_t skipped_records = 0;                       // records a linear reader skips (indexes, attachments, ...)
+  std::size_t unknown_records = 0;                       // records of unknown opcode / op, skipped
   // How the data ended: "data end record and footer", "no data end record: the file ends after
   // a complete record (recording cut off?)", "index", "truncated tail dropped (--lenient)", ...
   std::string ending;
@@ -94,8 +94,8 @@ struct ContainerSummary {
 };
 
 struct ContainerReadOptions {
-  bool lenient = false;     // a corrupt record ends the read (counted) instead of failing
-  bool verify_crc = true;   // check MCAP chunk CRCs that are non-zero
+  bool lenient = false;    // a corrupt record ends the read (counted) instead of failing
+  bool verify_crc = true;  // check MCAP chunk CRCs that are non-zero
 };
 
 using MessageCallback = std::function<void(const RecordedTopic& topic, const RecordedMessage& message)>;

@@ -57,9 +57,9 @@ void ChooseScanTopic(const RecordingContents& contents, const RecordingReadOptio
                      "no sensor_msgs/LaserScan messages in the recording; its topics: " + TopicList(contents));
   }
   if (candidates.size() > 1) {
-    throw InputError(contents.path, 0,
-                     fmt::format("{} LaserScan topics: {}; choose one with --scan-topic", candidates.size(),
-                                 Join(candidates)));
+    throw InputError(
+        contents.path, 0,
+        fmt::format("{} LaserScan topics: {}; choose one with --scan-topic", candidates.size(), Join(candidates)));
   }
   info->scan_topic = contents.scans.begin()->first;
   info->scan_topic_rule = "the only LaserScan topic";
@@ -241,9 +241,10 @@ std::string GeometryProblem(const LaserScanMessage& m) {
   if (n == 0) return "LaserScan has no ranges";
   const double first = m.angle_min, last = m.angle_max;
   if (std::fabs(first) > kMaxBeamAngle || std::fabs(last) > kMaxBeamAngle || std::fabs(last - first) > kMaxBeamAngle) {
-    return fmt::format("LaserScan angles {} .. {} rad (step {}) go beyond a full turn: angles must be radians "
-                       "(written in degrees?)",
-                       m.angle_min, m.angle_max, m.angle_increment);
+    return fmt::format(
+        "LaserScan angles {} .. {} rad (step {}) go beyond a full turn: angles must be radians "
+        "(written in degrees?)",
+        m.angle_min, m.angle_max, m.angle_increment);
   }
   if (beams == 0) {
     return fmt::format("LaserScan angles {} .. {} step {} rad describe no beams", m.angle_min, m.angle_max,
@@ -278,7 +279,7 @@ LaserScanRecord ToRecord(const RecordedScan& scan, std::size_t index, const Reco
     std::reverse(r.ranges.begin(), r.ranges.end());
   }
   r.max_range = (m.range_max > 0.0f && std::isfinite(m.range_max)) ? static_cast<double>(m.range_max)
-                                                                    : std::numeric_limits<double>::infinity();
+                                                                   : std::numeric_limits<double>::infinity();
   r.range_min = std::isfinite(m.range_min) && m.range_min > 0.0f ? static_cast<double>(m.range_min) : 0.0;
   r.ipc_time = static_cast<double>(m.header.stamp_ns) / 1e9;
   r.header_stamp_ns = static_cast<std::int64_t>(m.header.stamp_ns);
@@ -287,9 +288,8 @@ LaserScanRecord ToRecord(const RecordedScan& scan, std::size_t index, const Reco
 }
 
 std::size_t CountNoReturns(const LaserScanRecord& r) {
-  return static_cast<std::size_t>(std::count_if(r.ranges.begin(), r.ranges.end(), [&](double v) {
-    return !std::isfinite(v) || v < 0.0 || v >= r.max_range;
-  }));
+  return static_cast<std::size_t>(std::count_if(
+      r.ranges.begin(), r.ranges.end(), [&](double v) { return !std::isfinite(v) || v < 0.0 || v >= r.max_range; }));
 }
 
 void FillTopics(const RecordingContents& contents, RecordingInfo* info) {
@@ -421,11 +421,11 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
     log.scans.push_back(std::move(record));
   }
   if (log.scans.empty()) {
-    throw InputError(contents.path, 0,
-                     fmt::format("none of the {} scans on {} could be used: {} without odometry ({}), {} malformed",
-                                 scans.size(), info.scan_topic, info.scans_unplaced,
-                                 info.unplaced_examples.empty() ? "-" : info.unplaced_examples.front(),
-                                 info.scans_malformed));
+    throw InputError(
+        contents.path, 0,
+        fmt::format("none of the {} scans on {} could be used: {} without odometry ({}), {} malformed", scans.size(),
+                    info.scan_topic, info.scans_unplaced,
+                    info.unplaced_examples.empty() ? "-" : info.unplaced_examples.front(), info.scans_malformed));
   }
   if (options.no_return_value > 0) {
     log.no_return_value = options.no_return_value;
@@ -444,8 +444,7 @@ LaserLog ReadRecordingLog(const std::string& path, const LogReadOptions& options
   options.Validate();
   // Scans beyond max_scans are not kept; a few more than asked cover scans that cannot be placed.
   const std::size_t keep = options.max_scans > 0 ? options.max_scans * 2 + 100 : 0;
-  const RecordingContents contents =
-      ReadRecordingContents(path, options.lenient, keep);
+  const RecordingContents contents = ReadRecordingContents(path, options.lenient, keep);
   return RecordingToLog(contents, options);
 }
 

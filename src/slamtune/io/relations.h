@@ -13,7 +13,7 @@ namespace slamtune::io {
 struct Relation {
   double t1 = 0.0;
   double t2 = 0.0;
-  Pose2 delta;  // pose at t2 seen from the pose at t1 (Between(pose(t1), pose(t2)))
+  Pose2 delta;           // pose at t2 seen from the pose at t1 (Between(pose(t1), pose(t2)))
   std::size_t line = 0;  // 1-based line in its file (0 when made in memory)
 };
 

@@ -2,11 +2,10 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-
-#include <unistd.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
@@ -31,8 +30,9 @@ std::string WriteText(const std::string& name, const std::string& text) {
 }
 
 TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
-  const std::string path = WriteText("ok", "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
-                                           "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
+  const std::string path = WriteText("ok",
+                                     "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
+                                     "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
   const auto relations = ReadRelations(path);
   ASSERT_EQ(relations.size(), 2u);
   EXPECT_DOUBLE_EQ(relations[0].t1, 976052896.784509);
@@ -44,7 +44,9 @@ TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
 }
 
 TEST(RelationsTest, ByteOrderMarkDoesNotHideTheFirstRelation) {
-  const auto relations = ReadRelations(WriteText("bom", "\xEF\xBB\xBF" "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
+  const auto relations = ReadRelations(WriteText("bom",
+                                                 "\xEF\xBB\xBF"
+                                                 "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
   ASSERT_EQ(relations.size(), 2u);
   EXPECT_EQ(relations[0].delta.x, 0.5);
   EXPECT_EQ(relations[0].line, 1u);
@@ -65,9 +67,7 @@ TEST(RelationsTest, RoundTripIsExact) {
   }
 }
 
-TEST(RelationsTest, EmptyFileGivesEmptyList) {
-  EXPECT_TRUE(ReadRelations(WriteText("empty", "")).empty());
-}
+TEST(RelationsTest, EmptyFileGivesEmptyList) { EXPECT_TRUE(ReadRelations(WriteText("empty", "")).empty()); }
 
 TEST(RelationsTest, WrongColumnCountNamesFileAndLine) {
   const std::string path = WriteText("cols", "1 2 0 0 0 0 0 0\n1 2 3\n");

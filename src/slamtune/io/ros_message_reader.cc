@@ -54,8 +54,8 @@ RosMessageReader::RosMessageReader(std::span<const std::uint8_t> data, MessageSe
 
 void RosMessageReader::ReadEncapsulation() {
   if (data_.size() < kEncapsulationBytes) {
-    Fail("encapsulation header", "a CDR payload of " + std::to_string(data_.size()) +
-                                     " bytes cannot hold the 4-byte encapsulation header", 0);
+    Fail("encapsulation header",
+         "a CDR payload of " + std::to_string(data_.size()) + " bytes cannot hold the 4-byte encapsulation header", 0);
   }
   const std::uint16_t kind = static_cast<std::uint16_t>(data_[0] << 8 | data_[1]);
   if (kind == 0x0001) {
@@ -180,8 +180,9 @@ std::uint32_t RosMessageReader::ReadSequenceCount(std::string_view field, std::s
   const std::uint32_t count = ReadUint32(field);
   const std::uint64_t bytes = std::uint64_t{count} * min_element_bytes;
   if (bytes > data_.size() - offset_) {
-    Fail(field, std::to_string(count) + " elements of at least " + std::to_string(min_element_bytes) +
-                    " bytes need " + std::to_string(bytes) + " bytes",
+    Fail(field,
+         std::to_string(count) + " elements of at least " + std::to_string(min_element_bytes) + " bytes need " +
+             std::to_string(bytes) + " bytes",
          offset_);
   }
   return count;

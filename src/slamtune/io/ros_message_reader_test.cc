@@ -24,9 +24,18 @@ using ::testing::ThrowsMessage;
 class Bytes {
  public:
   explicit Bytes(bool big_endian = false) : big_endian_(big_endian) {}
-  Bytes& U8(std::uint8_t v) { data.push_back(v); return *this; }
-  Bytes& Zeros(std::size_t n) { data.insert(data.end(), n, 0); return *this; }
-  Bytes& Text(const std::string& s) { data.insert(data.end(), s.begin(), s.end()); return *this; }
+  Bytes& U8(std::uint8_t v) {
+    data.push_back(v);
+    return *this;
+  }
+  Bytes& Zeros(std::size_t n) {
+    data.insert(data.end(), n, 0);
+    return *this;
+  }
+  Bytes& Text(const std::string& s) {
+    data.insert(data.end(), s.begin(), s.end());
+    return *this;
+  }
   Bytes& U32(std::uint32_t v) { return Word(v, 4); }
   Bytes& F32(float v) { return Word(std::bit_cast<std::uint32_t>(v), 4); }
   Bytes& F64(double v) { return Word(std::bit_cast<std::uint64_t>(v), 8); }
@@ -69,8 +78,8 @@ TEST(CdrEncapsulationTest, OtherKindsAreRefusedByName) {
   const struct {
     std::uint8_t b0, b1;
     const char* name;
-  } kCases[] = {{0x00, 0x07, "CDR2_LE"},   {0x00, 0x09, "D_CDR2_LE"}, {0x00, 0x0b, "PL_CDR2_LE"},
-                {0x00, 0x06, "CDR2_BE"},   {0x00, 0x03, "PL_CDR_LE"}, {0x01, 0x00, "unknown"},
+  } kCases[] = {{0x00, 0x07, "CDR2_LE"}, {0x00, 0x09, "D_CDR2_LE"}, {0x00, 0x0b, "PL_CDR2_LE"},
+                {0x00, 0x06, "CDR2_BE"}, {0x00, 0x03, "PL_CDR_LE"}, {0x01, 0x00, "unknown"},
                 {0x00, 0x11, "unknown"}};
   for (const auto& c : kCases) {
     const Bytes b = std::move(Bytes().U8(c.b0).U8(c.b1).Zeros(2).U32(1));

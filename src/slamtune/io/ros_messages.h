@@ -38,8 +38,8 @@
 namespace slamtune::io {
 
 struct RosHeader {
-  std::uint32_t seq = 0;       // ROS 1 only (0 for CDR)
-  std::int64_t stamp_ns = 0;   // sec * 1e9 + nanosec, exact (int64 end to end)
+  std::uint32_t seq = 0;      // ROS 1 only (0 for CDR)
+  std::int64_t stamp_ns = 0;  // sec * 1e9 + nanosec, exact (int64 end to end)
   std::string frame_id;
 };
 
@@ -48,8 +48,8 @@ struct LaserScanMessage {
   float angle_min = 0, angle_max = 0, angle_increment = 0;  // rad
   float time_increment = 0, scan_time = 0;                  // s
   float range_min = 0, range_max = 0;                       // m
-  std::vector<float> ranges;       // m, as recorded
-  std::vector<float> intensities;  // may be empty
+  std::vector<float> ranges;                                // m, as recorded
+  std::vector<float> intensities;                           // may be empty
 };
 
 struct RosVector3 {
@@ -60,7 +60,7 @@ struct RosQuaternion {
 };
 
 struct TransformStampedMessage {
-  RosHeader header;            // header.frame_id = parent frame
+  RosHeader header;  // header.frame_id = parent frame
   std::string child_frame_id;
   RosVector3 translation;
   RosQuaternion rotation;
@@ -71,12 +71,12 @@ struct TfMessage {
 };
 
 struct OdometryMessage {
-  RosHeader header;  // header.frame_id = odometry frame (e.g. "odom")
+  RosHeader header;            // header.frame_id = odometry frame (e.g. "odom")
   std::string child_frame_id;  // base frame (e.g. "base_footprint")
   RosVector3 position;
   RosQuaternion orientation;
   std::array<double, 36> pose_covariance{};
-  RosVector3 linear;   // twist, in the child frame
+  RosVector3 linear;  // twist, in the child frame
   RosVector3 angular;
   std::array<double, 36> twist_covariance{};
 };

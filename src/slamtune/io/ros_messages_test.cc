@@ -70,8 +70,8 @@ LaserScanMessage ExpectedScan(int k, MessageSerialization s) {
 
 // Odometry case c; case 0 is "odom" / "base_link", case 3 has each serialization's extreme stamp.
 OdometryMessage ExpectedOdom(int c, MessageSerialization s) {
-  static const char* const kFrames[4][2] = {{"odom", "base_link"}, {"", ""}, {"o", "base_footprint"},
-                                            {"map_12345", "b"}};
+  static const char* const kFrames[4][2] = {
+      {"odom", "base_link"}, {"", ""}, {"o", "base_footprint"}, {"map_12345", "b"}};
   std::int64_t sec = 1700000100 + c, nsec = 500000000 + c;
   if (c == 3) {
     sec = s == kRos1 ? 4000000000 : -2;

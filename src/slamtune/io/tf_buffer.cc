@@ -45,8 +45,8 @@ double YawOf(const Eigen::Quaterniond& q) {
 
 Pose2 ToPose2(const RigidTransform3& t) { return {t.translation.x(), t.translation.y(), YawOf(t.rotation)}; }
 
-bool TfBuffer::Add(const std::string& parent, const std::string& child, std::int64_t stamp_ns,
-                   const RigidTransform3& t, bool is_static, std::int64_t received_ns) {
+bool TfBuffer::Add(const std::string& parent, const std::string& child, std::int64_t stamp_ns, const RigidTransform3& t,
+                   bool is_static, std::int64_t received_ns) {
   // tf2 refuses rotations whose squared norm is more than 0.01 from 1, and so does this.
   const double norm2 = t.rotation.squaredNorm();
   if (!std::isfinite(norm2) || std::fabs(norm2 - 1.0) > 0.01 || !t.translation.allFinite()) {
@@ -94,8 +94,8 @@ TfLookup TfBuffer::EdgeAt(const std::string& child, const Edge& edge, std::int64
                           std::int64_t max_gap_ns) const {
   if (edge.is_static) return {edge.samples.front().transform, ""};
   const auto& s = edge.samples;
-  auto after = std::lower_bound(s.begin(), s.end(), stamp_ns,
-                                [](const Sample& a, std::int64_t t) { return a.stamp_ns < t; });
+  auto after =
+      std::lower_bound(s.begin(), s.end(), stamp_ns, [](const Sample& a, std::int64_t t) { return a.stamp_ns < t; });
   if (after != s.end() && after->stamp_ns == stamp_ns) return {after->transform, ""};
   if (after == s.begin() || after == s.end()) {
     return {std::nullopt, fmt::format("{} -> {} at {}: outside its samples ({} .. {})", edge.parent, child,

@@ -1,9 +1,9 @@
 #include "slamtune/io/trajectory.h"
 
+#include <fmt/format.h>
+
 #include <iterator>
 #include <unordered_map>
-
-#include <fmt/format.h>
 
 #include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"

@@ -2,11 +2,10 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-
-#include <unistd.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
@@ -88,7 +87,9 @@ TEST(TrajectoryTest, AnExactlyRepeatedPoseIsReadOnce) {
 }
 
 TEST(TrajectoryTest, ByteOrderMarkDoesNotHideTheFirstPose) {
-  const auto poses = ReadTrajectory(WriteText("bom", "\xEF\xBB\xBF" "1 0.5 0 0\n2 1 0 0\n"));
+  const auto poses = ReadTrajectory(WriteText("bom",
+                                              "\xEF\xBB\xBF"
+                                              "1 0.5 0 0\n2 1 0 0\n"));
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[0].pose.x, 0.5);
 }

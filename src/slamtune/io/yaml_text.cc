@@ -12,8 +12,8 @@ std::size_t YamlLine(const YAML::Node& node) {
 
 std::string YamlScalarText(const YAML::Node& node, const std::string& source, std::string_view what) {
   if (node.IsMap() || node.IsSequence()) {
-    throw InputError(source, YamlLine(node), fmt::format("{} must be plain text, not a YAML {}", what,
-                                                          node.IsMap() ? "map" : "sequence"));
+    throw InputError(source, YamlLine(node),
+                     fmt::format("{} must be plain text, not a YAML {}", what, node.IsMap() ? "map" : "sequence"));
   }
   return node.as<std::string>();
 }

@@ -23,7 +23,7 @@
 namespace slamtune::metrics {
 
 struct GtErrorOptions {
-  double time_tolerance_s = 1e-5;       // s; a pose matches a relation timestamp within this
+  double time_tolerance_s = 1e-5;        // s; a pose matches a relation timestamp within this
   std::size_t max_missing_examples = 5;  // relations with unknown timestamps named in the result
 
   // Throws InputError naming the field if time_tolerance_s is negative or not finite.

@@ -47,8 +47,8 @@ TEST(GtErrorTest, TrajectoryEqualToTheTruthHasZeroError) {
 }
 
 TEST(GtErrorTest, KnownPerturbationGivesTheHandComputedValues) {
-  const std::vector<io::TimedPose> estimate = {{1.0, {0, 0, 0}}, {2.0, {1.1, 0.2, 0.1}}, {3.0, {5, 5, 0}},
-                                               {4.0, {6, 5, kPi / 2}}};
+  const std::vector<io::TimedPose> estimate = {
+      {1.0, {0, 0, 0}}, {2.0, {1.1, 0.2, 0.1}}, {3.0, {5, 5, 0}}, {4.0, {6, 5, kPi / 2}}};
   const std::vector<io::Relation> relations = {
       // delta (1,0,0) vs estimate (1.1,0.2,0.1): err = (0.1, 0.2, 0.1 rad).
       {1.0, 2.0, {1.0, 0.0, 0.0}, 1},
@@ -72,17 +72,14 @@ TEST(GtErrorTest, KnownPerturbationGivesTheHandComputedValues) {
 
 TEST(GtErrorTest, MissingTimestampsAreCountedAndNamed) {
   const std::vector<io::TimedPose> estimate = {{10.0, {}}, {11.0, {1, 0, 0}}};
-  const std::vector<io::Relation> relations = {{10.0, 11.0, {1, 0, 0}, 1},
-                                               {10.0, 12.5, {1, 0, 0}, 2},
-                                               {9.0, 12.5, {1, 0, 0}, 3},
-                                               {9.5, 11.0, {1, 0, 0}, 0}};
+  const std::vector<io::Relation> relations = {
+      {10.0, 11.0, {1, 0, 0}, 1}, {10.0, 12.5, {1, 0, 0}, 2}, {9.0, 12.5, {1, 0, 0}, 3}, {9.5, 11.0, {1, 0, 0}, 0}};
   const GtError e = ComputeGtError(estimate, relations);
   EXPECT_EQ(e.relations_used, 1u);
   EXPECT_EQ(e.relations_missing, 3u);
-  EXPECT_THAT(e.missing_examples,
-              ElementsAre("line 2: t2 12.500000 not in the trajectory",
-                          "line 3: t1 9.000000 and t2 12.500000 not in the trajectory",
-                          "t1 9.500000 not in the trajectory"));
+  EXPECT_THAT(e.missing_examples, ElementsAre("line 2: t2 12.500000 not in the trajectory",
+                                              "line 3: t1 9.000000 and t2 12.500000 not in the trajectory",
+                                              "t1 9.500000 not in the trajectory"));
   EXPECT_EQ(e.trans_std_m, 0.0);  // one relation used
   GtErrorOptions few;
   few.max_missing_examples = 1;
@@ -91,8 +88,8 @@ TEST(GtErrorTest, MissingTimestampsAreCountedAndNamed) {
 
 TEST(GtErrorTest, TimestampsMatchWithinTheTolerance) {
   // Relations with 5 decimals against a log with 6 (mit-csail).
-  const std::vector<io::TimedPose> estimate = {{1134864643.124184, {}}, {1134864643.124199, {9, 9, 0}},
-                                               {1134864650.000000, {1, 0, 0}}};
+  const std::vector<io::TimedPose> estimate = {
+      {1134864643.124184, {}}, {1134864643.124199, {9, 9, 0}}, {1134864650.000000, {1, 0, 0}}};
   const std::vector<io::Relation> relations = {{1134864643.12418, 1134864650.0, {1, 0, 0}, 1}};
   const GtError e = ComputeGtError(estimate, relations);
   EXPECT_EQ(e.relations_used, 1u);

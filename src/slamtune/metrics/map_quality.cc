@@ -19,8 +19,8 @@ constexpr int kMaxKernel = 31;  // px; larger windows blur whole rooms together
 cv::Mat ClassLut(const io::MapImage& map, io::CellClass wanted) {
   cv::Mat lut(1, 256, CV_8UC1);
   for (int v = 0; v < 256; ++v) {
-    const bool hit = io::ClassifyGrey(static_cast<std::uint8_t>(v), map.negate, map.occupied_thresh,
-                                      map.free_thresh) == wanted;
+    const bool hit =
+        io::ClassifyGrey(static_cast<std::uint8_t>(v), map.negate, map.occupied_thresh, map.free_thresh) == wanted;
     lut.at<std::uint8_t>(v) = hit ? 255 : 0;
   }
   return lut;
@@ -62,10 +62,11 @@ void MapQualityOptions::Validate() const {
 }
 
 std::string BriefReport(const MapQuality& q) {
-  return fmt::format("{}x{} cells: eta {:.6f} (known {:.6f}), n_c {} corner pixels ({} clusters), "
-                     "n_e {} enclosed areas ({} contours); {}",
-                     q.width, q.height, q.occupied_ratio, q.occupied_ratio_known, q.corner_pixels, q.corners,
-                     q.enclosed_areas, q.contours, q.message);
+  return fmt::format(
+      "{}x{} cells: eta {:.6f} (known {:.6f}), n_c {} corner pixels ({} clusters), "
+      "n_e {} enclosed areas ({} contours); {}",
+      q.width, q.height, q.occupied_ratio, q.occupied_ratio_known, q.corner_pixels, q.corners, q.enclosed_areas,
+      q.contours, q.message);
 }
 
 MapQualityDetail AnalyseMapQuality(const io::MapImage& map, const MapQualityOptions& options) {
@@ -111,8 +112,8 @@ MapQualityDetail AnalyseMapQuality(const io::MapImage& map, const MapQualityOpti
   const HarrisTiles response =
       TiledHarrisResponse(smoothed, options.harris_block_size, options.harris_aperture, options.harris_k);
   // Only pixels of the map count (the padding outside the map image is not part of it).
-  const cv::Rect in_map = cv::Rect(-to_map.x, -to_map.y, map.width, map.height) &
-                          cv::Rect(0, 0, walls.cols, walls.rows);
+  const cv::Rect in_map =
+      cv::Rect(-to_map.x, -to_map.y, map.width, map.height) & cv::Rect(0, 0, walls.cols, walls.rows);
   detail.corner_window = in_map + to_map;
   const double max_response = response.MaxIn(in_map);
   q.max_corner_response = max_response;
@@ -126,8 +127,8 @@ MapQualityDetail AnalyseMapQuality(const io::MapImage& map, const MapQualityOpti
     std::vector<std::vector<cv::Point>> clusters;
     cv::findContours(detail.corner_mask, clusters, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
     q.corners = static_cast<int>(clusters.size());
-    q.message = fmt::format("walls within a {}x{} box; corner threshold {:.4g} = {} x largest response",
-                            window.width, window.height, threshold, options.corner_threshold);
+    q.message = fmt::format("walls within a {}x{} box; corner threshold {:.4g} = {} x largest response", window.width,
+                            window.height, threshold, options.corner_threshold);
   } else {
     detail.corner_mask = cv::Mat::zeros(in_map.size(), CV_8UC1);
     q.message = "walls without any positive Harris response: no corners";

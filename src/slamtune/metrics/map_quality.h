@@ -22,10 +22,9 @@
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "slamtune/io/map_image.h"
 
@@ -54,9 +53,9 @@ struct MapQualityOptions {
 
 // The figures for one map (all counts in cells / pixels of the map image).
 struct MapQuality {
-  int width = 0;              // cells
-  int height = 0;             // cells
-  double resolution = 0.0;    // m per cell, as given by the map
+  int width = 0;            // cells
+  int height = 0;           // cells
+  double resolution = 0.0;  // m per cell, as given by the map
   std::int64_t occupied_cells = 0;
   std::int64_t free_cells = 0;
   std::int64_t unknown_cells = 0;

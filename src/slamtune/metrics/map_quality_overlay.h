@@ -4,9 +4,8 @@
 // each cluster, and the figures in a caption.
 #pragma once
 
-#include <string>
-
 #include <opencv2/core.hpp>
+#include <string>
 
 #include "slamtune/io/map_image.h"
 #include "slamtune/metrics/map_quality.h"

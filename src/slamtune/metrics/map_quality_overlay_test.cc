@@ -28,10 +28,10 @@ TEST(MapQualityOverlayTest, ShowsWallsAreasCornersAndUnknown) {
   ASSERT_EQ(overlay.type(), CV_8UC3);
   EXPECT_EQ(overlay.cols, 100 * scale);
   EXPECT_EQ(overlay.rows, 80 * scale + 22);
-  EXPECT_EQ(At(overlay, scale, 5, 5), cv::Vec3b(170, 170, 170));     // unknown
-  EXPECT_EQ(At(overlay, scale, 49, 25), cv::Vec3b(0, 0, 0));         // middle of the top wall
-  EXPECT_EQ(At(overlay, scale, 49, 39), cv::Vec3b(230, 180, 120));   // the enclosed area's colour
-  EXPECT_EQ(At(overlay, scale, 30, 25), cv::Vec3b(0, 0, 230));       // a corner cell is red
+  EXPECT_EQ(At(overlay, scale, 5, 5), cv::Vec3b(170, 170, 170));    // unknown
+  EXPECT_EQ(At(overlay, scale, 49, 25), cv::Vec3b(0, 0, 0));        // middle of the top wall
+  EXPECT_EQ(At(overlay, scale, 49, 39), cv::Vec3b(230, 180, 120));  // the enclosed area's colour
+  EXPECT_EQ(At(overlay, scale, 30, 25), cv::Vec3b(0, 0, 230));      // a corner cell is red
   cv::Mat red;
   cv::inRange(overlay, cv::Scalar(0, 0, 230), cv::Scalar(0, 0, 230), red);
   EXPECT_GE(cv::countNonZero(red), detail.quality.corner_pixels * scale * scale);

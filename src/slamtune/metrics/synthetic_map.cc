@@ -36,8 +36,10 @@ io::MapImage DrawSyntheticRooms(int width, int height, const std::vector<Synthet
   }
   for (const SyntheticRoom& room : rooms) {
     if (!(room.width >= 3.0 && room.height >= 3.0)) {
-      throw InputError(fmt::format("synthetic room {} x {} cells: both sides must be >= 3 cells (wall, "
-                                   "inside, wall)", room.width, room.height));
+      throw InputError(
+          fmt::format("synthetic room {} x {} cells: both sides must be >= 3 cells (wall, "
+                      "inside, wall)",
+                      room.width, room.height));
     }
   }
   io::MapImage map;

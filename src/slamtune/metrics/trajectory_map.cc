@@ -1,8 +1,8 @@
 #include "slamtune/metrics/trajectory_map.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "slamtune/common/error.h"
 #include "slamtune/slam/log_runner.h"

@@ -28,8 +28,8 @@
 namespace slamtune::metrics {
 
 struct TrajectoryMapOptions {
-  double min_travel_m = 0.10;   // m of odometric travel between drawn scans
-  double min_turn_rad = 0.10;   // rad of odometric turning between drawn scans
+  double min_travel_m = 0.10;  // m of odometric travel between drawn scans
+  double min_turn_rad = 0.10;  // rad of odometric turning between drawn scans
 
   // Throws InputError naming the field: both finite and >= 0.
   void Validate() const;

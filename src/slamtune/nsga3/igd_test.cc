@@ -1,9 +1,9 @@
 #include "slamtune/nsga3/igd.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numeric>
-
-#include <gtest/gtest.h>
 
 #include "slamtune/nsga3/reference_points.h"
 

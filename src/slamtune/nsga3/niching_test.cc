@@ -1,10 +1,10 @@
 #include "slamtune/nsga3/niching.h"
 
-#include <cmath>
-#include <set>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
 
 namespace slamtune::nsga3 {
 namespace {

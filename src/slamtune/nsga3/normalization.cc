@@ -1,11 +1,11 @@
 #include "slamtune/nsga3/normalization.h"
 
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Dense>
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 
@@ -37,9 +37,9 @@ std::size_t ExtremePoint(const std::vector<std::vector<double>>& candidates, con
 
 // Intercepts of the hyperplane through the translated extreme points (§IV-C), or the reason
 // they cannot be used.
-std::string HyperplaneIntercepts(const std::vector<std::vector<double>>& candidates,
-                                 const std::vector<double>& ideal, const std::vector<std::size_t>& extremes,
-                                 double min_intercept, std::vector<double>* intercepts) {
+std::string HyperplaneIntercepts(const std::vector<std::vector<double>>& candidates, const std::vector<double>& ideal,
+                                 const std::vector<std::size_t>& extremes, double min_intercept,
+                                 std::vector<double>* intercepts) {
   const std::size_t m = ideal.size();
   for (std::size_t j = 0; j < m; ++j) {
     for (std::size_t k = j + 1; k < m; ++k) {
@@ -77,12 +77,12 @@ std::string HyperplaneIntercepts(const std::vector<std::vector<double>>& candida
 
 void NormalizationOptions::Validate() const {
   if (!(asf_off_axis_weight > 0.0 && asf_off_axis_weight < 1.0)) {
-    throw InputError(fmt::format("normalization.asf_off_axis_weight = {} is invalid, must be in (0, 1)",
-                                 asf_off_axis_weight));
+    throw InputError(
+        fmt::format("normalization.asf_off_axis_weight = {} is invalid, must be in (0, 1)", asf_off_axis_weight));
   }
   if (!(min_intercept >= 0.0) || !std::isfinite(min_intercept)) {
-    throw InputError(fmt::format("normalization.min_intercept = {} is invalid, must be finite and >= 0",
-                                 min_intercept));
+    throw InputError(
+        fmt::format("normalization.min_intercept = {} is invalid, must be finite and >= 0", min_intercept));
   }
 }
 

@@ -1,11 +1,11 @@
 #include "slamtune/nsga3/nsga3.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/nsga3/nsga3_evaluation.h"
@@ -31,8 +31,8 @@ void CheckProblem(const pagmo::problem& prob) {
   const auto& [lower, upper] = prob.get_bounds();
   for (std::size_t i = 0; i < lower.size(); ++i) {
     if (!std::isfinite(lower[i]) || !std::isfinite(upper[i])) {
-      throw InputError(fmt::format("problem '{}' bound {} is [{}, {}]; NSGA-III's operators need finite bounds",
-                                   name, i, lower[i], upper[i]));
+      throw InputError(fmt::format("problem '{}' bound {} is [{}, {}]; NSGA-III's operators need finite bounds", name,
+                                   i, lower[i], upper[i]));
     }
   }
 }
@@ -41,10 +41,10 @@ void CheckProblem(const pagmo::problem& prob) {
 void CheckPopulation(const pagmo::population& pop, std::size_t required_size) {
   const pagmo::problem& prob = pop.get_problem();
   if (pop.size() != required_size) {
-    throw InputError(fmt::format(
-        "the population has {} members but NSGA-III is configured for N = {} (nsga3.population_size; 0 = "
-        "smallest multiple of 4 >= the number of reference points)",
-        pop.size(), required_size));
+    throw InputError(
+        fmt::format("the population has {} members but NSGA-III is configured for N = {} (nsga3.population_size; 0 = "
+                    "smallest multiple of 4 >= the number of reference points)",
+                    pop.size(), required_size));
   }
   const std::size_t nx = prob.get_nx(), nix = prob.get_nix();
   for (std::size_t k = 0; k < pop.size(); ++k) {
@@ -84,9 +84,10 @@ const char* ToString(StopReason reason) {
 }
 
 std::string Nsga3Summary::BriefReport() const {
-  return fmt::format("NSGA-III: {} generation(s), {}; {} evaluation(s), {} duplicate(s) skipped, {} "
-                     "normalisation fall-back(s)",
-                     generations_run, ToString(stop_reason), evaluations, duplicates_skipped, hyperplane_rejections);
+  return fmt::format(
+      "NSGA-III: {} generation(s), {}; {} evaluation(s), {} duplicate(s) skipped, {} "
+      "normalisation fall-back(s)",
+      generations_run, ToString(stop_reason), evaluations, duplicates_skipped, hyperplane_rejections);
 }
 
 Nsga3::Nsga3() : Nsga3(Nsga3Options{}) {}
@@ -129,10 +130,10 @@ void Nsga3::RestoreRngState(const std::string& state) {
 
 std::string Nsga3::get_extra_info() const {
   const auto& v = options_.variation;
-  std::string refs = options_.reference_points.empty()
-                         ? fmt::format("Das-Dennis, divisions {} (inner {})", options_.divisions,
-                                       options_.inner_divisions)
-                         : fmt::format("{} user-supplied", options_.reference_points.size());
+  std::string refs =
+      options_.reference_points.empty()
+          ? fmt::format("Das-Dennis, divisions {} (inner {})", options_.divisions, options_.inner_divisions)
+          : fmt::format("{} user-supplied", options_.reference_points.size());
   return fmt::format(
       "\tGenerations: {}\n\tReference points: {}\n\tPopulation size: {}\n\tCrossover: SBX p_c = {}, eta_c = {}\n"
       "\tMutation: polynomial p_m = {}, eta_m = {}\n\tNormalisation: ASF off-axis weight {}, min intercept {}\n"

@@ -27,13 +27,12 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
-#include <random>
-#include <string>
-#include <vector>
-
 #include <pagmo/bfe.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/rng.hpp>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "slamtune/nsga3/normalization.h"
 #include "slamtune/nsga3/nsga3_options.h"
@@ -42,14 +41,14 @@ namespace slamtune::nsga3 {
 
 // One generation of a run.
 struct GenerationRecord {
-  unsigned generation = 0;               // 1-based, counted within one evolve() call
-  unsigned long long evaluations = 0;    // the problem's fitness evaluations so far (get_fevals)
-  std::size_t new_evaluations = 0;       // genotypes evaluated in this generation
-  std::size_t duplicates_skipped = 0;    // offspring whose fitness was copied, not evaluated
-  std::size_t fronts_used = 0;           // fronts that entered S_t
-  std::size_t niched = 0;                // survivors chosen by niching from the last front
-  std::vector<NadirSource> nadir_source; // per objective; empty when S_t fit exactly
-  std::vector<double> ideal;             // ideal point over all generations so far (§IV-C)
+  unsigned generation = 0;                // 1-based, counted within one evolve() call
+  unsigned long long evaluations = 0;     // the problem's fitness evaluations so far (get_fevals)
+  std::size_t new_evaluations = 0;        // genotypes evaluated in this generation
+  std::size_t duplicates_skipped = 0;     // offspring whose fitness was copied, not evaluated
+  std::size_t fronts_used = 0;            // fronts that entered S_t
+  std::size_t niched = 0;                 // survivors chosen by niching from the last front
+  std::vector<NadirSource> nadir_source;  // per objective; empty when S_t fit exactly
+  std::vector<double> ideal;              // ideal point over all generations so far (§IV-C)
   // Population after survival. Always set in the record handed to the callback; kept in
   // history() only when Nsga3Options::record_history is true.
   std::vector<std::vector<double>> x;

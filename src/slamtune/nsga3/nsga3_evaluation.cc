@@ -1,11 +1,11 @@
 #include "slamtune/nsga3/nsga3_evaluation.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <cmath>
 #include <limits>
 #include <map>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "slamtune/common/error.h"
 

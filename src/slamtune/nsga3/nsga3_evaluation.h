@@ -13,10 +13,9 @@
 
 #include <cstddef>
 #include <optional>
-#include <vector>
-
 #include <pagmo/bfe.hpp>
 #include <pagmo/problem.hpp>
+#include <vector>
 
 namespace slamtune::nsga3 {
 

@@ -1,8 +1,8 @@
 #include "slamtune/nsga3/nsga3_options.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "slamtune/common/error.h"
 
@@ -16,8 +16,8 @@ void Nsga3Options::Validate() const {
     ValidateReferencePoints(reference_points, reference_points.front().size(), "nsga3.reference_points");
   }
   if (population_size != 0 && population_size < 4) {
-    throw InputError(fmt::format(
-        "nsga3.population_size = {} is invalid, must be >= 4 (or 0 for the paper's rule)", population_size));
+    throw InputError(fmt::format("nsga3.population_size = {} is invalid, must be >= 4 (or 0 for the paper's rule)",
+                                 population_size));
   }
   variation.Validate();
   normalization.Validate();

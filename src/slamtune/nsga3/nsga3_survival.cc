@@ -45,8 +45,7 @@ SurvivalResult SelectSurvivors(const std::vector<std::vector<double>>& objective
   std::vector<std::size_t> last_front;
   for (std::size_t k = accepted; k < s_t.size(); ++k) last_front.push_back(k);
   result.niched = n - accepted;
-  const NicheSelection selection =
-      SelectByNiching(result.niched, std::move(niche_count), last_front, association, rng);
+  const NicheSelection selection = SelectByNiching(result.niched, std::move(niche_count), last_front, association, rng);
   result.excluded_references = selection.excluded_references;
   result.survivors.assign(s_t.begin(), s_t.begin() + static_cast<std::ptrdiff_t>(accepted));
   for (std::size_t k : selection.chosen) result.survivors.push_back(s_t[k]);

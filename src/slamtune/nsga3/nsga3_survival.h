@@ -21,11 +21,11 @@ namespace slamtune::nsga3 {
 
 // What the survival step did and why.
 struct SurvivalResult {
-  std::vector<std::size_t> survivors;  // indices into the combined population, N of them
-  std::size_t fronts_used = 0;         // l: the fronts that entered S_t
-  std::size_t last_front_size = 0;     // |F_l|
-  std::size_t niched = 0;              // K: members of F_l chosen by niching (0 if S_t fit exactly)
-  std::size_t excluded_references = 0; // reference points excluded during niching
+  std::vector<std::size_t> survivors;          // indices into the combined population, N of them
+  std::size_t fronts_used = 0;                 // l: the fronts that entered S_t
+  std::size_t last_front_size = 0;             // |F_l|
+  std::size_t niched = 0;                      // K: members of F_l chosen by niching (0 if S_t fit exactly)
+  std::size_t excluded_references = 0;         // reference points excluded during niching
   std::optional<Normalization> normalization;  // set when niching ran
 };
 

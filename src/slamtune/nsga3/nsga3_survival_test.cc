@@ -42,7 +42,7 @@ TEST(SelectSurvivors, LastFrontIsSplitByNiching) {
 TEST(SelectSurvivors, NichingSpreadsTheLastFrontOverTheReferenceLines) {
   // One front of 7 points on the line f0 + f1 = 1; 3 survivors must cover the three lines:
   // the two ends and the point nearest (0.5, 0.5).
-  const std::vector<std::vector<double>> f = {{0, 1},     {0.1, 0.9}, {0.3, 0.7}, {0.45, 0.55},
+  const std::vector<std::vector<double>> f = {{0, 1},     {0.1, 0.9},   {0.3, 0.7}, {0.45, 0.55},
                                               {0.8, 0.2}, {0.95, 0.05}, {1, 0}};
   std::mt19937 rng(4);
   const SurvivalResult r = SelectSurvivors(f, 3, kRefs2d, NormalizationOptions{}, rng);

@@ -1,16 +1,16 @@
 #include "slamtune/nsga3/nsga3.h"
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <set>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 #include <pagmo/algorithm.hpp>
 #include <pagmo/batch_evaluators/thread_bfe.hpp>
 #include <pagmo/problems/dtlz.hpp>
 #include <pagmo/utils/multi_objective.hpp>
+#include <set>
 
 #include "slamtune/common/error.h"
 #include "slamtune/nsga3/igd.h"
@@ -191,8 +191,7 @@ TEST(Nsga3Evolve, ScaledObjectivesDoNotBiasTheFront) {
   Nsga3 plain(Generations(kDtlz2Generations), 3);
   Nsga3 scaled(Generations(kDtlz2Generations), 3);
   const double igd_plain = SphereIgd(plain.evolve(pagmo::population(Dtlz2(), 92, 3)).get_f());
-  std::vector<pagmo::vector_double> f =
-      scaled.evolve(pagmo::population(pagmo::problem(ScaledDtlz2{}), 92, 3)).get_f();
+  std::vector<pagmo::vector_double> f = scaled.evolve(pagmo::population(pagmo::problem(ScaledDtlz2{}), 92, 3)).get_f();
   for (auto& p : f) {
     for (std::size_t i = 0; i < p.size(); ++i) p[i] /= std::pow(10.0, static_cast<double>(i));
   }

@@ -1,11 +1,11 @@
 #include "slamtune/nsga3/reference_points.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <pagmo/utils/multi_objective.hpp>
 #include <random>
 #include <string>
-
-#include <fmt/format.h>
-#include <pagmo/utils/multi_objective.hpp>
 
 #include "slamtune/common/error.h"
 
@@ -69,20 +69,19 @@ void ValidateReferencePoints(const ReferencePoints& points, std::size_t objectiv
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::vector<double>& w = points[i];
     if (w.size() != objectives) {
-      throw InputError(fmt::format("{}[{}] has {} components, the problem has {} objectives", field, i,
-                                   w.size(), objectives));
+      throw InputError(
+          fmt::format("{}[{}] has {} components, the problem has {} objectives", field, i, w.size(), objectives));
     }
     double sum = 0.0;
     for (double component : w) {
       if (!std::isfinite(component) || component < 0.0) {
-        throw InputError(fmt::format("{}[{}] has component {}, every component must be finite and >= 0",
-                                     field, i, component));
+        throw InputError(
+            fmt::format("{}[{}] has component {}, every component must be finite and >= 0", field, i, component));
       }
       sum += component;
     }
     if (!(sum > 0.0)) {
-      throw InputError(fmt::format("{}[{}] is the zero vector, a reference direction needs a positive sum",
-                                   field, i));
+      throw InputError(fmt::format("{}[{}] is the zero vector, a reference direction needs a positive sum", field, i));
     }
   }
 }

@@ -1,10 +1,10 @@
 #include "slamtune/nsga3/reference_points.h"
 
-#include <cmath>
-#include <set>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
 
 #include "slamtune/common/error.h"
 
@@ -79,14 +79,26 @@ TEST(ValidateReferencePoints, AcceptsDirectionsOffTheSimplex) {
 TEST(ValidateReferencePoints, RejectsBadPointsNamingFieldAndIndex) {
   EXPECT_THAT([] { ValidateReferencePoints({}, 2, "refs"); },
               testing::ThrowsMessage<InputError>(HasSubstr("refs: no reference points")));
-  EXPECT_THAT([] { ValidateReferencePoints({{1.0, 0.0}, {1.0, 0.0, 0.0}}, 2, "refs"); },
-              testing::ThrowsMessage<InputError>(HasSubstr("refs[1] has 3 components, the problem has 2")));
-  EXPECT_THAT([] { ValidateReferencePoints({{1.0, -0.5}}, 2, "refs"); },
-              testing::ThrowsMessage<InputError>(HasSubstr("refs[0] has component -0.5")));
-  EXPECT_THAT([] { ValidateReferencePoints({{1.0, NAN}}, 2, "refs"); },
-              testing::ThrowsMessage<InputError>(HasSubstr("must be finite")));
-  EXPECT_THAT([] { ValidateReferencePoints({{0.0, 0.0}}, 2, "refs"); },
-              testing::ThrowsMessage<InputError>(HasSubstr("refs[0] is the zero vector")));
+  EXPECT_THAT(
+      [] {
+        ValidateReferencePoints({{1.0, 0.0}, {1.0, 0.0, 0.0}}, 2, "refs");
+      },
+      testing::ThrowsMessage<InputError>(HasSubstr("refs[1] has 3 components, the problem has 2")));
+  EXPECT_THAT(
+      [] {
+        ValidateReferencePoints({{1.0, -0.5}}, 2, "refs");
+      },
+      testing::ThrowsMessage<InputError>(HasSubstr("refs[0] has component -0.5")));
+  EXPECT_THAT(
+      [] {
+        ValidateReferencePoints({{1.0, NAN}}, 2, "refs");
+      },
+      testing::ThrowsMessage<InputError>(HasSubstr("must be finite")));
+  EXPECT_THAT(
+      [] {
+        ValidateReferencePoints({{0.0, 0.0}}, 2, "refs");
+      },
+      testing::ThrowsMessage<InputError>(HasSubstr("refs[0] is the zero vector")));
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 #include "slamtune/nsga3/variation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 #include <pagmo/utils/genetic_operators.hpp>
 
 #include "slamtune/common/error.h"
@@ -40,8 +40,8 @@ void RepairIntegers(std::vector<double>& x, const Bounds& bounds, std::size_t ni
 }
 
 std::vector<std::vector<double>> MakeOffspring(const std::vector<std::vector<double>>& parents, std::size_t count,
-                                               const Bounds& bounds, std::size_t nix,
-                                               const VariationOptions& options, std::mt19937& rng) {
+                                               const Bounds& bounds, std::size_t nix, const VariationOptions& options,
+                                               std::mt19937& rng) {
   SLAMTUNE_CHECK(!parents.empty());
   const std::size_t n = bounds.first.size();
   const double mutation_probability = options.MutationProbability(n);

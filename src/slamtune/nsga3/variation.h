@@ -48,7 +48,7 @@ void RepairIntegers(std::vector<double>& x, const Bounds& bounds, std::size_t ni
 // more), SBX, polynomial mutation, RepairIntegers. Pairs give two children; an odd count
 // drops the last one. Deterministic for a given `rng` state. `options` must be valid.
 std::vector<std::vector<double>> MakeOffspring(const std::vector<std::vector<double>>& parents, std::size_t count,
-                                               const Bounds& bounds, std::size_t nix,
-                                               const VariationOptions& options, std::mt19937& rng);
+                                               const Bounds& bounds, std::size_t nix, const VariationOptions& options,
+                                               std::mt19937& rng);
 
 }  // namespace slamtune::nsga3

@@ -1,10 +1,10 @@
 #include "slamtune/nsga3/variation.h"
 
-#include <cmath>
-#include <set>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
 
 #include "slamtune/common/error.h"
 

@@ -84,7 +84,7 @@ class BatchEvaluator {
   int jobs_;
   RemoteEvaluators* remote_ = nullptr;
   mutable std::mutex mutex_;
-  std::mutex progress_mutex_;  // serialises progress callbacks
+  std::mutex progress_mutex_;                       // serialises progress callbacks
   std::map<std::string, EvaluationRecord> memory_;  // cache when there is no store
   BatchEvaluatorStats stats_;
   std::function<void(const EvaluationRecord&, const BatchEvaluatorStats&)> progress_;

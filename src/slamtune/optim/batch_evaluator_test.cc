@@ -1,6 +1,4 @@
 #include "slamtune/optim/batch_evaluator.h"
-#include "slamtune/optim/objective_set.h"
-#include "slamtune/common/testing/temp_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +7,9 @@
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
+
+#include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/optim/objective_set.h"
 
 namespace slamtune::optim {
 namespace {

@@ -203,9 +203,8 @@ VerdictSummary Verdict(const EvaluationRecord& rec, const EvaluationRecord& base
             fmt::format("The recommendation gives a cleaner map than {} ({}; {}).", label, detail, loops)};
   }
   if (better == 0) {
-    return {VerdictKind::kWorse,
-            fmt::format("{} score{} better than the recommendation on this log ({}; {}).", label,
-                        label.ends_with("defaults") ? "" : "s", detail, loops)};
+    return {VerdictKind::kWorse, fmt::format("{} score{} better than the recommendation on this log ({}; {}).", label,
+                                             label.ends_with("defaults") ? "" : "s", detail, loops)};
   }
   return {VerdictKind::kMixed,
           fmt::format("Mixed: the recommendation is better on some objectives and worse on others ({}; {}).", detail,

@@ -58,8 +58,8 @@ std::size_t Knee(const std::vector<EvaluationRecord>& records, const ObjectiveSe
 std::size_t Worst(const std::vector<EvaluationRecord>& records, const ObjectiveSet& objectives);
 
 struct VerdictOptions {
-  ObjectiveSet objectives;              // what is compared
-  double equivalence_tolerance = 0.05;  // relative difference per objective treated as no difference
+  ObjectiveSet objectives;                           // what is compared
+  double equivalence_tolerance = 0.05;               // relative difference per objective treated as no difference
   std::string base_label = "slam_karto's defaults";  // what the recommendation is compared with
 };
 

@@ -49,9 +49,8 @@ TEST(CandidateSelection, AFailedRunsScoreDoesNotDecideBetweenRealMaps) {
 }
 
 TEST(CandidateSelection, FrontKneeAndWorst) {
-  const std::vector<EvaluationRecord> all{R("lo-eta", 0.01, 300, 9), R("mid", 0.02, 120, 4),
-                                          R("lo-nc", 0.05, 100, 8), R("bad", 0.06, 400, 12),
-                                          EvaluationRecord::Failed("f", {}, "x")};
+  const std::vector<EvaluationRecord> all{R("lo-eta", 0.01, 300, 9), R("mid", 0.02, 120, 4), R("lo-nc", 0.05, 100, 8),
+                                          R("bad", 0.06, 400, 12), EvaluationRecord::Failed("f", {}, "x")};
   const auto front = NonDominated(all, kPaper);
   EXPECT_EQ(front, (std::vector<std::size_t>{0, 1, 2}));
   EXPECT_EQ(all[Knee(all, kPaper)].key, "mid");

@@ -66,8 +66,8 @@ std::optional<EquivalentRegion> FindEquivalentRegion(const std::vector<Evaluatio
   region.loop_closures = recommended.loop_closures;
   region.evaluated = runs.size();
   for (const Dimension& d : space.dimensions) {
-    region.ranges.push_back({d.name, std::numeric_limits<double>::infinity(),
-                             -std::numeric_limits<double>::infinity(), d.integer});
+    region.ranges.push_back(
+        {d.name, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), d.integer});
   }
   for (const EvaluationRecord* r : runs) {
     if (r->loop_closures != recommended.loop_closures) continue;

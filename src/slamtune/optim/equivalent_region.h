@@ -36,9 +36,9 @@ struct ParameterRange {
 
 struct EquivalentRegion {
   double tolerance = kEquivalentTolerance;
-  int loop_closures = 0;      // the recommendation's, shared by every member
-  std::size_t members = 0;    // distinct parameter sets equivalent to the recommendation (itself included)
-  std::size_t evaluated = 0;  // distinct parameter sets whose run succeeded
+  int loop_closures = 0;               // the recommendation's, shared by every member
+  std::size_t members = 0;             // distinct parameter sets equivalent to the recommendation (itself included)
+  std::size_t evaluated = 0;           // distinct parameter sets whose run succeeded
   std::vector<ParameterRange> ranges;  // one per searched parameter
 
   // "loop_search_maximum_distance in [3.2, 4.6], loop_match_minimum_chain_size in [8, 14] give an

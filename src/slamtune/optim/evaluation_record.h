@@ -5,9 +5,8 @@
 // evaluation in the run's SQLite database, so it converts to and from JSON.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,23 +23,23 @@ const char* NameOf(RunStatus status);
 RunStatus ParseRunStatus(std::string_view name);
 
 struct EvaluationRecord {
-  std::string key;                        // SearchSpace::Key of the full assignment
-  std::map<std::string, double> params;   // ROS name -> value (varied and fixed)
+  std::string key;                       // SearchSpace::Key of the full assignment
+  std::map<std::string, double> params;  // ROS name -> value (varied and fixed)
   RunStatus status = RunStatus::kOk;
-  std::string reason;                     // why it failed (exception text, NaN, ...)
+  std::string reason;  // why it failed (exception text, NaN, ...)
 
   // Map figures (metrics/map_quality.h, slam/occupancy_grid.h); objective_set.h picks the
   // objectives among them.
-  double occupied_ratio = 0.0;        // eta
-  double corner_pixels = 0.0;         // n_c (objective)
-  double enclosed_areas = 0.0;        // n_e
-  double occupied_ratio_known = 0.0;  // occupied / (occupied + free)
-  double corners = 0.0;               // 8-connected corner clusters
-  double contours = 0.0;              // all contours
-  double occupied_cells = 0.0;        // wall cells of the map
-  double hits = 0.0;                  // scan end points counted in the map (slam/occupancy_grid.h)
-  double hits_in_free_cells = 0.0;    // ... of them in cells the map ends up calling free
-  double hits_in_unknown_cells = 0.0; // ... and in cells it leaves unknown
+  double occupied_ratio = 0.0;         // eta
+  double corner_pixels = 0.0;          // n_c (objective)
+  double enclosed_areas = 0.0;         // n_e
+  double occupied_ratio_known = 0.0;   // occupied / (occupied + free)
+  double corners = 0.0;                // 8-connected corner clusters
+  double contours = 0.0;               // all contours
+  double occupied_cells = 0.0;         // wall cells of the map
+  double hits = 0.0;                   // scan end points counted in the map (slam/occupancy_grid.h)
+  double hits_in_free_cells = 0.0;     // ... of them in cells the map ends up calling free
+  double hits_in_unknown_cells = 0.0;  // ... and in cells it leaves unknown
   // Wall cells of the map the log's fixed scans draw along the run's path
   // (metrics/trajectory_map.h), whatever the node spacing; 0 when the evaluation drew none.
   double drawn_wall_cells = 0.0;

@@ -100,14 +100,15 @@ EvaluationStore::EvaluationStore(const std::string& path) : path_(path), lock_(s
     // WAL keeps every committed evaluation safe across a kill while staying fast.
     Exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;");
     // The tables and the format mark in one transaction: a new database is whole or empty.
-    Exec(fmt::format("BEGIN IMMEDIATE;"
-                     "CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-                     "CREATE TABLE IF NOT EXISTS evaluations (key TEXT PRIMARY KEY, status TEXT NOT NULL,"
-                     " record TEXT NOT NULL, seq INTEGER NOT NULL);"
-                     "CREATE TABLE IF NOT EXISTS generations (gen INTEGER PRIMARY KEY, population TEXT NOT NULL);"
-                     "INSERT OR IGNORE INTO meta(key, value) VALUES('format', '{}');"
-                     "COMMIT;",
-                     kFormat));
+    Exec(
+        fmt::format("BEGIN IMMEDIATE;"
+                    "CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);"
+                    "CREATE TABLE IF NOT EXISTS evaluations (key TEXT PRIMARY KEY, status TEXT NOT NULL,"
+                    " record TEXT NOT NULL, seq INTEGER NOT NULL);"
+                    "CREATE TABLE IF NOT EXISTS generations (gen INTEGER PRIMARY KEY, population TEXT NOT NULL);"
+                    "INSERT OR IGNORE INTO meta(key, value) VALUES('format', '{}');"
+                    "COMMIT;",
+                    kFormat));
   } catch (const InputError&) {
     sqlite3_close(db_);
     db_ = nullptr;

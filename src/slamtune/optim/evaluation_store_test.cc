@@ -1,18 +1,18 @@
 #include "slamtune/optim/evaluation_store.h"
-#include "slamtune/optim/objective_set.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <sqlite3.h>
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/optim/objective_set.h"
 
 namespace slamtune::optim {
 namespace {
@@ -131,7 +131,6 @@ TEST(EvaluationStore, RejectsNonDatabaseFile) {
     EXPECT_NE(std::string(e.what()).find("not a slamtune run database"), std::string::npos) << e.what();
   }
 }
-
 
 TEST(EvaluationStore, StartRunStoresSettingsAndCommandLineTogether) {
   const std::string path = FreshPath("start");

@@ -39,7 +39,7 @@ namespace slamtune::optim {
 struct MapScores {
   metrics::MapQuality quality;
   slam::OccupancyGridSummary grid;  // the counts behind the map (hits the map does not back)
-  metrics::GtError error;  // default (relations_used 0) without relations
+  metrics::GtError error;           // default (relations_used 0) without relations
   // The map the context's fixed scans draw along the run's path (metrics/trajectory_map.h); zero
   // counts when the context has none.
   slam::OccupancyGridSummary drawn;

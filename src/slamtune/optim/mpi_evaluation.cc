@@ -56,8 +56,7 @@ std::string ReceiveText(int source, int tag, MPI_Status* status) {
   int count = 0;
   Check(MPI_Get_count(status, MPI_CHAR, &count), "MPI_Get_count");
   std::string text(static_cast<std::size_t>(count), '\0');
-  Check(MPI_Recv(text.data(), count, MPI_CHAR, status->MPI_SOURCE, status->MPI_TAG, MPI_COMM_WORLD,
-                 MPI_STATUS_IGNORE),
+  Check(MPI_Recv(text.data(), count, MPI_CHAR, status->MPI_SOURCE, status->MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
         "MPI_Recv");
   return text;
 }
@@ -85,9 +84,7 @@ MpiWorld::~MpiWorld() {
   if (joined_) MPI_Finalize();
 }
 
-MpiDispatcher::MpiDispatcher(const MpiWorld& world) : workers_(world.size() - 1) {
-  SLAMTUNE_CHECK(world.rank() == 0);
-}
+MpiDispatcher::MpiDispatcher(const MpiWorld& world) : workers_(world.size() - 1) { SLAMTUNE_CHECK(world.rank() == 0); }
 
 MpiDispatcher::~MpiDispatcher() {
   try {

@@ -1,10 +1,9 @@
 #include "slamtune/optim/optimization_history.h"
 
-#include <pagmo/utils/hypervolume.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <pagmo/utils/hypervolume.hpp>
 
 namespace slamtune::optim {
 namespace {

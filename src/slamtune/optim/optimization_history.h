@@ -29,7 +29,7 @@ struct GenerationSummary {
 };
 
 struct OptimizationHistory {
-  std::vector<double> lower, upper;  // per objective, the range the hypervolume normalises by
+  std::vector<double> lower, upper;            // per objective, the range the hypervolume normalises by
   std::vector<GenerationSummary> generations;  // in order
 };
 

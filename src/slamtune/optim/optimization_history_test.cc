@@ -24,9 +24,9 @@ TEST(Hypervolume, IsTheDominatedVolumeUpToTheReference) {
 TEST(SummarizeGenerations, BestValuesAndNormalisedHypervolumePerGeneration) {
   const double nan = std::nan("");
   const std::vector<std::vector<std::vector<double>>> populations = {
-      {{0.10, 0.0, 10.0}, {0.0, 10.0, 0.0}},       // normalised: (1, 0, 1) and (0, 1, 0)
-      {{0.05, 5.0, 5.0}, {1.0, 1e9, 1e9}},         // (0.5, 0.5, 0.5) and a failed run
-      {{1.0, 1e9, 1e9}},                           // only failed runs
+      {{0.10, 0.0, 10.0}, {0.0, 10.0, 0.0}},        // normalised: (1, 0, 1) and (0, 1, 0)
+      {{0.05, 5.0, 5.0}, {1.0, 1e9, 1e9}},          // (0.5, 0.5, 0.5) and a failed run
+      {{1.0, 1e9, 1e9}},                            // only failed runs
       {{0.05, 5.0, 5.0}, {0.06, 6.0, 6.0}, {nan}},  // a dominated run and a malformed vector
   };
   const OptimizationHistory h = SummarizeGenerations(populations, kPaper);

@@ -1,17 +1,17 @@
 #include "slamtune/optim/optimizer.h"
 
 #include <fmt/format.h>
-#include <pagmo/batch_evaluators/member_bfe.hpp>
-#include <pagmo/bfe.hpp>
-#include <pagmo/population.hpp>
-#include <pagmo/problem.hpp>
-#include <pagmo/utils/generic.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <pagmo/batch_evaluators/member_bfe.hpp>
+#include <pagmo/bfe.hpp>
+#include <pagmo/population.hpp>
+#include <pagmo/problem.hpp>
+#include <pagmo/utils/generic.hpp>
 #include <random>
 
 #include "slamtune/common/error.h"
@@ -80,8 +80,8 @@ void RequireAnySuccess(const std::vector<EvaluationRecord>& records, const std::
     }
     example = fmt::format(" (e.g. {}: {})", example, records.front().reason);
   }
-  throw InputError(fmt::format("every SLAM run of {} failed{}: nothing to compare; check the search space", what,
-                               example));
+  throw InputError(
+      fmt::format("every SLAM run of {} failed{}: nothing to compare; check the search space", what, example));
 }
 
 }  // namespace
@@ -100,18 +100,17 @@ void OptimizeSettings::Validate() const {
 }
 
 nlohmann::json OptimizeSettings::ToJson() const {
-  nlohmann::json j = {
-      {"log", log_path},
-      {"relations", relations_path},
-      {"space", space.Fingerprint()},
-      {"default", default_assignment},
-      {"divisions", divisions},
-      {"population", population},
-      {"generations", generations},
-      {"seed", seed},
-      {"engine", engine},
-      {"objectives", objectives.name()},
-      {"settling", settling.ToJson()}};
+  nlohmann::json j = {{"log", log_path},
+                      {"relations", relations_path},
+                      {"space", space.Fingerprint()},
+                      {"default", default_assignment},
+                      {"divisions", divisions},
+                      {"population", population},
+                      {"generations", generations},
+                      {"seed", seed},
+                      {"engine", engine},
+                      {"objectives", objectives.name()},
+                      {"settling", settling.ToJson()}};
   if (!seeds.empty()) j["seeds"] = seeds;  // absent without: older folders compare equal
   return j;
 }
@@ -289,11 +288,11 @@ void Generations::Report(unsigned gen, Show show) {
   const unsigned gens_here = done_gens_ - first_gen_here_ + (first_gen_here_ == 0 ? 1 : 0);
   const double pace = last_generation_s_ >= 0 ? last_generation_s_ : gens_here > 0 ? elapsed / gens_here : -1;
   const double left = pace >= 0 ? pace * (total_gens_ - done_gens_) : -1;
-  hooks_.progress(fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}{}", gen,
-                              total_gens_, runs_before_ + st.evaluated, st.cache_hits, rate,
-                              BestObjectives(settings_.objectives, current_f_), settings_.settling.enabled ? "<= " : "",
-                              FormatDuration(left)),
-                  show == Show::kAlways);
+  hooks_.progress(
+      fmt::format("gen {}/{} | SLAM runs {} | cache hits {} | {:.1f} runs/min | {} | left {}{}", gen, total_gens_,
+                  runs_before_ + st.evaluated, st.cache_hits, rate, BestObjectives(settings_.objectives, current_f_),
+                  settings_.settling.enabled ? "<= " : "", FormatDuration(left)),
+      show == Show::kAlways);
 }
 
 void Generations::StartFromGenerationZero() {
@@ -411,12 +410,14 @@ void ChooseAnswer(const OptimizeSettings& settings, const std::vector<Evaluation
        {},
        {},
        {}},
-      {"knee", "the final front's member closest to the ideal point (objectives normalised by the front's range)",
+      {"knee",
+       "the final front's member closest to the ideal point (objectives normalised by the front's range)",
        final_records[knee],
        {},
        {},
        {}},
-      {"worst", "the evaluated set with the largest sum of normalised objectives (for contrast)",
+      {"worst",
+       "the evaluated set with the largest sum of normalised objectives (for contrast)",
        result.evaluations[worst],
        {},
        {},

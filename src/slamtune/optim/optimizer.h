@@ -10,9 +10,8 @@
 #pragma once
 
 #include <functional>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/scan_losses.h"
@@ -27,12 +26,12 @@
 namespace slamtune::optim {
 
 struct OptimizeSettings {
-  std::string log_path;        // for the record and the --resume check
+  std::string log_path;                // for the record and the --resume check
   std::vector<std::string> log_input;  // what was read from the log and chosen, for the report
   io::ScanLosses scans_not_used;       // the log's scans no run maps, by why (io/scan_losses.h)
-  std::string relations_path;  // empty without ground truth
+  std::string relations_path;          // empty without ground truth
   SearchSpace space = SearchSpace::PaperDefault();
-  ObjectiveSet objectives;  // what NSGA-III minimises and the candidates are ranked by
+  ObjectiveSet objectives;        // what NSGA-III minimises and the candidates are ranked by
   Assignment default_assignment;  // the base configuration's values of the varied (and fixed) parameters
   std::string base_label = "slam_karto's defaults";  // what the base is: "your configuration (FILE)", ...
   // The node and mode the base is for (its node_mode, also in `engine`); for the report.
@@ -42,13 +41,13 @@ struct OptimizeSettings {
   // and take up to twice as long (docs/benchmarks.md); --population 66 --divisions 10 asks for them.
   std::size_t divisions = 7;
   std::size_t population = 36;
-  unsigned generations = 60;      // the paper's generations: the most that are run
-  SettlingOptions settling;       // stop earlier once the answer has settled (settling.h)
+  unsigned generations = 60;  // the paper's generations: the most that are run
+  SettlingOptions settling;   // stop earlier once the answer has settled (settling.h)
   unsigned seed = 1;
   // Individuals of generation 0 before the random ones (e.g. the front end's informed start,
   // front_end_repair.h), each a value for every dimension of `space`.
   std::vector<Assignment> seeds;
-  nlohmann::json engine;  // everything else that changes results (base parameters, metric options, log identity)
+  nlohmann::json engine;      // everything else that changes results (base parameters, metric options, log identity)
   nlohmann::json invocation;  // the command line that started the run: stored with the settings, not compared
 
   // Throws InputError naming the field (population >= 4, generations >= 1, divisions >= 1).

@@ -176,8 +176,7 @@ SearchSpace SearchSpace::FromYaml(const std::string& path) {
         s.fixed[name] = ReadNumber(item.second, path, name);
       }
     } else {
-      throw InputError(path, top.first.Mark().line + 1,
-                       fmt::format("unknown key '{}' (allowed: vary, fix)", key));
+      throw InputError(path, top.first.Mark().line + 1, fmt::format("unknown key '{}' (allowed: vary, fix)", key));
     }
   }
   SortRealsFirst(s.dimensions);
@@ -285,23 +284,23 @@ void SearchSpace::Validate(const std::string& source) const {
       throw InputError(source, LineOf(d.name), fmt::format("'{}': bounds must be finite", d.name));
     }
     if (!(d.lower < d.upper)) {
-      throw InputError(source, LineOf(d.name),
-                       fmt::format("'{}': bounds reversed or empty (min {} must be < max {})", d.name, d.lower,
-                                   d.upper));
+      throw InputError(
+          source, LineOf(d.name),
+          fmt::format("'{}': bounds reversed or empty (min {} must be < max {})", d.name, d.lower, d.upper));
     }
     if (!std::isfinite(d.step) || d.step < 0.0 || (d.step > 0.0 && d.step > d.upper - d.lower)) {
-      throw InputError(source, LineOf(d.name),
-                       fmt::format("'{}': step {} must be > 0 and at most max - min = {}", d.name, d.step,
-                                   d.upper - d.lower));
+      throw InputError(
+          source, LineOf(d.name),
+          fmt::format("'{}': step {} must be > 0 and at most max - min = {}", d.name, d.step, d.upper - d.lower));
     }
     if (d.integer && d.step != std::floor(d.step)) {
       throw InputError(source, LineOf(d.name),
                        fmt::format("'{}': an int parameter needs a whole-number step, got {}", d.name, d.step));
     }
     if (d.integer && (d.lower != std::floor(d.lower) || d.upper != std::floor(d.upper))) {
-      throw InputError(source, LineOf(d.name),
-                       fmt::format("'{}': an int parameter needs whole-number bounds, got [{}, {}]", d.name,
-                                   d.lower, d.upper));
+      throw InputError(
+          source, LineOf(d.name),
+          fmt::format("'{}': an int parameter needs whole-number bounds, got [{}, {}]", d.name, d.lower, d.upper));
     }
   }
   for (const auto& [name, value] : fixed) {
@@ -326,13 +325,24 @@ bool SearchSpace::VariesMapSampling() const {
 }
 
 bool SearchSpace::VariesFrontEnd() const {
-  static const std::set<std::string> kFrontEnd = {
-      "correlation_search_space_dimension", "correlation_search_space_resolution",
-      "correlation_search_space_smear_deviation", "coarse_search_angle_offset", "coarse_angle_resolution",
-      "fine_search_angle_offset", "distance_variance_penalty", "angle_variance_penalty", "minimum_distance_penalty",
-      "minimum_angle_penalty", "use_response_expansion", "minimum_travel_distance", "minimum_travel_heading",
-      "minimum_time_interval", "scan_buffer_size", "scan_buffer_maximum_scan_distance", "throttle_scans",
-      "sync_minimum_time_interval"};
+  static const std::set<std::string> kFrontEnd = {"correlation_search_space_dimension",
+                                                  "correlation_search_space_resolution",
+                                                  "correlation_search_space_smear_deviation",
+                                                  "coarse_search_angle_offset",
+                                                  "coarse_angle_resolution",
+                                                  "fine_search_angle_offset",
+                                                  "distance_variance_penalty",
+                                                  "angle_variance_penalty",
+                                                  "minimum_distance_penalty",
+                                                  "minimum_angle_penalty",
+                                                  "use_response_expansion",
+                                                  "minimum_travel_distance",
+                                                  "minimum_travel_heading",
+                                                  "minimum_time_interval",
+                                                  "scan_buffer_size",
+                                                  "scan_buffer_maximum_scan_distance",
+                                                  "throttle_scans",
+                                                  "sync_minimum_time_interval"};
   return std::any_of(dimensions.begin(), dimensions.end(),
                      [](const Dimension& d) { return kFrontEnd.count(d.name) > 0; });
 }

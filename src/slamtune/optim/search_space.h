@@ -33,8 +33,8 @@ struct Dimension {
 };
 
 struct SearchSpace {
-  std::vector<Dimension> dimensions;     // reals first, then integers
-  std::map<std::string, double> fixed;  // held constant (ROS units)
+  std::vector<Dimension> dimensions;         // reals first, then integers
+  std::map<std::string, double> fixed;       // held constant (ROS units)
   std::map<std::string, std::size_t> lines;  // where each name is in the YAML file (messages only)
 
   // The seed paper's space (header comment); `--space paper`.

@@ -3,11 +3,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <algorithm>
-#include <cmath>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
@@ -112,8 +112,9 @@ TEST(SearchSpace, CheckAgainstTheBaseNamesTheValueAndLine) {
     EXPECT_EQ(e.line(), 2u);
     EXPECT_THAT(e.message(), ::testing::HasSubstr("loop_search_maximum_distance = -1 is out of range"));
   }
-  const std::string g0 = WriteTemp("g0", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n"
-                                         "  loop_match_minimum_chain_size: 0\n");
+  const std::string g0 = WriteTemp("g0",
+                                   "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n"
+                                   "  loop_match_minimum_chain_size: 0\n");
   try {
     CheckSpaceAgainst(SearchSpace::FromYaml(g0), slam::MapperParams{}, g0);
     FAIL() << "g = 0 was accepted";
@@ -121,10 +122,11 @@ TEST(SearchSpace, CheckAgainstTheBaseNamesTheValueAndLine) {
     EXPECT_EQ(e.line(), 4u);
   }
   // Fixed values that only fit together with the varied one are taken.
-  const std::string matcher = WriteTemp("matcher", "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n"
-                                                   "  correlation_search_space_dimension: 0.6\n"
-                                                   "  correlation_search_space_resolution: 0.1\n"
-                                                   "  correlation_search_space_smear_deviation: 0.2\n");
+  const std::string matcher = WriteTemp("matcher",
+                                        "vary:\n  loop_search_maximum_distance: {min: 2, max: 6}\nfix:\n"
+                                        "  correlation_search_space_dimension: 0.6\n"
+                                        "  correlation_search_space_resolution: 0.1\n"
+                                        "  correlation_search_space_smear_deviation: 0.2\n");
   EXPECT_NO_THROW(CheckSpaceAgainst(SearchSpace::FromYaml(matcher), slam::MapperParams{}, matcher));
 }
 
@@ -246,14 +248,13 @@ TEST(SearchSpace, FrontEndHoldsTheBaseAndEveryBoundIsAValidConfiguration) {
     EXPECT_NO_THROW(s.Validate("front-end")) << preset;
     EXPECT_NO_THROW(CheckSpaceAgainst(s, base, "front-end")) << preset;
     EXPECT_TRUE(s.fixed.empty());
-    for (const char* name : {"correlation_search_space_dimension", "coarse_search_angle_offset",
-                             "minimum_travel_distance", "minimum_travel_heading",
-                             "correlation_search_space_smear_deviation", "scan_buffer_size",
-                             "link_match_minimum_response_fine", "loop_search_maximum_distance",
-                             "loop_match_minimum_chain_size", "loop_match_minimum_response_coarse",
-                             "loop_match_maximum_variance_coarse"}) {
-      const auto d = std::find_if(s.dimensions.begin(), s.dimensions.end(),
-                                  [&](const Dimension& x) { return x.name == name; });
+    for (const char* name :
+         {"correlation_search_space_dimension", "coarse_search_angle_offset", "minimum_travel_distance",
+          "minimum_travel_heading", "correlation_search_space_smear_deviation", "scan_buffer_size",
+          "link_match_minimum_response_fine", "loop_search_maximum_distance", "loop_match_minimum_chain_size",
+          "loop_match_minimum_response_coarse", "loop_match_maximum_variance_coarse"}) {
+      const auto d =
+          std::find_if(s.dimensions.begin(), s.dimensions.end(), [&](const Dimension& x) { return x.name == name; });
       ASSERT_NE(d, s.dimensions.end()) << name;
       const double value = slam::GetNumeric(base, name);
       EXPECT_LE(d->lower, value) << preset << " " << name;

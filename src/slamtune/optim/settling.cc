@@ -134,30 +134,35 @@ std::string SettlingRule::Describe(unsigned generations_budget) const {
   if (!options_.enabled) return fmt::format("ran the fixed budget of {} generations", generations_budget);
   if (!settled()) {
     if (last_movement_ >= options_.tolerance) {
-      return fmt::format("ran all {} generations: the answer was still changing (the front still moved {:.4f}, "
-                         "tolerance {:.4f})",
-                         generations_budget, last_movement_, options_.tolerance);
+      return fmt::format(
+          "ran all {} generations: the answer was still changing (the front still moved {:.4f}, "
+          "tolerance {:.4f})",
+          generations_budget, last_movement_, options_.tolerance);
     }
     if (last_answer_changed_) {
-      return fmt::format("ran all {} generations: the answer was still changing (the front moved {:.4f}, below the "
-                         "tolerance {:.4f}, but the recommended or the knee map changed in the last generation)",
-                         generations_budget, last_movement_, options_.tolerance);
+      return fmt::format(
+          "ran all {} generations: the answer was still changing (the front moved {:.4f}, below the "
+          "tolerance {:.4f}, but the recommended or the knee map changed in the last generation)",
+          generations_budget, last_movement_, options_.tolerance);
     }
-    return fmt::format("ran all {} generations: the answer was still changing (calm for {} of the {} generations "
-                       "in a row the rule needs)",
-                       generations_budget, calm_generations_, options_.window);
+    return fmt::format(
+        "ran all {} generations: the answer was still changing (calm for {} of the {} generations "
+        "in a row the rule needs)",
+        generations_budget, calm_generations_, options_.window);
   }
   if (settled_by_sound_answer_) {
     const std::string front =
         settled_at_ >= 2 ? fmt::format("the front moved {:.4f} in the last generation; ", last_movement_) : "";
-    return fmt::format("stopped after generation {} of {}: the recommended map was sound (its run held) and the same "
-                       "for {} generation{} in a row ({}--sound-answer-window 0 runs on until the front settles too)",
-                       settled_at_, generations_budget, options_.sound_answer_window,
-                       options_.sound_answer_window == 1 ? "" : "s", front);
+    return fmt::format(
+        "stopped after generation {} of {}: the recommended map was sound (its run held) and the same "
+        "for {} generation{} in a row ({}--sound-answer-window 0 runs on until the front settles too)",
+        settled_at_, generations_budget, options_.sound_answer_window, options_.sound_answer_window == 1 ? "" : "s",
+        front);
   }
-  return fmt::format("stopped after generation {} of {}: for {} generations the non-dominated front moved less than "
-                     "{:.4f} (normalised) and the recommendation and the knee did not change",
-                     settled_at_, generations_budget, options_.window, options_.tolerance);
+  return fmt::format(
+      "stopped after generation {} of {}: for {} generations the non-dominated front moved less than "
+      "{:.4f} (normalised) and the recommendation and the knee did not change",
+      settled_at_, generations_budget, options_.window, options_.tolerance);
 }
 
 }  // namespace slamtune::optim

@@ -1,10 +1,10 @@
 #include "slamtune/optim/slam_evaluation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
@@ -68,11 +68,12 @@ std::optional<std::string> RunUntilBreak(const SlamEvaluationContext& context, c
     const std::optional<std::size_t> broke = watch.Add(steps);
     if (!broke) continue;
     const slam::SequentialMatchStep& s = steps[*broke];
-    return fmt::format("stopped at log scan {} of {}: the front end broke at log scan {} ({:.1f} s into the log; the "
-                       "match ran out of search room {} with response {:.2f} and the matches after it did not undo "
-                       "it)",
-                       runner.next_index(), runner.size(), s.log_index, s.time,
-                       s.at_heading_edge ? "in heading" : "in position", s.response);
+    return fmt::format(
+        "stopped at log scan {} of {}: the front end broke at log scan {} ({:.1f} s into the log; the "
+        "match ran out of search room {} with response {:.2f} and the matches after it did not undo "
+        "it)",
+        runner.next_index(), runner.size(), s.log_index, s.time, s.at_heading_edge ? "in heading" : "in position",
+        s.response);
   }
   return std::nullopt;
 }
@@ -137,8 +138,9 @@ EvaluationRecord Score(const SlamEvaluationContext& context, const Assignment& a
   if (quality.occupied_cells == 0) {
     // Nothing to score: an empty map would win every objective.
     record.status = RunStatus::kFailed;
-    record.reason = "the map has no occupied cell (no reading reached it: min_laser_range at or above the range "
-                    "threshold?)";
+    record.reason =
+        "the map has no occupied cell (no reading reached it: min_laser_range at or above the range "
+        "threshold?)";
   }
   record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (run_out != nullptr) *run_out = std::move(run);

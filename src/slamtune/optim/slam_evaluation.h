@@ -75,10 +75,10 @@ std::string SharedWorkBrief(const SlamEvaluationContext& context);
 // What one SLAM run of an evaluation produced.
 struct SlamRun {
   slam::RunSummary summary;
-  std::vector<io::TimedPose> trajectory;  // one pose per log scan
-  io::MapImage map;                       // occupancy grid of the final poses
+  std::vector<io::TimedPose> trajectory;                      // one pose per log scan
+  io::MapImage map;                                           // occupancy grid of the final poses
   std::vector<slam::SequentialMatchStep> sequential_matches;  // every sequential match, in log order
-  slam::FrontEndEvidence front_end;       // where sequential matching may have lost its place
+  slam::FrontEndEvidence front_end;                           // where sequential matching may have lost its place
 };
 
 // `run` (may be null) receives the SLAM run the record was computed from.

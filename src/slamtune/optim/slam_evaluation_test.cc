@@ -160,8 +160,8 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
     for (int t = 0; t < 3; ++t) pool.emplace_back(work);
     for (std::thread& t : pool) t.join();
     for (std::size_t i = 0; i < batch.size(); ++i) {
-      ExpectSameRecord(without[i].record, records[i], label + " map scores pass " + std::to_string(pass) + " set " +
-                                                          std::to_string(i));
+      ExpectSameRecord(without[i].record, records[i],
+                       label + " map scores pass " + std::to_string(pass) + " set " + std::to_string(i));
     }
   }
   const MapScoreCacheCounters m = shared.map_scores->counters();

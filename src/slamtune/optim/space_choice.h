@@ -18,10 +18,10 @@ enum class DefaultSpaceKind { kLoop, kFrontEnd };
 
 struct DefaultSpaceChoice {
   DefaultSpaceKind kind = DefaultSpaceKind::kLoop;
-  slam::FrontEndEvidence evidence;  // of the base configuration's run
+  slam::FrontEndEvidence evidence;               // of the base configuration's run
   std::vector<slam::SequentialMatchStep> steps;  // its sequential matches
-  io::MapImage map;                        // its map (empty when the run failed)
-  std::vector<io::TimedPose> trajectory;   // its poses, one per log scan
+  io::MapImage map;                              // its map (empty when the run failed)
+  std::vector<io::TimedPose> trajectory;         // its poses, one per log scan
   // The --space name that reproduces the choice: "loop" or "front-end".
   const char* space_name() const { return kind == DefaultSpaceKind::kLoop ? "loop" : "front-end"; }
   // One line saying what was chosen and why.

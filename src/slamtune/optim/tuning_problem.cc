@@ -21,8 +21,8 @@ pagmo::vector_double TuningProblem::batch_fitness(const pagmo::vector_double& xs
   SLAMTUNE_CHECK(n > 0 && xs.size() % n == 0);
   std::vector<Assignment> batch;
   for (std::size_t i = 0; i < xs.size(); i += n) {
-    batch.push_back(space_.Assign(pagmo::vector_double(xs.begin() + static_cast<long>(i),
-                                                       xs.begin() + static_cast<long>(i + n))));
+    batch.push_back(
+        space_.Assign(pagmo::vector_double(xs.begin() + static_cast<long>(i), xs.begin() + static_cast<long>(i + n))));
   }
   pagmo::vector_double out;
   out.reserve(batch.size() * objectives_.size());

@@ -5,9 +5,8 @@
 // parallel.
 #pragma once
 
-#include <pagmo/types.hpp>
-
 #include <memory>
+#include <pagmo/types.hpp>
 #include <string>
 #include <utility>
 

@@ -31,15 +31,12 @@ std::string Reading(const std::string& title, const RankCorrelation& s, Tracking
   switch (t) {
     case Tracking::kTracks:
       return Capitalised(fmt::format("{} tracks the error: lower values went with lower error ({}).", title, figures));
-    case Tracking::kWeakly:
-      return Capitalised(fmt::format("{} tracks the error only weakly ({}).", title, figures));
-    case Tracking::kNot:
-      return Capitalised(fmt::format("{} does not track the error ({}).", title, figures));
+    case Tracking::kWeakly: return Capitalised(fmt::format("{} tracks the error only weakly ({}).", title, figures));
+    case Tracking::kNot: return Capitalised(fmt::format("{} does not track the error ({}).", title, figures));
     case Tracking::kAgainst:
       return Capitalised(
           fmt::format("{} runs against the error: lower values went with higher error ({}).", title, figures));
-    case Tracking::kUndecided:
-      break;
+    case Tracking::kUndecided: break;
   }
   if (!s.defined) return Capitalised(fmt::format("{}: no correlation ({}).", title, s.note));
   return Capitalised(fmt::format("{}: too few parameter sets to judge ({}).", title, figures));

@@ -18,9 +18,9 @@
 namespace slamtune::report {
 
 struct CorrelationReadingOptions {
-  double strong = 0.5;   // rho at or above this: "tracks"; in (weak, 1]
-  double weak = 0.2;     // rho at or above this: "weakly tracks"; |rho| below: "does not track"; in (0, 1)
-  int min_sets = 5;      // fewer distinct parameter sets: "too few to judge"; >= 3
+  double strong = 0.5;  // rho at or above this: "tracks"; in (weak, 1]
+  double weak = 0.2;    // rho at or above this: "weakly tracks"; |rho| below: "does not track"; in (0, 1)
+  int min_sets = 5;     // fewer distinct parameter sets: "too few to judge"; >= 3
 
   void Validate() const;
 };
@@ -33,13 +33,13 @@ struct ObjectiveErrorCorrelation {
   std::string short_name;    // ObjectiveInfo short name, e.g. "u_h"
   RankCorrelation spearman;  // objective vs translational mean error
   Tracking tracking = Tracking::kUndecided;
-  std::string reading;       // one sentence in plain words
+  std::string reading;  // one sentence in plain words
 };
 
 struct ErrorCorrelationSummary {
-  int parameter_sets = 0;  // distinct parameter sets that ran and have ground truth
+  int parameter_sets = 0;                             // distinct parameter sets that ran and have ground truth
   std::vector<ObjectiveErrorCorrelation> objectives;  // in the order asked for
-  std::string statement;   // a paragraph for the report: the evidence, grouped, and its caveat
+  std::string statement;  // a paragraph for the report: the evidence, grouped, and its caveat
 };
 
 // The distinct parameter sets (by key; the first evaluation of each) whose run succeeded and

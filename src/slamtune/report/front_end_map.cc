@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "slamtune/common/error.h"
 #include "slamtune/report/map_panels.h"
@@ -14,10 +13,10 @@
 namespace slamtune::report {
 namespace {
 
-const cv::Scalar kPath(200, 140, 60);        // BGR: blue
-const cv::Scalar kDegenerate(0, 140, 255);   // orange
-const cv::Scalar kSuspect(200, 0, 200);      // magenta
-const cv::Scalar kBreak(0, 0, 220);          // red
+const cv::Scalar kPath(200, 140, 60);       // BGR: blue
+const cv::Scalar kDegenerate(0, 140, 255);  // orange
+const cv::Scalar kSuspect(200, 0, 200);     // magenta
+const cv::Scalar kBreak(0, 0, 220);         // red
 const cv::Scalar kText(30, 30, 30);
 
 // World position -> pixel of the cropped, scaled image.
@@ -65,8 +64,8 @@ void FrontEndMapOptions::Validate() const {
 }
 
 cv::Mat RenderFrontEndMap(const io::MapImage& map, const std::vector<io::TimedPose>& trajectory,
-                          const std::vector<slam::SequentialMatchStep>& steps,
-                          const slam::FrontEndEvidence& evidence, const FrontEndMapOptions& options) {
+                          const std::vector<slam::SequentialMatchStep>& steps, const slam::FrontEndEvidence& evidence,
+                          const FrontEndMapOptions& options) {
   options.Validate();
   if (!HasMap(map)) throw InputError("front-end map: the run's map has no cells");
   PixelFrame frame;

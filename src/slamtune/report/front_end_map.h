@@ -6,9 +6,8 @@
 // readable size with square cells (INTER_NEAREST), as map_panels.h does.
 #pragma once
 
-#include <vector>
-
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/trajectory.h"
@@ -17,9 +16,9 @@
 namespace slamtune::report {
 
 struct FrontEndMapOptions {
-  int min_side = 900;      // px: the map is enlarged by a whole factor until its longer side reaches this, >= 64
-  int max_side = 2400;     // px: ... and shrunk when it exceeds this, >= min_side
-  int crop_margin = 10;    // cells kept around the known area, in [0, 1000]
+  int min_side = 900;    // px: the map is enlarged by a whole factor until its longer side reaches this, >= 64
+  int max_side = 2400;   // px: ... and shrunk when it exceeds this, >= min_side
+  int crop_margin = 10;  // cells kept around the known area, in [0, 1000]
 
   void Validate() const;
 };
@@ -28,7 +27,7 @@ struct FrontEndMapOptions {
 // and SlamRun::trajectory give it); steps whose log index it does not hold are not drawn.
 // Throws InputError for a map without cells.
 cv::Mat RenderFrontEndMap(const io::MapImage& map, const std::vector<io::TimedPose>& trajectory,
-                          const std::vector<slam::SequentialMatchStep>& steps,
-                          const slam::FrontEndEvidence& evidence, const FrontEndMapOptions& options = {});
+                          const std::vector<slam::SequentialMatchStep>& steps, const slam::FrontEndEvidence& evidence,
+                          const FrontEndMapOptions& options = {});
 
 }  // namespace slamtune::report

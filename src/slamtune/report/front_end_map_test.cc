@@ -46,7 +46,7 @@ StraightRun Straight() {
 TEST(RenderFrontEndMap, DrawsThePathEnlargedToAReadableSize) {
   const StraightRun run = Straight();
   const cv::Mat image = RenderFrontEndMap(Room(), run.trajectory, run.steps, slam::AssessFrontEnd(run.steps));
-  EXPECT_GE(image.cols, 900);  // 400 known cells + margin, enlarged by a whole factor
+  EXPECT_GE(image.cols, 900);                                   // 400 known cells + margin, enlarged by a whole factor
   EXPECT_GT(CountColour(image, cv::Vec3b(200, 140, 60)), 100);  // the blue path
   EXPECT_EQ(CountColour(image, cv::Vec3b(0, 140, 255)), 0);     // no orange: nothing degenerate
 }
@@ -65,7 +65,7 @@ TEST(RenderFrontEndMap, MarksDegenerateStretchesAndBreaks) {
   evidence.median_response = 0.8;
   evidence.breaks = 1;
   const cv::Mat image = RenderFrontEndMap(Room(), run.trajectory, run.steps, evidence);
-  EXPECT_GT(CountColour(image, cv::Vec3b(0, 140, 255)), 200);  // orange stretch
+  EXPECT_GT(CountColour(image, cv::Vec3b(0, 140, 255)), 200);                                          // orange stretch
   EXPECT_GT(CountColour(image, cv::Vec3b(220, 0, 0)) + CountColour(image, cv::Vec3b(0, 0, 220)), 20);  // red ring
 }
 

@@ -95,8 +95,10 @@ void HtmlPage::Heading(int level, const std::string& text, const std::string& id
 }
 
 void HtmlPage::Paragraph(const std::string& text, const std::string& css_class) {
-  if (css_class.empty()) body_ += "<p>" + HtmlEscape(text) + "</p>\n";
-  else body_ += "<p class=\"" + HtmlEscape(css_class) + "\">" + HtmlEscape(text) + "</p>\n";
+  if (css_class.empty())
+    body_ += "<p>" + HtmlEscape(text) + "</p>\n";
+  else
+    body_ += "<p class=\"" + HtmlEscape(css_class) + "\">" + HtmlEscape(text) + "</p>\n";
 }
 
 void HtmlPage::KeyValues(const std::vector<std::pair<std::string, std::string>>& items) {

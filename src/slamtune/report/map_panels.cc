@@ -103,8 +103,10 @@ std::vector<std::string> WrapText(const std::string& text, double scale, int wid
     word.clear();
   };
   for (char c : text) {
-    if (c == ' ') flush_word();
-    else word += c;
+    if (c == ' ')
+      flush_word();
+    else
+      word += c;
   }
   flush_word();
   if (!line.empty()) lines.push_back(line);
@@ -168,8 +170,8 @@ cv::Mat RenderMapPanel(const io::MapImage& map, const std::string& label, const 
       DrawOverlay(body, map, scaled, overlay, options.font_scale * 0.8);
     }
   } else {
-    body = cv::Mat(options.height, options.height * 3 / 4, CV_8UC3, cv::Scalar(io::kMapUnknown, io::kMapUnknown,
-                                                                                io::kMapUnknown));
+    body = cv::Mat(options.height, options.height * 3 / 4, CV_8UC3,
+                   cv::Scalar(io::kMapUnknown, io::kMapUnknown, io::kMapUnknown));
     const std::string text = "no map rendered";
     const cv::Size ts = TextSize(text, options.font_scale * 0.85);
     DrawText(body, text, {std::max(kPad, (body.cols - ts.width) / 2), body.rows / 2 - ts.height / 2},

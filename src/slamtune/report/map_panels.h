@@ -8,22 +8,21 @@
 // (occupied black, free near-white, unknown grey, io/map_image.h).
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "slamtune/io/map_image.h"
 
 namespace slamtune::report {
 
 struct MapPanelOptions {
-  int height = 480;        // px, height of the map part of every panel, in [32, 4000]
-  int max_width = 1200;    // px, wider maps are shrunk to this width (keeping the aspect), >= 32
-  bool crop = true;        // crop each map to its known (non-unknown) cells first
-  int crop_margin = 10;    // cells of border kept around the known area, in [0, 1000]
-  double font_scale = 0.6; // Hershey simplex scale of the label (caption 0.85x), in (0, 4]
-  bool scale_bar = true;   // a bar of a round length (1, 2 or 5 times a power of ten metres) under the map
+  int height = 480;         // px, height of the map part of every panel, in [32, 4000]
+  int max_width = 1200;     // px, wider maps are shrunk to this width (keeping the aspect), >= 32
+  bool crop = true;         // crop each map to its known (non-unknown) cells first
+  int crop_margin = 10;     // cells of border kept around the known area, in [0, 1000]
+  double font_scale = 0.6;  // Hershey simplex scale of the label (caption 0.85x), in (0, 4]
+  bool scale_bar = true;    // a bar of a round length (1, 2 or 5 times a power of ten metres) under the map
 
   void Validate() const;
 };

@@ -23,7 +23,7 @@ TEST(KnownBounds, BoxesTheKnownCellsWithMargin) {
   m.pixels[25 * 100 + 40] = io::kMapFree;
   EXPECT_EQ(KnownBounds(m, 0), cv::Rect(30, 20, 11, 6));
   EXPECT_EQ(KnownBounds(m, 5), cv::Rect(25, 15, 21, 16));
-  EXPECT_EQ(KnownBounds(m, 100), cv::Rect(0, 0, 100, 50));   // clipped to the image
+  EXPECT_EQ(KnownBounds(m, 100), cv::Rect(0, 0, 100, 50));  // clipped to the image
   EXPECT_EQ(KnownBounds(UnknownMap(8, 4), 2), cv::Rect(0, 0, 8, 4));
 }
 

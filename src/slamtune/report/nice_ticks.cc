@@ -17,13 +17,19 @@ double NiceNumber(double x, bool round) {
   const double fraction = x / power;  // in [1, 10)
   double nice = 10.0;
   if (round) {
-    if (fraction < 1.5) nice = 1.0;
-    else if (fraction < 3.0) nice = 2.0;
-    else if (fraction < 7.0) nice = 5.0;
+    if (fraction < 1.5)
+      nice = 1.0;
+    else if (fraction < 3.0)
+      nice = 2.0;
+    else if (fraction < 7.0)
+      nice = 5.0;
   } else {
-    if (fraction <= 1.0) nice = 1.0;
-    else if (fraction <= 2.0) nice = 2.0;
-    else if (fraction <= 5.0) nice = 5.0;
+    if (fraction <= 1.0)
+      nice = 1.0;
+    else if (fraction <= 2.0)
+      nice = 2.0;
+    else if (fraction <= 5.0)
+      nice = 5.0;
   }
   return nice * power;
 }

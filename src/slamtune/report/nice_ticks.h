@@ -13,11 +13,11 @@
 namespace slamtune::report {
 
 struct AxisTicks {
-  double lower = 0.0;  // axis start (the first tick), <= the data minimum
-  double upper = 1.0;  // axis end (the last tick), >= the data maximum
-  double step = 0.5;   // distance between ticks, > 0
-  std::vector<double> values;        // lower, lower + step, ..., upper
-  std::vector<std::string> labels;   // one per value, formatted to the step's precision
+  double lower = 0.0;               // axis start (the first tick), <= the data minimum
+  double upper = 1.0;               // axis end (the last tick), >= the data maximum
+  double step = 0.5;                // distance between ticks, > 0
+  std::vector<double> values;       // lower, lower + step, ..., upper
+  std::vector<std::string> labels;  // one per value, formatted to the step's precision
 };
 
 // Heckbert's NiceNum: a nice number near `x` (> 0). With `round`, the nearest of 1, 2, 5, 10

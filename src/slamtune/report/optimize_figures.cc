@@ -42,12 +42,14 @@ std::vector<std::pair<const optim::Candidate*, std::vector<double>>> PlottableCa
 
 // Valid individuals of a snapshot, and how many were left out.
 std::pair<std::vector<std::vector<double>>, int> ValidIndividuals(const optim::GenerationSnapshot& snapshot,
-                                                                   const optim::ObjectiveSet& objectives) {
+                                                                  const optim::ObjectiveSet& objectives) {
   std::vector<std::vector<double>> valid;
   int failed = 0;
   for (const auto& v : snapshot.objectives) {
-    if (objectives.IsFailureScore(v)) ++failed;
-    else valid.push_back(v);
+    if (objectives.IsFailureScore(v))
+      ++failed;
+    else
+      valid.push_back(v);
   }
   return {valid, failed};
 }
@@ -788,9 +790,9 @@ cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::siz
   }
   GridOptions g;
   g.columns = 3;
-  g.title = fmt::format("{} of every evaluated parameter set against each parameter (lower is better){}", objective,
-                        most_outside > 0 ? fmt::format("; {} of {} sets lie outside the axes", most_outside, successful)
-                                         : "");
+  g.title = fmt::format(
+      "{} of every evaluated parameter set against each parameter (lower is better){}", objective,
+      most_outside > 0 ? fmt::format("; {} of {} sets lie outside the axes", most_outside, successful) : "");
   return ComposeGrid(panels, g);
 }
 
@@ -898,8 +900,8 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
     std::vector<Series> series = {all};
     for (const auto* c : CandidatesInReportOrder(result)) {
       if (c->record.status == optim::RunStatus::kOk && c->record.has_gt) {
-        series.push_back(CandidateSeries(*c, optim::ValueOf(c->record, result.objectives.objectives()[k]),
-                                         c->record.trans_mean_m));
+        series.push_back(
+            CandidateSeries(*c, optim::ValueOf(c->record, result.objectives.objectives()[k]), c->record.trans_mean_m));
       }
     }
     PlotOptions o = PanelOptions(options);

@@ -19,11 +19,10 @@
 // the figure title.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/report/error_correlation.h"
@@ -35,9 +34,9 @@
 namespace slamtune::report {
 
 struct FigureOptions {
-  int panel_width = 520;   // px, width of one plot panel, >= 160
-  int panel_height = 420;  // px, height of one plot panel, >= 120
-  double font_scale = 0.45;  // tick labels; titles 1.25x; in (0, 4]
+  int panel_width = 520;               // px, width of one plot panel, >= 160
+  int panel_height = 420;              // px, height of one plot panel, >= 120
+  double font_scale = 0.45;            // tick labels; titles 1.25x; in (0, 4]
   MapPanelOptions maps = LargeMaps();  // the candidates' maps: 640 px high, labels readable at half size
 
   static MapPanelOptions LargeMaps() {

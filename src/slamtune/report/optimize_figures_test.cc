@@ -32,7 +32,7 @@ TEST(ObjectiveLimits, FitTheFrontNotTheFarWorstPoint) {
   EXPECT_LT(limits[1]->lower, 900);
   EXPECT_GT(limits[1]->upper, 1000);
   EXPECT_LT(limits[1]->upper, 1200);  // the dominated 1200 and the broken 90000 lie outside
-  EXPECT_GT(limits[2]->upper, 15);     // the dominated 15 lies within one front range (4) of 14
+  EXPECT_GT(limits[2]->upper, 15);    // the dominated 15 lies within one front range (4) of 14
   EXPECT_LT(limits[2]->upper, 20);
   // From the front's best value to one front range beyond its worst, with an 8 % margin.
   EXPECT_NEAR(limits[1]->lower, 900 - 0.08 * 200, 1e-9);

@@ -1,5 +1,4 @@
 // report.html (optimize_html.h).
-#include "slamtune/io/log_summary.h"
 #include "slamtune/report/optimize_html.h"
 
 #include <fmt/format.h>
@@ -7,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "slamtune/io/log_summary.h"
 #include "slamtune/report/html_page.h"
 #include "slamtune/report/optimize_figures.h"
 #include "slamtune/report/optimize_tables.h"
@@ -72,12 +72,12 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   };
   for (const auto& row : io::InputRows(r.log_input)) items.push_back(row);
   items.insert(items.end(), {
-      {"relations (ground truth)", r.relations_path.empty() ? "none" : r.relations_path},
-      {"generations", r.settling.empty() ? std::to_string(r.generations_run) : r.settling},
-      {"SLAM runs (evaluations)", std::to_string(r.evaluation_count)},
-      {"requests served from the cache", std::to_string(r.cache_hits)},
-      {"wall time", Seconds(r.wall_s)},
-  });
+                                {"relations (ground truth)", r.relations_path.empty() ? "none" : r.relations_path},
+                                {"generations", r.settling.empty() ? std::to_string(r.generations_run) : r.settling},
+                                {"SLAM runs (evaluations)", std::to_string(r.evaluation_count)},
+                                {"requests served from the cache", std::to_string(r.cache_hits)},
+                                {"wall time", Seconds(r.wall_s)},
+                            });
   if (r.settings.is_object() && r.settings.contains("population")) {
     items.push_back({"recommended share", fmt::format("{} of {} individuals of the final population",
                                                       r.recommended_share, SettingText(r.settings["population"]))});
@@ -93,16 +93,16 @@ void EquivalentRegionSection(HtmlPage& page, const optim::OptimizeResult& r) {
   const optim::EquivalentRegion& e = *r.equivalent_region;
   page.Heading(3, "How sure: the parameter sets with an equivalent map", "equivalent");
   page.Paragraph(e.Describe() + ".");
-  page.Paragraph(fmt::format(
-                     "Equivalent: the run closed as many loops as the recommendation ({}), and each objective "
-                     "differs from the recommendation's by at most {:.0f} % of that objective's range over all "
-                     "successful evaluations. The ranges are the smallest box around those parameter sets; sets "
-                     "inside it that were not evaluated are not known. {}",
-                     e.loop_closures, 100.0 * e.tolerance,
-                     e.members <= 1 ? "Only the recommendation itself qualifies: the result is sensitive to its "
-                                      "exact values, or the search sampled little around it."
-                                    : "A wide range says the value is not critical there; a narrow one says it is."),
-                 "note");
+  page.Paragraph(
+      fmt::format("Equivalent: the run closed as many loops as the recommendation ({}), and each objective "
+                  "differs from the recommendation's by at most {:.0f} % of that objective's range over all "
+                  "successful evaluations. The ranges are the smallest box around those parameter sets; sets "
+                  "inside it that were not evaluated are not known. {}",
+                  e.loop_closures, 100.0 * e.tolerance,
+                  e.members <= 1 ? "Only the recommendation itself qualifies: the result is sensitive to its "
+                                   "exact values, or the search sampled little around it."
+                                 : "A wide range says the value is not critical there; a narrow one says it is."),
+      "note");
 }
 
 // Every evaluation in a table the reader sorts by clicking a header; collapsed when long.
@@ -134,9 +134,10 @@ void EvaluationsSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt)
   }
   const bool long_table = rows.size() > 20;
   if (long_table) {
-    page.BeginDetails(fmt::format("All {} evaluations, in the order they ran (click to open; click a column header "
-                                  "to sort)",
-                                  rows.size()));
+    page.BeginDetails(
+        fmt::format("All {} evaluations, in the order they ran (click to open; click a column header "
+                    "to sort)",
+                    rows.size()));
   } else {
     page.Paragraph("In the order they ran; click a column header to sort by it (again: the other way).", "note");
   }
@@ -185,8 +186,8 @@ void FirstScreen(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeF
   } else if (const auto* base = PanelOf(f, "default")) {
     figures.push_back({base->png, "the base configuration, mapped", base->caption, base->file});
   }
-  if (const auto* recommended = PanelOf(f, "recommended"); recommended != nullptr && figures.size() == 1 &&
-                                                           recommended->png != figures.front().png) {
+  if (const auto* recommended = PanelOf(f, "recommended");
+      recommended != nullptr && figures.size() == 1 && recommended->png != figures.front().png) {
     figures.push_back({recommended->png, "the recommended map", recommended->caption, recommended->file});
   }
   if (!figures.empty()) page.FigureGrid(figures, 2, "first");
@@ -249,13 +250,12 @@ void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const Optim
   for (const slam::SuspectStretch& s : fe.evidence.stretches) {
     rows.push_back({fmt::format("{}-{}", s.first_log_index, s.last_log_index),
                     fmt::format("{:.1f}-{:.1f}", s.first_time, s.last_time), std::to_string(s.at_edge),
-                    std::to_string(s.low_response), fmt::format("{:.2f}", s.min_response),
-                    s.strong() ? "yes" : "no"});
+                    std::to_string(s.low_response), fmt::format("{:.2f}", s.min_response), s.strong() ? "yes" : "no"});
   }
   if (!rows.empty()) {
-    page.Table({"log scans", "seconds into the log", "at the search's edge", "collapsed response", "lowest response",
-                "break"},
-               rows);
+    page.Table(
+        {"log scans", "seconds into the log", "at the search's edge", "collapsed response", "lowest response", "break"},
+        rows);
   }
 }
 
@@ -373,9 +373,10 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
         "population. The population had not converged.",
         of, params);
   } else if (converged) {
-    out.why = fmt::format("{}{} individuals of the final population hold the recommended set{}: the search "
-                          "converged on it, as the seed paper's rule (the set most individuals share) asks.",
-                          share, of, params);
+    out.why = fmt::format(
+        "{}{} individuals of the final population hold the recommended set{}: the search "
+        "converged on it, as the seed paper's rule (the set most individuals share) asks.",
+        share, of, params);
   } else {
     out.why = fmt::format(
         "The recommended set{} is the one most individuals of the final population share, but only {}{} hold it: "
@@ -383,8 +384,8 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
         params, share, of);
   }
   if (knee != nullptr && knee != rec) {
-    const bool same = !rec->record.key.empty() ? rec->record.key == knee->record.key
-                                               : rec->record.params == knee->record.params;
+    const bool same =
+        !rec->record.key.empty() ? rec->record.key == knee->record.key : rec->record.params == knee->record.params;
     const std::string knee_summary = ParamSummary(knee->record.params, r.space);
     out.why += same ? " It is also the knee of the final front (the front's member closest to the ideal point), so "
                       "both rules agree."
@@ -410,8 +411,9 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
   }
 
   if (r.verdict_kind == optim::VerdictKind::kBetter) {
-    out.next.push_back("Load the recommended parameters (best.yaml, or best_slam_karto.yaml for slam_karto) as shown "
-                       "below, and map a log the tuning did not see to confirm.");
+    out.next.push_back(
+        "Load the recommended parameters (best.yaml, or best_slam_karto.yaml for slam_karto) as shown "
+        "below, and map a log the tuning did not see to confirm.");
   } else if (r.verdict_kind == optim::VerdictKind::kFailed) {
     out.next.push_back("Read why the run failed (status column of the candidates) before changing anything.");
   } else {
@@ -420,15 +422,18 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
   }
   if (!out.warnings.empty()) out.next.push_back("Widen the search range where a value sits on a bound (above).");
   if (!converged) {
-    out.next.push_back("Run again with more generations (--generations) or a larger population (--population) so "
-                       "the population converges on one set.");
+    out.next.push_back(
+        "Run again with more generations (--generations) or a larger population (--population) so "
+        "the population converges on one set.");
   }
-  out.next.push_back("Check the maps: each vermillion line is a loop closure between two scan poses, and the scans at "
-                     "its two ends must see the same walls; a closure between places that only look alike (a twin "
-                     "corridor, the far side of a wall) is a false loop closure.");
+  out.next.push_back(
+      "Check the maps: each vermillion line is a loop closure between two scan poses, and the scans at "
+      "its two ends must see the same walls; a closure between places that only look alike (a twin "
+      "corridor, the far side of a wall) is a false loop closure.");
   if (!HasGroundTruth(r)) {
-    out.next.push_back("With ground truth for this log (--relations FILE), the report also ranks the candidates by "
-                       "their true trajectory error.");
+    out.next.push_back(
+        "With ground truth for this log (--relations FILE), the report also ranks the candidates by "
+        "their true trajectory error.");
   }
   return out;
 }
@@ -483,16 +488,17 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
 
   if (!f.slices.empty()) {
     page.Heading(2, "Each objective against each parameter", "slices");
-    page.Paragraph("Slices through the search: every successful evaluation, one panel per searched parameter, with "
-                   "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
-                   "that objective; a flat cloud says the objective does not depend on it within its range.",
-                   "note");
+    page.Paragraph(
+        "Slices through the search: every successful evaluation, one panel per searched parameter, with "
+        "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
+        "that objective; a flat cloud says the objective does not depend on it within its range.",
+        "note");
     page.BeginDetails(fmt::format("{} figure{}, one per objective (click to open)", f.slices.size(),
                                   f.slices.size() == 1 ? "" : "s"));
     std::vector<HtmlPage::Figure> figures;
     for (const auto& s : f.slices) {
-      figures.push_back({s.png, s.label + " against each parameter",
-                         s.label + " against each parameter (" + s.file + ").", s.file});
+      figures.push_back(
+          {s.png, s.label + " against each parameter", s.label + " against each parameter (" + s.file + ").", s.file});
     }
     page.FigureGrid(figures, 1);
     page.EndDetails();
@@ -515,10 +521,12 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   std::vector<std::pair<std::string, std::string>> settings, engine;
   if (r.settings.is_object()) {
     for (const auto& [key, value] : r.settings.items()) {
-      if (key == "engine") FlattenSettings(value, "", engine);
+      if (key == "engine")
+        FlattenSettings(value, "", engine);
       else if (key == "space")
         settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
-      else FlattenSettings(value, key, settings);
+      else
+        FlattenSettings(value, key, settings);
     }
   }
   if (!settings.empty()) page.KeyValues(settings);
@@ -541,8 +549,8 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
   }
   page.Table({"parameter", "lower", "upper", "type", "default", "recommended"}, dims);
   if (!engine.empty()) {
-    page.BeginDetails(fmt::format("Engine settings ({} values: base parameters, metric options, log identity)",
-                                  engine.size()));
+    page.BeginDetails(
+        fmt::format("Engine settings ({} values: base parameters, metric options, log identity)", engine.size()));
     page.KeyValues(engine);
     page.EndDetails();
   }

@@ -33,20 +33,20 @@ RecommendationReading ReadRecommendation(const optim::OptimizeResult& r);
 
 // The PNG bytes of the figures (the same bytes as the files beside report.html).
 struct OptimizeFigures {
-  std::vector<std::uint8_t> maps;                                       // empty: no candidates
+  std::vector<std::uint8_t> maps;  // empty: no candidates
   struct MapPanel {
     std::string label;  // "recommended = knee" when they are the same set
     std::string file;   // the panel's PNG beside report.html
     std::vector<std::uint8_t> png;
     std::string caption;
   };
-  std::vector<MapPanel> map_panels;  // one per distinct candidate parameter set
+  std::vector<MapPanel> map_panels;                                    // one per distinct candidate parameter set
   std::vector<std::pair<int, std::vector<std::uint8_t>>> populations;  // (generation, png)
-  std::vector<std::uint8_t> evolution;                                  // empty: no snapshots
-  std::vector<std::uint8_t> parameter_space;                            // empty: nothing varied or evaluated
-  std::vector<std::uint8_t> objective_vs_error;                         // empty: no ground truth
-  std::vector<std::uint8_t> front_end;                                  // empty: no base front end
-  std::vector<MapPanel> slices;  // per objective (label = its symbol): it against each parameter; empty: none
+  std::vector<std::uint8_t> evolution;                                 // empty: no snapshots
+  std::vector<std::uint8_t> parameter_space;                           // empty: nothing varied or evaluated
+  std::vector<std::uint8_t> objective_vs_error;                        // empty: no ground truth
+  std::vector<std::uint8_t> front_end;                                 // empty: no base front end
+  std::vector<MapPanel> slices;       // per objective (label = its symbol): it against each parameter; empty: none
   std::vector<std::uint8_t> history;  // best objectives and hypervolume per generation; empty: no history
   std::vector<std::uint8_t> front_end_map;  // the evidence on the base run's map; empty: no base front end or no map
 };

@@ -119,8 +119,8 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
         labels += FileSafe(c->label);
       }
       const std::string file = "map_" + labels + ".png";
-      figures.map_panels.push_back({panel.group.label, file, out.Png(panel.image, file),
-                                    MapCaption(panel.group, result)});
+      figures.map_panels.push_back(
+          {panel.group.label, file, out.Png(panel.image, file), MapCaption(panel.group, result)});
     }
     for (const auto* c : CandidatesInReportOrder(result)) {
       if (!HasMap(c->map)) continue;

@@ -29,8 +29,8 @@ namespace slamtune::report {
 // What was written.
 struct OptimizeReportSummary {
   std::string dir;
-  std::vector<std::string> files;  // file names inside dir, in the order written
-  int maps_written = 0;            // candidates whose map went out as PGM + YAML
+  std::vector<std::string> files;                      // file names inside dir, in the order written
+  int maps_written = 0;                                // candidates whose map went out as PGM + YAML
   std::optional<ErrorCorrelationSummary> correlation;  // with ground truth
 };
 

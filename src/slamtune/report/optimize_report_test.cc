@@ -10,10 +10,10 @@
 #include <sstream>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/temp_dir.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/report/front_end_map.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
-#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::report {
 namespace {
@@ -316,8 +316,8 @@ TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   EXPECT_THAT(html, HasSubstr("intel.clf.gz"));
   EXPECT_THAT(html, HasSubstr("Spearman rho"));
   EXPECT_THAT(html, HasSubstr("barely rank working runs"));
-  EXPECT_THAT(html, HasSubstr("100 137 174"));  // loop-closure scan indices
-  EXPECT_THAT(html, HasSubstr("0.035 \u00b1 0.015"));   // knee's translational error
+  EXPECT_THAT(html, HasSubstr("100 137 174"));         // loop-closure scan indices
+  EXPECT_THAT(html, HasSubstr("0.035 \u00b1 0.015"));  // knee's translational error
   EXPECT_THAT(html, HasSubstr("5 of 8 individuals"));
 }
 
@@ -350,7 +350,7 @@ TEST(WriteOptimizeReport, MergesTheSameSetAndWarnsOnABound) {
   const fs::path dir = FreshDir("merged");
   optim::OptimizeResult r = testing::FakeOptimizeResult(false);
   r.candidates[0].record = testing::FakeRecord(6.0, 12, 0.1, false);  // r on the upper bound of [2, 6]
-  r.candidates[1].record = r.candidates[0].record;                     // the knee is the same set
+  r.candidates[1].record = r.candidates[0].record;                    // the knee is the same set
   r.recommended_share = 1;
   const auto summary = WriteOptimizeReport(r, dir.string());
   EXPECT_THAT(summary.files, ::testing::Contains(std::string("map_recommended_knee.png")));

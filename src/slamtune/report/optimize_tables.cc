@@ -142,13 +142,13 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
     const auto& r = evaluations[i];
     std::vector<std::string> row = {std::to_string(i)};
     for (const auto& p : params) row.push_back(Param(r.params, p));
-    row.insert(row.end(), {NameOf(r.status), r.reason, Metric(r, r.occupied_ratio), Metric(r, r.corner_pixels),
-                           Metric(r, r.enclosed_areas), Metric(r, r.occupied_ratio_known), Metric(r, r.corners),
-                           Metric(r, r.contours), Metric(r, r.occupied_cells), Metric(r, r.hits),
-                           Metric(r, r.hits_in_free_cells), Metric(r, r.hits_in_unknown_cells),
-                           Metric(r, optim::ValueOf(r, optim::Objective::kUnbackedHits)), Metric(r, r.drawn_wall_cells),
-                           Ok(r) ? std::to_string(r.nodes) : "",
-                           Ok(r) ? std::to_string(r.loop_closures) : "", FormatNumber(r.wall_s)});
+    row.insert(row.end(),
+               {NameOf(r.status), r.reason, Metric(r, r.occupied_ratio), Metric(r, r.corner_pixels),
+                Metric(r, r.enclosed_areas), Metric(r, r.occupied_ratio_known), Metric(r, r.corners),
+                Metric(r, r.contours), Metric(r, r.occupied_cells), Metric(r, r.hits), Metric(r, r.hits_in_free_cells),
+                Metric(r, r.hits_in_unknown_cells), Metric(r, optim::ValueOf(r, optim::Objective::kUnbackedHits)),
+                Metric(r, r.drawn_wall_cells), Ok(r) ? std::to_string(r.nodes) : "",
+                Ok(r) ? std::to_string(r.loop_closures) : "", FormatNumber(r.wall_s)});
     for (auto& cell : ErrorCells(r)) row.push_back(std::move(cell));
     t.AddRow(std::move(row));
   }

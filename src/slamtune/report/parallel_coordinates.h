@@ -11,11 +11,10 @@
 // labels over them, on white patches. The legend runs in rows under the title.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "slamtune/report/nice_ticks.h"
 #include "slamtune/report/plot.h"

@@ -44,8 +44,7 @@ std::pair<double, double> DataRange(const std::vector<Series>& series, bool alon
   return {lo, hi};
 }
 
-AxisTicks AxisFor(const std::vector<Series>& series, bool along_x, const std::optional<AxisLimits>& fixed,
-                  int target) {
+AxisTicks AxisFor(const std::vector<Series>& series, bool along_x, const std::optional<AxisLimits>& fixed, int target) {
   // Fixed limits: nice ticks inside them, but the axis spans exactly the limits.
   if (fixed) return MakeTicksWithin(fixed->lower, fixed->upper, target);
   const auto [lo, hi] = DataRange(series, along_x);
@@ -74,9 +73,7 @@ AxisTicks KeepWholeNumbers(AxisTicks ticks) {
 void DrawMarker(cv::Mat& image, cv::Point centre, Marker marker, const cv::Scalar& colour, int size) {
   const int thickness = size >= 7 ? 2 : 1;
   switch (marker) {
-    case Marker::kCircle:
-      cv::circle(image, centre, std::max(size / 2, 1), colour, cv::FILLED, cv::LINE_AA);
-      return;
+    case Marker::kCircle: cv::circle(image, centre, std::max(size / 2, 1), colour, cv::FILLED, cv::LINE_AA); return;
     case Marker::kSquare:
       cv::drawMarker(image, centre, colour, cv::MARKER_SQUARE, size, thickness, cv::LINE_AA);
       return;
@@ -89,12 +86,8 @@ void DrawMarker(cv::Mat& image, cv::Point centre, Marker marker, const cv::Scala
     case Marker::kCross:
       cv::drawMarker(image, centre, colour, cv::MARKER_TILTED_CROSS, size, thickness, cv::LINE_AA);
       return;
-    case Marker::kPlus:
-      cv::drawMarker(image, centre, colour, cv::MARKER_CROSS, size, thickness, cv::LINE_AA);
-      return;
-    case Marker::kStar:
-      cv::drawMarker(image, centre, colour, cv::MARKER_STAR, size, thickness, cv::LINE_AA);
-      return;
+    case Marker::kPlus: cv::drawMarker(image, centre, colour, cv::MARKER_CROSS, size, thickness, cv::LINE_AA); return;
+    case Marker::kStar: cv::drawMarker(image, centre, colour, cv::MARKER_STAR, size, thickness, cv::LINE_AA); return;
   }
 }
 
@@ -167,8 +160,8 @@ void PlotOptions::Validate() const {
   for (const auto& [name, limits] : {std::pair{"x_limits", x_limits}, std::pair{"y_limits", y_limits}}) {
     if (!limits) continue;
     Require(std::isfinite(limits->lower), fmt::format("PlotOptions.{}.lower", name), limits->lower, "must be finite");
-    Require(std::isfinite(limits->upper) && limits->upper > limits->lower,
-            fmt::format("PlotOptions.{}.upper", name), limits->upper, "must be finite and > lower");
+    Require(std::isfinite(limits->upper) && limits->upper > limits->lower, fmt::format("PlotOptions.{}.upper", name),
+            limits->upper, "must be finite and > lower");
   }
 }
 
@@ -203,9 +196,8 @@ cv::Scalar PaletteColour(std::size_t index) {
 }
 
 Marker MarkerFor(std::size_t index) {
-  static const std::array<Marker, 7> kMarkers = {Marker::kCircle, Marker::kSquare, Marker::kTriangle,
-                                                 Marker::kDiamond, Marker::kCross,  Marker::kPlus,
-                                                 Marker::kStar};
+  static const std::array<Marker, 7> kMarkers = {Marker::kCircle, Marker::kSquare, Marker::kTriangle, Marker::kDiamond,
+                                                 Marker::kCross,  Marker::kPlus,   Marker::kStar};
   return kMarkers[index % kMarkers.size()];
 }
 
@@ -215,8 +207,8 @@ cv::Size TextSize(const std::string& text, double scale, int thickness) {
   return {size.width, size.height + baseline};
 }
 
-cv::Size DrawText(cv::Mat& image, const std::string& text, cv::Point top_left, double scale,
-                  const cv::Scalar& colour, int thickness) {
+cv::Size DrawText(cv::Mat& image, const std::string& text, cv::Point top_left, double scale, const cv::Scalar& colour,
+                  int thickness) {
   int baseline = 0;
   const cv::Size size = cv::getTextSize(text, kFont, scale, thickness, &baseline);
   cv::putText(image, text, {top_left.x, top_left.y + size.height}, kFont, scale, colour, thickness, cv::LINE_AA);
@@ -263,8 +255,8 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
   int right = kMargin + TextSize(out.x_axis.labels.back(), scale).width / 2;
   if (options.width - left - right - legend_w < 60) legend_w = 0;  // too narrow: drop the legend
   right += legend_w;
-  out.plot_area = cv::Rect(left, top, std::max(options.width - left - right, 10),
-                           std::max(options.height - top - bottom, 10));
+  out.plot_area =
+      cv::Rect(left, top, std::max(options.width - left - right, 10), std::max(options.height - top - bottom, 10));
   const cv::Rect& area = out.plot_area;
 
   cv::Mat& image = out.image;
@@ -324,16 +316,16 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
       }
       const double tol_x = 1e-9 * (out.x_axis.upper - out.x_axis.lower);
       const double tol_y = 1e-9 * (out.y_axis.upper - out.y_axis.lower);
-      if (s.x[i] < out.x_axis.lower - tol_x || s.x[i] > out.x_axis.upper + tol_x ||
-          s.y[i] < out.y_axis.lower - tol_y || s.y[i] > out.y_axis.upper + tol_y) {
+      if (s.x[i] < out.x_axis.lower - tol_x || s.x[i] > out.x_axis.upper + tol_x || s.y[i] < out.y_axis.lower - tol_y ||
+          s.y[i] > out.y_axis.upper + tol_y) {
         ++out.points_clipped;
         continue;
       }
       ++out.points_drawn;
       if (!HasMarkers(s.style)) continue;
       const cv::Point2d p = out.ToPixel(s.x[i], s.y[i]);
-      DrawMarker(image, {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))}, st.marker,
-                 st.colour, st.marker_size);
+      DrawMarker(image, {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))}, st.marker, st.colour,
+                 st.marker_size);
     }
   }
 
@@ -377,8 +369,10 @@ cv::Mat ComposeGrid(const std::vector<cv::Mat>& panels, const GridOptions& optio
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const int r = static_cast<int>(i) / columns, c = static_cast<int>(i) % columns;
     cv::Mat bgr;
-    if (panels[i].channels() == 1) cv::cvtColor(panels[i], bgr, cv::COLOR_GRAY2BGR);
-    else bgr = panels[i];
+    if (panels[i].channels() == 1)
+      cv::cvtColor(panels[i], bgr, cv::COLOR_GRAY2BGR);
+    else
+      bgr = panels[i];
     const int x = pad + c * (cell_w + pad) + (cell_w - bgr.cols) / 2;
     const int y = title_h + pad + r * (cell_h + pad) + (cell_h - bgr.rows) / 2;
     bgr.copyTo(canvas(cv::Rect(x, y, bgr.cols, bgr.rows)));

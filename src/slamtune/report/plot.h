@@ -15,11 +15,10 @@
 // distinguishable for colour-blind readers; markers cycle as well so series differ in print.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "slamtune/report/nice_ticks.h"
 
@@ -29,8 +28,8 @@ enum class SeriesStyle { kMarkers, kLine, kLineAndMarkers };
 enum class Marker { kCircle, kSquare, kTriangle, kDiamond, kCross, kPlus, kStar };
 
 struct Series {
-  std::string name;        // legend text; empty: not listed in the legend
-  std::vector<double> x;   // data coordinates; x.size() must equal y.size()
+  std::string name;       // legend text; empty: not listed in the legend
+  std::vector<double> x;  // data coordinates; x.size() must equal y.size()
   std::vector<double> y;
   SeriesStyle style = SeriesStyle::kMarkers;
   std::optional<cv::Scalar> colour;  // BGR; default PaletteColour(series index)
@@ -48,18 +47,18 @@ struct AxisLimits {
 };
 
 struct PlotOptions {
-  int width = 640;             // px, total image width, >= 160
-  int height = 480;            // px, total image height, >= 120
-  std::string title;           // drawn above the plot; empty: none
-  std::string x_label;         // below the x axis; empty: none
-  std::string y_label;         // left of the y axis, rotated; empty: none
-  double font_scale = 0.5;     // Hershey simplex scale of tick labels, in (0, 4]; titles are 1.25x
-  int target_ticks = 6;        // about this many ticks per axis, >= 2
-  int marker_size = 9;         // px, marker width, in [1, 100]
-  int line_thickness = 2;      // px, in [1, 20]
-  bool grid = true;            // light grid lines at the ticks
-  bool x_whole_numbers = false;  // x ticks only at whole numbers (generations, counts)
-  bool legend = true;          // legend right of the plot when any series is named
+  int width = 640;                     // px, total image width, >= 160
+  int height = 480;                    // px, total image height, >= 120
+  std::string title;                   // drawn above the plot; empty: none
+  std::string x_label;                 // below the x axis; empty: none
+  std::string y_label;                 // left of the y axis, rotated; empty: none
+  double font_scale = 0.5;             // Hershey simplex scale of tick labels, in (0, 4]; titles are 1.25x
+  int target_ticks = 6;                // about this many ticks per axis, >= 2
+  int marker_size = 9;                 // px, marker width, in [1, 100]
+  int line_thickness = 2;              // px, in [1, 20]
+  bool grid = true;                    // light grid lines at the ticks
+  bool x_whole_numbers = false;        // x ticks only at whole numbers (generations, counts)
+  bool legend = true;                  // legend right of the plot when any series is named
   std::optional<AxisLimits> x_limits;  // fixed x range (e.g. shared by several panels)
   std::optional<AxisLimits> y_limits;  // fixed y range
 
@@ -69,13 +68,13 @@ struct PlotOptions {
 
 // What RenderPlot drew, and where.
 struct RenderedPlot {
-  cv::Mat image;            // CV_8UC3 BGR, options.height x options.width, white background
-  int points_drawn = 0;     // finite points inside the axes
-  int points_skipped = 0;   // pairs with a NaN or infinite coordinate
-  int points_clipped = 0;   // finite points outside fixed limits (not drawn)
-  AxisTicks x_axis;         // ticks; the axis spans [lower, upper]
+  cv::Mat image;           // CV_8UC3 BGR, options.height x options.width, white background
+  int points_drawn = 0;    // finite points inside the axes
+  int points_skipped = 0;  // pairs with a NaN or infinite coordinate
+  int points_clipped = 0;  // finite points outside fixed limits (not drawn)
+  AxisTicks x_axis;        // ticks; the axis spans [lower, upper]
   AxisTicks y_axis;
-  cv::Rect plot_area;       // px: the data rectangle inside the axes
+  cv::Rect plot_area;  // px: the data rectangle inside the axes
 
   // Pixel centre of a data point (x to the right, y up).
   cv::Point2d ToPixel(double x, double y) const;
@@ -92,10 +91,10 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
 cv::Mat RenderLegend(const std::vector<Series>& series, const PlotOptions& options);
 
 struct GridOptions {
-  int columns = 3;            // panels per row, >= 1
-  int padding = 8;            // px between and around panels, in [0, 200]
-  std::string title;          // drawn across the top; empty: none
-  double font_scale = 0.7;    // Hershey simplex scale of the title, in (0, 4]
+  int columns = 3;          // panels per row, >= 1
+  int padding = 8;          // px between and around panels, in [0, 200]
+  std::string title;        // drawn across the top; empty: none
+  double font_scale = 0.7;  // Hershey simplex scale of the title, in (0, 4]
 
   void Validate() const;
 };
@@ -112,8 +111,8 @@ Marker MarkerFor(std::size_t index);
 
 // Draws `text` with its top-left corner at `top_left` (Hershey simplex, antialiased) and
 // returns its size in px. Shared by the other figure builders.
-cv::Size DrawText(cv::Mat& image, const std::string& text, cv::Point top_left, double scale,
-                  const cv::Scalar& colour, int thickness = 1);
+cv::Size DrawText(cv::Mat& image, const std::string& text, cv::Point top_left, double scale, const cv::Scalar& colour,
+                  int thickness = 1);
 // Size DrawText would take.
 cv::Size TextSize(const std::string& text, double scale, int thickness = 1);
 

@@ -51,9 +51,9 @@ TEST(RenderPlot, LinesConnectPointsAndSeriesGetDistinctColours) {
   PlotOptions o;
   o.grid = false;
   const RenderedPlot r = RenderPlot({a, b}, o);
-  EXPECT_FALSE(IsWhite(r.image, r.ToPixel(2.5, 2.5)));   // on line a
-  EXPECT_FALSE(IsWhite(r.image, r.ToPixel(2.5, 7.5)));   // on line b
-  EXPECT_TRUE(IsWhite(r.image, r.ToPixel(2.5, 5.0)));    // between them
+  EXPECT_FALSE(IsWhite(r.image, r.ToPixel(2.5, 2.5)));  // on line a
+  EXPECT_FALSE(IsWhite(r.image, r.ToPixel(2.5, 7.5)));  // on line b
+  EXPECT_TRUE(IsWhite(r.image, r.ToPixel(2.5, 5.0)));   // between them
   EXPECT_NE(PaletteColour(0), PaletteColour(1));
   EXPECT_NE(MarkerFor(0), MarkerFor(1));
   const cv::Point2d pa = r.ToPixel(2.5, 2.5);
@@ -67,11 +67,11 @@ TEST(RenderPlot, DegenerateDataDoesNotCrash) {
   o.width = 200;
   o.height = 150;
   const std::vector<std::vector<Series>> cases = {
-      {},                                                         // no series
-      {MakeSeries("empty", {}, {})},                                  // an empty series
-      {MakeSeries("", {4.0}, {4.0})},                           // one point
-      {MakeSeries("", {1.0, 1.0, 1.0}, {2.0, 2.0, 2.0})},       // all equal
-      {MakeSeries("", {kNaN, 1.0}, {1.0, kNaN})},               // nothing finite
+      {},                                                  // no series
+      {MakeSeries("empty", {}, {})},                       // an empty series
+      {MakeSeries("", {4.0}, {4.0})},                      // one point
+      {MakeSeries("", {1.0, 1.0, 1.0}, {2.0, 2.0, 2.0})},  // all equal
+      {MakeSeries("", {kNaN, 1.0}, {1.0, kNaN})},          // nothing finite
       {MakeSeries("", {0.0, 1e300}, {-1e300, 1e300}, SeriesStyle::kLineAndMarkers)},
       {MakeSeries("", {-1.7e308, 1.7e308}, {0.0, 1.0}, SeriesStyle::kLineAndMarkers)},
   };
@@ -181,7 +181,7 @@ TEST(ComposeGrid, PlacesPanelsInCells) {
   EXPECT_EQ(grid.cols, 2 * 80 + 3 * 5);
   EXPECT_EQ(grid.rows, 2 * 50 + 3 * 5);
   EXPECT_EQ(grid.at<cv::Vec3b>(5 + 25, 5 + 40), cv::Vec3b(0, 0, 255));
-  EXPECT_EQ(grid.at<cv::Vec3b>(5 + 25, 5 + 80 + 5 + 40), cv::Vec3b(0, 0, 0));   // grey panel, centred
+  EXPECT_EQ(grid.at<cv::Vec3b>(5 + 25, 5 + 80 + 5 + 40), cv::Vec3b(0, 0, 0));      // grey panel, centred
   EXPECT_EQ(grid.at<cv::Vec3b>(5 + 2, 5 + 80 + 5 + 2), cv::Vec3b(255, 255, 255));  // outside it
   g.title = "Title";
   EXPECT_GT(ComposeGrid({red}, g).rows, 50 + 2 * 5);

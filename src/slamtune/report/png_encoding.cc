@@ -50,8 +50,6 @@ std::string Base64Encode(std::span<const std::uint8_t> bytes) {
   return out;
 }
 
-std::string PngDataUri(const std::vector<std::uint8_t>& png) {
-  return "data:image/png;base64," + Base64Encode(png);
-}
+std::string PngDataUri(const std::vector<std::uint8_t>& png) { return "data:image/png;base64," + Base64Encode(png); }
 
 }  // namespace slamtune::report

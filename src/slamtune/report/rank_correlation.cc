@@ -1,9 +1,9 @@
 // Spearman's rho with mid-ranks (rank_correlation.h).
 #include "slamtune/report/rank_correlation.h"
 
-#include <Eigen/Core>
 #include <fmt/format.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>

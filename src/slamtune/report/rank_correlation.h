@@ -17,11 +17,11 @@ namespace slamtune::report {
 std::vector<double> AverageRanks(const std::vector<double>& values);
 
 struct RankCorrelation {
-  double rho = 0.0;     // in [-1, 1]; NaN when undefined
-  int n = 0;            // pairs used (both values finite)
-  int dropped = 0;      // pairs with a NaN or infinite value, left out
-  bool defined = false; // false: fewer than 3 pairs, or one side constant (no ranking)
-  std::string note;     // why it is undefined; empty when defined
+  double rho = 0.0;      // in [-1, 1]; NaN when undefined
+  int n = 0;             // pairs used (both values finite)
+  int dropped = 0;       // pairs with a NaN or infinite value, left out
+  bool defined = false;  // false: fewer than 3 pairs, or one side constant (no ranking)
+  std::string note;      // why it is undefined; empty when defined
 };
 
 // Spearman's rho of the pairs (x[i], y[i]); x and y must have the same length (a broken

@@ -1,10 +1,10 @@
 // Shared names and texts (report_text.h).
 #include "slamtune/report/report_text.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/report/tables.h"

@@ -27,8 +27,8 @@ std::vector<const optim::Candidate*> CandidatesInReportOrder(const optim::Optimi
 
 // Candidates that hold the same parameter set, shown once: label "recommended = knee".
 struct CandidateGroup {
-  std::string label;                              // the members' labels joined by " = "
-  std::vector<const optim::Candidate*> members;   // in report order, at least one
+  std::string label;                             // the members' labels joined by " = "
+  std::vector<const optim::Candidate*> members;  // in report order, at least one
   // The member whose map was rendered (the first one when none was).
   const optim::Candidate& shown() const;
 };

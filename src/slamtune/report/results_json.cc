@@ -99,9 +99,9 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
     const optim::EquivalentRegion& e = *result.equivalent_region;
     nlohmann::json ranges = nlohmann::json::object();
     for (const optim::ParameterRange& r : e.ranges) ranges[r.name] = {r.lower, r.upper};
-    j["equivalent_region"] = {{"tolerance", e.tolerance},   {"loop_closures", e.loop_closures},
-                              {"members", e.members},       {"evaluated", e.evaluated},
-                              {"ranges", ranges},           {"statement", e.Describe()}};
+    j["equivalent_region"] = {{"tolerance", e.tolerance}, {"loop_closures", e.loop_closures},
+                              {"members", e.members},     {"evaluated", e.evaluated},
+                              {"ranges", ranges},         {"statement", e.Describe()}};
   } else {
     j["equivalent_region"] = nullptr;
   }

@@ -1,5 +1,4 @@
 // The sweep outputs (sweep_report.h).
-#include "slamtune/io/log_summary.h"
 #include "slamtune/report/sweep_report.h"
 
 #include <fmt/format.h>
@@ -10,6 +9,7 @@
 #include <fstream>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/log_summary.h"
 #include "slamtune/report/html_page.h"
 #include "slamtune/report/optimize_html.h"
 #include "slamtune/report/optimize_tables.h"
@@ -32,8 +32,11 @@ double Unbacked(const optim::EvaluationRecord& r) { return optim::ValueOf(r, opt
 
 CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>& points, bool gt) {
   CsvTable t;
-  t.header = {"parameter", "value", "status", "reason", "loop_closures", "occupied_ratio", "corner_pixels",
-              "enclosed_areas", "occupied_ratio_known", "corners", "contours", "unbacked_hits", "nodes", "wall_s"};
+  t.header = {"parameter",     "value",          "status",
+              "reason",        "loop_closures",  "occupied_ratio",
+              "corner_pixels", "enclosed_areas", "occupied_ratio_known",
+              "corners",       "contours",       "unbacked_hits",
+              "nodes",         "wall_s"};
   if (gt)
     t.header.insert(t.header.end(), {"trans_mean_m", "trans_std_m", "rot_mean_deg", "rot_std_deg", "relations_used"});
   t.header.push_back("loop_scans");

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "slamtune/common/error.h"
-#include "slamtune/report/testing/fake_optimize_result.h"
 #include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/report/testing/fake_optimize_result.h"
 
 namespace slamtune::report {
 namespace {

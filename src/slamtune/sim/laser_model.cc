@@ -1,8 +1,9 @@
 #include "slamtune/sim/laser_model.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 
@@ -17,13 +18,13 @@ void LaserOptions::Validate() const {
     throw InputError(fmt::format("laser max_range_m = {}: must be positive and finite", max_range_m));
   }
   if (!(range_noise_m >= 0.0 && range_noise_m < max_range_m)) {
-    throw InputError(fmt::format("laser range_noise_m = {}: must be in [0, max_range_m = {})", range_noise_m,
-                                 max_range_m));
+    throw InputError(
+        fmt::format("laser range_noise_m = {}: must be in [0, max_range_m = {})", range_noise_m, max_range_m));
   }
   const double per_metre = 1.0 / range_resolution_m;
   if (!(range_resolution_m > 0.0 && range_resolution_m <= 0.1) || std::fabs(per_metre - std::round(per_metre)) > 1e-6) {
-    throw InputError(fmt::format("laser range_resolution_m = {}: must be in (0, 0.1] and divide 1 m evenly",
-                                 range_resolution_m));
+    throw InputError(
+        fmt::format("laser range_resolution_m = {}: must be in (0, 0.1] and divide 1 m evenly", range_resolution_m));
   }
 }
 

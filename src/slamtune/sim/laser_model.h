@@ -18,12 +18,12 @@
 namespace slamtune::sim {
 
 struct LaserOptions {
-  double fov_deg = 180.0;            // field of view (deg), in (0, 360]
-  int beams = 181;                   // readings per scan, >= 2
-  double max_range_m = 30.0;         // no-return value and farthest wall seen (m), > 0
-  double range_noise_m = 0.01;       // standard deviation of the range noise (m), >= 0
-  double range_resolution_m = 0.001; // readings are multiples of this (m), in (0, 0.1], 1/res
-                                     // whole; 1 mm keeps the written log (3 decimals) exact
+  double fov_deg = 180.0;             // field of view (deg), in (0, 360]
+  int beams = 181;                    // readings per scan, >= 2
+  double max_range_m = 30.0;          // no-return value and farthest wall seen (m), > 0
+  double range_noise_m = 0.01;        // standard deviation of the range noise (m), >= 0
+  double range_resolution_m = 0.001;  // readings are multiples of this (m), in (0, 0.1], 1/res
+                                      // whole; 1 mm keeps the written log (3 decimals) exact
   // Beam angles, max range and readings as float32 values (widened to double), as a ROS
   // sensor_msgs/LaserScan carries them, so a bag made from the log holds the same numbers.
   bool float32_values = false;

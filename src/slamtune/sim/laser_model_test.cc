@@ -54,9 +54,9 @@ TEST(SimulateScan, NoiselessReadingsAreExactDistances) {
   // Laser at (4, 3) facing +y in a 10 x 8 box: beam 0 looks at -x (right side is -90 deg).
   const SimulatedScan scan = SimulateScan(Box(10, 8), Pose2{4, 3, kPi / 2}, laser, random);
   ASSERT_EQ(scan.ranges.size(), 181u);
-  EXPECT_DOUBLE_EQ(scan.ranges[0], 6.0);    // -90 deg: towards +x wall at x = 10
-  EXPECT_DOUBLE_EQ(scan.ranges[90], 5.0);   // straight ahead: y = 8
-  EXPECT_DOUBLE_EQ(scan.ranges[180], 4.0);  // +90 deg: x = 0
+  EXPECT_DOUBLE_EQ(scan.ranges[0], 6.0);     // -90 deg: towards +x wall at x = 10
+  EXPECT_DOUBLE_EQ(scan.ranges[90], 5.0);    // straight ahead: y = 8
+  EXPECT_DOUBLE_EQ(scan.ranges[180], 4.0);   // +90 deg: x = 0
   EXPECT_DOUBLE_EQ(scan.ranges[45], 7.071);  // world 45 deg: y = 8 after 5 * sqrt(2) = 7.0711 m
   EXPECT_EQ(scan.no_returns, 0u);
 }

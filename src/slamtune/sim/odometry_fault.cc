@@ -1,9 +1,10 @@
 #include "slamtune/sim/odometry_fault.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
@@ -12,12 +13,9 @@ namespace slamtune::sim {
 
 std::string_view OdometryFaultKindName(OdometryFaultKind kind) {
   switch (kind) {
-    case OdometryFaultKind::kSpin:
-      return "spin";
-    case OdometryFaultKind::kJump:
-      return "jump";
-    case OdometryFaultKind::kReverse:
-      return "reverse";
+    case OdometryFaultKind::kSpin: return "spin";
+    case OdometryFaultKind::kJump: return "jump";
+    case OdometryFaultKind::kReverse: return "reverse";
   }
   return "?";
 }
@@ -39,17 +37,13 @@ void OdometryFault::Validate(const std::string& field) const {
   }
   const auto bound = [&](double limit, const char* unit) {
     if (!(std::fabs(magnitude) <= limit)) {
-      throw InputError(fmt::format("{} ({}) magnitude = {}: must be in [-{}, {}] {}", field, name, magnitude, limit,
-                                   limit, unit));
+      throw InputError(
+          fmt::format("{} ({}) magnitude = {}: must be in [-{}, {}] {}", field, name, magnitude, limit, limit, unit));
     }
   };
   switch (kind) {
-    case OdometryFaultKind::kSpin:
-      bound(2.0 * kPi, "rad");
-      break;
-    case OdometryFaultKind::kJump:
-      bound(10.0, "m");
-      break;
+    case OdometryFaultKind::kSpin: bound(2.0 * kPi, "rad"); break;
+    case OdometryFaultKind::kJump: bound(10.0, "m"); break;
     case OdometryFaultKind::kReverse:
       if (magnitude != 0.0) {
         throw InputError(fmt::format("{} (reverse) magnitude = {}: must be 0 (reverse takes none)", field, magnitude));
@@ -63,10 +57,8 @@ std::string OdometryFault::Describe() const {
   switch (kind) {
     case OdometryFaultKind::kSpin:
       return fmt::format("{}: {:.4g} deg reported, not turned", where, RadToDeg(magnitude));
-    case OdometryFaultKind::kJump:
-      return fmt::format("{}: {} m reported, not travelled", where, magnitude);
-    case OdometryFaultKind::kReverse:
-      return where + ": travel reported backwards";
+    case OdometryFaultKind::kJump: return fmt::format("{}: {} m reported, not travelled", where, magnitude);
+    case OdometryFaultKind::kReverse: return where + ": travel reported backwards";
   }
   return where;
 }
@@ -80,15 +72,9 @@ FaultEffect FaultEffectOnStep(const std::vector<OdometryFault>& faults, double f
     if (!(overlap > 0.0)) continue;
     effect.active = true;
     switch (fault.kind) {
-      case OdometryFaultKind::kSpin:
-        effect.extra_rotation += fault.magnitude * overlap / fault.length_m;
-        break;
-      case OdometryFaultKind::kJump:
-        effect.extra_distance += fault.magnitude * overlap / fault.length_m;
-        break;
-      case OdometryFaultKind::kReverse:
-        effect.extra_distance -= 2.0 * overlap;
-        break;
+      case OdometryFaultKind::kSpin: effect.extra_rotation += fault.magnitude * overlap / fault.length_m; break;
+      case OdometryFaultKind::kJump: effect.extra_distance += fault.magnitude * overlap / fault.length_m; break;
+      case OdometryFaultKind::kReverse: effect.extra_distance -= 2.0 * overlap; break;
     }
   }
   return effect;
@@ -96,9 +82,10 @@ FaultEffect FaultEffectOnStep(const std::vector<OdometryFault>& faults, double f
 
 OdometryFault ParseOdometryFault(const std::string& text) {
   const auto fail = [&](const std::string& why) -> InputError {
-    return InputError(fmt::format("--fault '{}': {} (expected KIND,START_M,LENGTH_M[,MAGNITUDE] with KIND spin "
-                                  "(degrees), jump (m) or reverse (no magnitude))",
-                                  text, why));
+    return InputError(
+        fmt::format("--fault '{}': {} (expected KIND,START_M,LENGTH_M[,MAGNITUDE] with KIND spin "
+                    "(degrees), jump (m) or reverse (no magnitude))",
+                    text, why));
   };
   std::vector<std::string> parts;
   std::size_t begin = 0;

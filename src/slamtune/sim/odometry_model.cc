@@ -1,7 +1,8 @@
 #include "slamtune/sim/odometry_model.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "slamtune/common/error.h"
 
@@ -41,13 +42,13 @@ const Pose2& OdometryModel::Advance(const Pose2& true_delta) {
   const double direction = distance > 0.0 ? std::atan2(true_delta.y, true_delta.x) : 0.0;
   const double rotation = true_delta.theta;
   const double distance_noise = random_.Gaussian(options_.translation_noise * std::sqrt(distance));
-  const double rotation_sigma = std::sqrt(options_.rotation_noise_per_m * options_.rotation_noise_per_m * distance +
-                                          options_.rotation_noise_per_rad * options_.rotation_noise_per_rad *
-                                              std::fabs(rotation));
+  const double rotation_sigma =
+      std::sqrt(options_.rotation_noise_per_m * options_.rotation_noise_per_m * distance +
+                options_.rotation_noise_per_rad * options_.rotation_noise_per_rad * std::fabs(rotation));
   const double rotation_noise = random_.Gaussian(rotation_sigma);
   double reported_distance = distance * (1.0 + options_.translation_scale_bias) + distance_noise;
-  double reported_rotation = rotation * (1.0 + options_.rotation_scale_bias) +
-                             options_.heading_drift_per_m * distance + rotation_noise;
+  double reported_rotation =
+      rotation * (1.0 + options_.rotation_scale_bias) + options_.heading_drift_per_m * distance + rotation_noise;
   const FaultEffect fault = FaultEffectOnStep(options_.faults, travelled_m_, distance);
   if (fault.active) {
     reported_distance += fault.extra_distance;

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <vector>
 
 #include "slamtune/common/pose2.h"

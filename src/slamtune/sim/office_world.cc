@@ -19,7 +19,7 @@ namespace {
 using V = Eigen::Vector2d;
 using Opening = WallBuilder::Opening;
 
-constexpr double kDoor = 1.0;               // doorway width (m)
+constexpr double kDoor = 1.0;  // doorway width (m)
 constexpr double kDoorsX[] = {3.5, 10.5, 17.5, 24.5};
 
 // Furniture of the 7 x 4 m band rooms, different in each room so that rooms do not look alike.
@@ -74,11 +74,11 @@ World MakeOfficeWorld() {
   walls.WallWithOpenings(V(13, 6), V(13, 14), {{4.0, kDoor, 0.0}});
   walls.WallWithOpenings(V(13, 14), V(2, 14), {{3.0, 1.2, 0.4}, {8.0, 1.2, 0.4}});  // niches into the lab
   walls.Wall(V(2, 14), V(2, 6));
-  walls.Box(V(3.0, 7.0), V(5.0, 8.2));    // desks
+  walls.Box(V(3.0, 7.0), V(5.0, 8.2));  // desks
   walls.Box(V(9.0, 7.2), V(11.5, 8.4));
   walls.Box(V(3.0, 11.8), V(5.5, 13.0));
   walls.Box(V(9.0, 11.6), V(11.0, 12.8));
-  walls.Box(V(4.5, 9.6), V(5.1, 10.2));   // pillar
+  walls.Box(V(4.5, 9.6), V(5.1, 10.2));  // pillar
   // East block (x 15..26, y 6..14): two rooms split at y = 10, doors to the south and north corridors.
   walls.WallWithOpenings(V(15, 6), V(26, 6), {{5.5, kDoor, 0.0}});
   walls.WallWithOpenings(V(15, 14), V(26, 14), {{5.5, kDoor, 0.0}});
@@ -103,7 +103,7 @@ World MakeOfficeWorld() {
   room(route, V(24.5, 4), south, east);  // east loop
   route.To(27, 5).To(27, 15);
   room(route, V(17.5, 16), north, west);
-  route.To(14, 15).To(14, 10).To(7, 10).To(7, 5);  // through the lab
+  route.To(14, 15).To(14, 10).To(7, 10).To(7, 5);           // through the lab
   route.To(1, 5).To(1, 15).To(27, 15).To(27, 5).To(16, 5);  // outer ring
 
   World world;

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstddef>
 #include <optional>
 #include <vector>

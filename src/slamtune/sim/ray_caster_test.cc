@@ -33,10 +33,10 @@ std::optional<double> CastBruteForce(const std::vector<Segment>& segments, const
 TEST(IntersectRay, HitsMissesAndParallel) {
   const Segment wall{V(2, -1), V(2, 1)};
   EXPECT_DOUBLE_EQ(*IntersectRay(V(0, 0), V(1, 0), wall), 2.0);
-  EXPECT_FALSE(IntersectRay(V(0, 0), V(-1, 0), wall));             // behind the ray
-  EXPECT_FALSE(IntersectRay(V(0, 2), V(1, 0), wall));              // passes above
-  EXPECT_FALSE(IntersectRay(V(2, -5), V(0, 1), wall));             // collinear: edge-on
-  EXPECT_DOUBLE_EQ(*IntersectRay(V(0, 1), V(1, 0), wall), 2.0);    // endpoint counts
+  EXPECT_FALSE(IntersectRay(V(0, 0), V(-1, 0), wall));           // behind the ray
+  EXPECT_FALSE(IntersectRay(V(0, 2), V(1, 0), wall));            // passes above
+  EXPECT_FALSE(IntersectRay(V(2, -5), V(0, 1), wall));           // collinear: edge-on
+  EXPECT_DOUBLE_EQ(*IntersectRay(V(0, 1), V(1, 0), wall), 2.0);  // endpoint counts
 }
 
 TEST(RayCaster, HitsKnownWallsAtKnownRanges) {
@@ -65,8 +65,8 @@ TEST(RayCaster, EmptyWorldAndOpenSideGiveNoHit) {
 
 TEST(RayCaster, NearestOfSeveralWallsAndAPillar) {
   std::vector<Segment> walls = Square(20.0);
-  for (const Segment& s : std::vector<Segment>{{V(8, 9), V(9, 9)}, {V(9, 9), V(9, 10)}, {V(9, 10), V(8, 10)},
-                                               {V(8, 10), V(8, 9)}}) {
+  for (const Segment& s :
+       std::vector<Segment>{{V(8, 9), V(9, 9)}, {V(9, 9), V(9, 10)}, {V(9, 10), V(8, 10)}, {V(8, 10), V(8, 9)}}) {
     walls.push_back(s);
   }
   const RayCaster caster(walls, 1.0);
@@ -86,9 +86,9 @@ TEST(RayCaster, GridAgreesWithBruteForceInEveryWorld) {
         const double angle = kTwoPi * random.Uniform();
         const auto grid = caster.Cast(origin, angle, 30.0);
         const auto brute = CastBruteForce(world.walls, origin, angle, 30.0);
-        ASSERT_EQ(grid.has_value(), brute.has_value()) << info.name << " ray " << i << " cell " << cell << " from "
-                                                       << origin.transpose() << " angle " << angle << " brute "
-                                                       << brute.value_or(-1);
+        ASSERT_EQ(grid.has_value(), brute.has_value())
+            << info.name << " ray " << i << " cell " << cell << " from " << origin.transpose() << " angle " << angle
+            << " brute " << brute.value_or(-1);
         if (grid) {
           ASSERT_NEAR(*grid, *brute, 1e-9) << info.name << " ray " << i;
         }

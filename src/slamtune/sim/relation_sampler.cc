@@ -1,8 +1,9 @@
 #include "slamtune/sim/relation_sampler.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"

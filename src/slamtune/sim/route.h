@@ -8,7 +8,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <vector>
 
 #include "slamtune/common/pose2.h"

@@ -1,8 +1,9 @@
 #include "slamtune/sim/simulation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
@@ -69,9 +70,9 @@ std::string SimulationSummary::Report() const {
       "odometry error vs truth: final {:.2f} m / {:.1f} deg, max {:.2f} m / {:.1f} deg\n"
       "relations: {} local, {} revisits (longest gap {:.0f} s){}",
       world, seed, scans, odometry_records, path_length_m, duration_s, readings, no_return_readings,
-      readings ? 100.0 * no_return_readings / readings : 0.0, final_position_error_m,
-      RadToDeg(final_heading_error_rad), max_position_error_m, RadToDeg(max_heading_error_rad), local_relations,
-      revisit_relations, longest_revisit_gap_s, faults);
+      readings ? 100.0 * no_return_readings / readings : 0.0, final_position_error_m, RadToDeg(final_heading_error_rad),
+      max_position_error_m, RadToDeg(max_heading_error_rad), local_relations, revisit_relations, longest_revisit_gap_s,
+      faults);
 }
 
 namespace {

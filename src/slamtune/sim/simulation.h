@@ -49,7 +49,7 @@ namespace slamtune::sim {
 inline constexpr const char* kMaxRangeParam = "laser_front_laser_max_range";
 
 struct SimulationOptions {
-  uint64_t seed = 1;               // all randomness follows from it
+  uint64_t seed = 1;                  // all randomness follows from it
   std::string world = kDefaultWorld;  // a name from ListWorlds()
   LaserOptions laser;
   OdometryNoiseOptions odometry;
@@ -97,8 +97,8 @@ struct Simulation {
   // The odometry the log was recorded with: the options' noise, with the world's planted faults
   // after the options' own.
   OdometryNoiseOptions odometry;
-  io::LaserLog log;                   // laser scans and ODOM records, each in time order
-  std::vector<io::TimedPose> truth;   // true laser pose at each scan (robot (+) laser_offset)
+  io::LaserLog log;                  // laser scans and ODOM records, each in time order
+  std::vector<io::TimedPose> truth;  // true laser pose at each scan (robot (+) laser_offset)
   std::vector<io::Relation> relations;
   SimulationSummary summary;
 };

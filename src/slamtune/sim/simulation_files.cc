@@ -24,9 +24,10 @@ std::string LaserPoseComment(const Simulation& simulation, const SimulationOptio
                   : "ROBOTLASER1 laser pose = robot pose = odometric laser pose (laser at the robot origin)";
   }
   const Pose2& o = options.laser_offset;
-  return fmt::format("{}: laser pose = robot pose (+) mounting offset ({}, {}, {}) (m, m, rad), the PARAMs "
-                     "robot_frontlaser_offset, _side_offset, _angular_offset",
-                     flaser ? "FLASER" : "ROBOTLASER1", o.x, o.y, o.theta);
+  return fmt::format(
+      "{}: laser pose = robot pose (+) mounting offset ({}, {}, {}) (m, m, rad), the PARAMs "
+      "robot_frontlaser_offset, _side_offset, _angular_offset",
+      flaser ? "FLASER" : "ROBOTLASER1", o.x, o.y, o.theta);
 }
 
 // Digits after the point that print multiples of `resolution` exactly (9 at most).

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -71,7 +70,6 @@ void FilterBackFaces(std::span<const Eigen::Vector2d> points, const Eigen::Vecto
                      std::vector<Eigen::Vector2d>* valid);
 
 // Convenience form returning a new vector.
-std::vector<Eigen::Vector2d> FilterBackFaces(std::span<const Eigen::Vector2d> points,
-                                             const Eigen::Vector2d& viewpoint);
+std::vector<Eigen::Vector2d> FilterBackFaces(std::span<const Eigen::Vector2d> points, const Eigen::Vector2d& viewpoint);
 
 }  // namespace slamtune::slam

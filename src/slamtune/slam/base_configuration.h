@@ -32,7 +32,7 @@ struct BaseConfiguration {
   std::string file_text;               // the user's file, "" without one
   RosNode node = RosNode::kSlamKarto;  // the node the base is written for
   ParamsYamlReport file_report;        // what each key of the file meant (empty without one)
-  std::string mode_source;  // how the node mode was chosen: "--preset", "FILE's first comment", "default"
+  std::string mode_source;             // how the node mode was chosen: "--preset", "FILE's first comment", "default"
 };
 
 // The base configuration of `params_file` ("" = none), `preset` ("" = the default) and `sets`.

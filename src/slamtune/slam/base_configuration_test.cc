@@ -77,10 +77,11 @@ TEST(BaseConfiguration, WithoutAFileThePresetThenSets) {
 }
 
 TEST(BaseConfiguration, AFileOptimizeWroteRunsInTheModeItWasTunedFor) {
-  const std::string tuned = WriteFile(
-      "best.yaml", "# slamtune optimize, tuned for slam_toolbox_sync (slam_toolbox online_sync_launch.py "
-                   "(synchronous node)): the recommendation ...\n" +
-                       kToolboxFile);
+  const std::string tuned =
+      WriteFile("best.yaml",
+                "# slamtune optimize, tuned for slam_toolbox_sync (slam_toolbox online_sync_launch.py "
+                "(synchronous node)): the recommendation ...\n" +
+                    kToolboxFile);
   const BaseConfiguration b = LoadBaseConfiguration(tuned, "", {});
   EXPECT_EQ(b.params.node_mode, NodeMode::kSlamToolboxSync);
   EXPECT_EQ(b.mode_source, "best.yaml's first comment");

@@ -76,8 +76,8 @@ CorrelationGrid::CorrelationGrid(double search_dimension, double resolution, dou
   SLAMTUNE_CHECK(geometry_.data_size() + padding < std::numeric_limits<std::int32_t>::max());
   data_.assign(static_cast<std::size_t>(geometry_.data_size() + padding), 0);
   // The centre is always 100; order_free_ when no other value is.
-  order_free_ = std::count_if(kernel_.begin(), kernel_.end(),
-                              [](std::uint8_t v) { return v >= kCorrelationOccupied; }) == 1;
+  order_free_ =
+      std::count_if(kernel_.begin(), kernel_.end(), [](std::uint8_t v) { return v >= kCorrelationOccupied; }) == 1;
   row_starts_.assign(static_cast<std::size_t>(geometry_.stored_side) + 1, 0);
   touched_x0_ = touched_y0_ = std::numeric_limits<int>::max();
   touched_x1_ = touched_y1_ = std::numeric_limits<int>::min();

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <algorithm>
 #include <cstdint>
 #include <span>

@@ -129,10 +129,10 @@ TEST(CorrelationGrid, SkipsNonFiniteAndOutsideRoiPoints) {
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(grid.AddPoint({std::nan(""), 0.0}));
   EXPECT_FALSE(grid.AddPoint({inf, inf}));
-  EXPECT_FALSE(grid.AddPoint({-16.05, 0.0}));  // ROI cell -1
+  EXPECT_FALSE(grid.AddPoint({-16.05, 0.0}));              // ROI cell -1
   EXPECT_FALSE(grid.AddPoint({-16.0 + 641 * 0.05, 0.0}));  // ROI cell G
-  EXPECT_FALSE(grid.AddPoint({1e12, 0.0}));  // would overflow a 32-bit cast
-  EXPECT_TRUE(grid.AddPoint({-16.0 + 640 * 0.05, 0.0}));  // last ROI cell; smear spills into the border
+  EXPECT_FALSE(grid.AddPoint({1e12, 0.0}));                // would overflow a 32-bit cast
+  EXPECT_TRUE(grid.AddPoint({-16.0 + 640 * 0.05, 0.0}));   // last ROI cell; smear spills into the border
   EXPECT_EQ(grid.ValueAt(641, 320), 25);
 }
 

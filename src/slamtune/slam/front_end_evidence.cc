@@ -39,17 +39,18 @@ SequentialMatchStep StepOf(const ProcessResult& result, int log_index, double ti
 
 void FrontEndEvidenceOptions::Validate() const {
   if (!(low_response_fraction > 0.0 && low_response_fraction < 1.0)) {
-    throw InputError(fmt::format("FrontEndEvidenceOptions.low_response_fraction = {}: must be in (0, 1)",
-                                 low_response_fraction));
+    throw InputError(
+        fmt::format("FrontEndEvidenceOptions.low_response_fraction = {}: must be in (0, 1)", low_response_fraction));
   }
   if (max_gap < 0) throw InputError(fmt::format("FrontEndEvidenceOptions.max_gap = {}: must be >= 0", max_gap));
   if (min_suspects < 1) {
     throw InputError(fmt::format("FrontEndEvidenceOptions.min_suspects = {}: must be >= 1", min_suspects));
   }
   if (!(break_response_fraction > 0.0 && break_response_fraction <= low_response_fraction)) {
-    throw InputError(fmt::format("FrontEndEvidenceOptions.break_response_fraction = {}: must be in (0, "
-                                 "low_response_fraction = {}]",
-                                 break_response_fraction, low_response_fraction));
+    throw InputError(
+        fmt::format("FrontEndEvidenceOptions.break_response_fraction = {}: must be in (0, "
+                    "low_response_fraction = {}]",
+                    break_response_fraction, low_response_fraction));
   }
   if (recovery_matches < 1) {
     throw InputError(fmt::format("FrontEndEvidenceOptions.recovery_matches = {}: must be >= 1", recovery_matches));
@@ -59,8 +60,8 @@ void FrontEndEvidenceOptions::Validate() const {
         fmt::format("FrontEndEvidenceOptions.recovered_fraction = {}: must be in (0, 1)", recovered_fraction));
   }
   if (!(degenerate_anisotropy > 1.0 && std::isfinite(degenerate_anisotropy))) {
-    throw InputError(fmt::format("FrontEndEvidenceOptions.degenerate_anisotropy = {}: must be a number > 1",
-                                 degenerate_anisotropy));
+    throw InputError(
+        fmt::format("FrontEndEvidenceOptions.degenerate_anisotropy = {}: must be a number > 1", degenerate_anisotropy));
   }
   if (!(min_degenerate_length_m > 0.0 && std::isfinite(min_degenerate_length_m))) {
     throw InputError(fmt::format("FrontEndEvidenceOptions.min_degenerate_length_m = {}: must be a number > 0",
@@ -201,9 +202,10 @@ std::string DegenerateSummary(const std::vector<DegenerateStretch>& stretches) {
                          s.last_log_index, s.first_time, s.last_time, s.length_m);
   }
   if (stretches.size() > shown) parts += fmt::format("; {} more", stretches.size() - shown);
-  return fmt::format("front end: {} stretch{} where the scans saw structure in one direction only and the map "
-                     "follows the odometry along it ({})",
-                     stretches.size(), stretches.size() == 1 ? "" : "es", parts);
+  return fmt::format(
+      "front end: {} stretch{} where the scans saw structure in one direction only and the map "
+      "follows the odometry along it ({})",
+      stretches.size(), stretches.size() == 1 ? "" : "es", parts);
 }
 
 }  // namespace
@@ -211,10 +213,10 @@ std::string DegenerateSummary(const std::vector<DegenerateStretch>& stretches) {
 std::string FrontEndEvidence::Summary() const {
   if (matches == 0) return "front end: no sequential match was made";
   if (!points_at_front_end()) {
-    return fmt::format("front end: no sign of a broken sequential match ({} matches, median response {:.2f}; {} "
-                       "at the search's edge, {} with a collapsed response, {} minor stretch{})",
-                       matches, median_response, at_edge, low_response, stretches.size(),
-                       stretches.size() == 1 ? "" : "es");
+    return fmt::format(
+        "front end: no sign of a broken sequential match ({} matches, median response {:.2f}; {} "
+        "at the search's edge, {} with a collapsed response, {} minor stretch{})",
+        matches, median_response, at_edge, low_response, stretches.size(), stretches.size() == 1 ? "" : "es");
   }
   std::vector<const SuspectStretch*> strong;
   for (const SuspectStretch& s : stretches)

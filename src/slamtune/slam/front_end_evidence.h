@@ -46,15 +46,15 @@ namespace slamtune::slam {
 
 // One sequential match as the front end made it.
 struct SequentialMatchStep {
-  int log_index = -1;       // scan index in the log
-  double time = 0.0;        // s since the log's first scan
-  double response = 0.0;    // in [0, 1]
-  double dx = 0.0;          // m, match - guess, world frame (the search window's axes)
-  double dy = 0.0;          // m
-  double dtheta = 0.0;      // rad, normalised
-  double sigma_xy = 0.0;    // m, larger principal standard deviation of the match's position
-  double sigma_minor = 0.0; // m, smaller one: sigma_xy / sigma_minor >> 1 where the scan saw one direction only
-  double x = 0.0, y = 0.0;  // m, the matched position in the map's frame (where to mark the step on a map)
+  int log_index = -1;            // scan index in the log
+  double time = 0.0;             // s since the log's first scan
+  double response = 0.0;         // in [0, 1]
+  double dx = 0.0;               // m, match - guess, world frame (the search window's axes)
+  double dy = 0.0;               // m
+  double dtheta = 0.0;           // rad, normalised
+  double sigma_xy = 0.0;         // m, larger principal standard deviation of the match's position
+  double sigma_minor = 0.0;      // m, smaller one: sigma_xy / sigma_minor >> 1 where the scan saw one direction only
+  double x = 0.0, y = 0.0;       // m, the matched position in the map's frame (where to mark the step on a map)
   bool at_window_edge = false;   // |dx| or |dy| reached the window's half side
   bool at_heading_edge = false;  // |dtheta| reached the coarse angular range
 };
@@ -92,32 +92,32 @@ struct FrontEndEvidenceOptions {
 
 struct SuspectStretch {
   int first_log_index = -1, last_log_index = -1;  // log scan indices of its first and last suspect step
-  double first_time = 0.0, last_time = 0.0;        // s since the log's first scan
-  int suspects = 0;             // suspect steps in it
-  int at_edge = 0;              // of them, matches that ended at the window's or heading range's edge
-  int low_response = 0;         // of them, matches with a collapsed response
+  double first_time = 0.0, last_time = 0.0;       // s since the log's first scan
+  int suspects = 0;                               // suspect steps in it
+  int at_edge = 0;                                // of them, matches that ended at the window's or heading range's edge
+  int low_response = 0;                           // of them, matches with a collapsed response
   double min_response = 1.0;
-  int breaks = 0;               // of them, breaks (edge hit, collapsed response, not undone)
+  int breaks = 0;  // of them, breaks (edge hit, collapsed response, not undone)
   bool strong() const { return breaks > 0; }
 };
 
 // Travel over which the scans constrained one direction only (see the file comment).
 struct DegenerateStretch {
   int first_log_index = -1, last_log_index = -1;  // log scan indices of its first and last match
-  double first_time = 0.0, last_time = 0.0;        // s since the log's first scan
-  int matches = 0;              // degenerate matches in it
+  double first_time = 0.0, last_time = 0.0;       // s since the log's first scan
+  int matches = 0;                                // degenerate matches in it
   double length_m = 0.0;        // travel from its first to its last match, along the matched positions
   double max_anisotropy = 0.0;  // the largest sigma ratio in it
 };
 
 struct FrontEndEvidence {
-  int matches = 0;              // sequential matches made
+  int matches = 0;  // sequential matches made
   double median_response = 0.0;
-  int at_edge = 0;              // matches at the window's or heading range's edge
-  int low_response = 0;         // matches below low_response_fraction x median
-  int breaks = 0;               // matches that broke the map (see above)
-  std::vector<SuspectStretch> stretches;  // in log order
-  int degenerate = 0;           // degenerate matches (anisotropy at or above the option)
+  int at_edge = 0;                                      // matches at the window's or heading range's edge
+  int low_response = 0;                                 // matches below low_response_fraction x median
+  int breaks = 0;                                       // matches that broke the map (see above)
+  std::vector<SuspectStretch> stretches;                // in log order
+  int degenerate = 0;                                   // degenerate matches (anisotropy at or above the option)
   std::vector<DegenerateStretch> degenerate_stretches;  // at least min_degenerate_length_m long, in log order
 
   // True when the run shows a break or a degenerate stretch: the front end lost its place there,

@@ -1,11 +1,11 @@
 #include "slamtune/slam/front_end_evidence.h"
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
 
@@ -108,7 +108,7 @@ TEST(AssessFrontEnd, AShortDegenerateRunOrAnIsotropicMatchIsNoEvidence) {
 }
 
 TEST(AssessFrontEnd, AFewOrdinaryMatchesDoNotSplitADegenerateStretchButManyDo) {
-  auto steps = Corridor(101);  // 50 m
+  auto steps = Corridor(101);                                 // 50 m
   for (int i = 50; i < 53; ++i) steps[i].sigma_minor = 0.08;  // 3 ordinary matches: within max_gap
   ASSERT_EQ(AssessFrontEnd(steps).degenerate_stretches.size(), 1u);
   for (int i = 45; i < 58; ++i) steps[i].sigma_minor = 0.08;  // a junction: 2 x ~22 m, each too short

@@ -42,9 +42,9 @@ void LaserScan::SetSensorPose(const Pose2& sensor_pose) {
 Pose2 LaserScan::OdometricSensorPose() const { return Compose(odometric_pose_, geometry_->offset); }
 
 std::array<std::uint64_t, kGeometryKeyWords> GeometryKeyWords(const LaserGeometry& g) {
-  return {KeyBits(g.min_angle),   KeyBits(g.angular_resolution), KeyInt(g.num_readings),
-          KeyBits(g.min_range),   KeyBits(g.max_range),          KeyBits(g.range_threshold),
-          KeyBits(g.offset.x),    KeyBits(g.offset.y),           KeyBits(g.offset.theta)};
+  return {KeyBits(g.min_angle), KeyBits(g.angular_resolution), KeyInt(g.num_readings),
+          KeyBits(g.min_range), KeyBits(g.max_range),          KeyBits(g.range_threshold),
+          KeyBits(g.offset.x),  KeyBits(g.offset.y),           KeyBits(g.offset.theta)};
 }
 
 void AppendGeometryKey(const LaserGeometry& g, std::vector<std::uint64_t>* key) {

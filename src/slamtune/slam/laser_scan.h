@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <array>
 #include <atomic>
 #include <cstddef>

@@ -30,36 +30,36 @@ namespace slamtune::slam {
 
 // A loop closure as reported in loop_closures.csv and run.json.
 struct LoopClosureRecord {
-  int log_index = -1;     // log scan index of the current scan
-  int node = -1;          // its state id
-  int chain_first = -1;   // candidate chain, state ids
+  int log_index = -1;    // log scan index of the current scan
+  int node = -1;         // its state id
+  int chain_first = -1;  // candidate chain, state ids
   int chain_last = -1;
-  int linked_to = -1;     // chain member the loop edge starts from, -1: no edge added (§6.1)
+  int linked_to = -1;  // chain member the loop edge starts from, -1: no edge added (§6.1)
   double coarse_response = 0.0;
   double fine_response = 0.0;
   double coarse_var_xx = 0.0, coarse_var_xy = 0.0, coarse_var_yy = 0.0;  // m^2
 };
 
 struct RunSummary {
-  int scans_read = 0;       // laser scans in the log
-  int scans_offered = 0;    // passed to Process (after the node's own filter)
+  int scans_read = 0;     // laser scans in the log
+  int scans_offered = 0;  // passed to Process (after the node's own filter)
   // Scans the node itself did not hand to Karto, by verdict (node_scan_filter.h; kPass unused).
   std::array<int, kNumNodeVerdicts> scans_refused_by_node{};
   int scans_refused_by_node_total() const;
-  int nodes = 0;            // processed scans
+  int nodes = 0;  // processed scans
   int scans_not_moved = 0;
   int scans_wrong_reading_count = 0;
   std::vector<int> nodes_per_laser;                  // processed scans of each laser (LogLasers order)
   std::array<int, kNumEdgeKinds> edges{};            // by EdgeKind
   std::array<int, kNumEdgeKinds> duplicate_edges{};  // dropped LinkScans calls
-  int near_chain_matches = 0;          // near chains tested (size >= g)
-  int near_chain_matches_skipped = 0;  // of those, proven unable to link without matching
-  int loop_attempts = 0;    // candidate chains matched by the loop matcher
+  int near_chain_matches = 0;                        // near chains tested (size >= g)
+  int near_chain_matches_skipped = 0;                // of those, proven unable to link without matching
+  int loop_attempts = 0;                             // candidate chains matched by the loop matcher
   std::vector<LoopClosureRecord> loop_closures;
   int solver_runs = 0;
-  double solver_wall_s = 0.0;  // time spent in back-end solves
-  double wall_s = 0.0;         // time spent in Step()
-  double log_duration_s = 0.0;  // last - first ipc timestamp of the log's scans
+  double solver_wall_s = 0.0;    // time spent in back-end solves
+  double wall_s = 0.0;           // time spent in Step()
+  double log_duration_s = 0.0;   // last - first ipc timestamp of the log's scans
   double laser_max_range = 0.0;  // maxRange used (m): laser 0's, made from the log's first scan
   double range_threshold = 0.0;  // rangeThreshold used (m): laser 0's
   int total_edges() const;

@@ -18,7 +18,7 @@
 namespace slamtune::slam {
 
 struct LoopSearchOptions {
-  double radius = 4.0;        // r = loop_search_maximum_distance (m)
+  double radius = 4.0;          // r = loop_search_maximum_distance (m)
   int minimum_chain_size = 10;  // g = loop_match_minimum_chain_size
 };
 

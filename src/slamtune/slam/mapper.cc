@@ -172,7 +172,7 @@ ProcessResult Mapper::Process(LaserScan scan) {
   // 9. Graph, edges, running buffer, loop closure.
   if (params_.use_scan_matching) {
     graph_.AddVertex(scans_[id].corrected_pose());  // 9a: node = pose after the sequential match
-    AddEdges(id, covariance, &result);               // 9b
+    AddEdges(id, covariance, &result);              // 9b
     std::deque<int>& running = lasers_[laser].running_buffer;
     running.push_back(id);  // 9c, §3.3
     TrimRunningBuffer(
@@ -227,7 +227,7 @@ void Mapper::AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult
     const Pose2 pose = scans_[scan].SensorPose();
     const int previous = scans_by_laser_.scans_of(laser)[position - 1];
     Link(previous, scan, pose, covariance, EdgeKind::kSequential, result);  // 1. previous scan
-    means.push_back(pose);                                                 // 2. running buffer
+    means.push_back(pose);                                                  // 2. running buffer
     covariances.push_back(covariance);
     const std::deque<int>& running = lasers_[laser].running_buffer;
     if (!running.empty()) {
@@ -237,7 +237,7 @@ void Mapper::AddEdges(int scan, const Eigen::Matrix3d& covariance, ProcessResult
   } else {
     LinkToOtherLasers(scan, &means, &covariances, result);
   }
-  LinkNearChains(scan, &means, &covariances, result);  // 3.
+  LinkNearChains(scan, &means, &covariances, result);                             // 3.
   if (!means.empty()) SetScanSensorPose(scan, WeightedMean(means, covariances));  // 4.
 }
 
@@ -264,8 +264,7 @@ void Mapper::LinkToOtherLasers(int scan, std::vector<Pose2>* means, std::vector<
   }
 }
 
-MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base,
-                                   double threshold) {
+MatchResult Mapper::MatchNearChain(const LaserScan& scan, const std::vector<const LaserScan*>& base, double threshold) {
   if (!skip_unlinkable_near_chains_) return MatchWith(MatchRole::kSequential, scan, base, Penalize::kNo, Refine::kYes);
   // A match proven unable to exceed the threshold would be computed only to be discarded
   // (fast_matching/response_bound.h). With a match cache the proof is stored like a result, so a run

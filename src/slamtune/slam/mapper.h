@@ -26,7 +26,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <array>
 #include <deque>
 #include <memory>
@@ -53,13 +52,13 @@ struct LoopAttempt {
   int scan = -1;         // its state id
   int chain_first = -1;  // state ids of the candidate chain (consecutive)
   int chain_last = -1;
-  double coarse_response = 0.0;  // s1, loop matcher, no penalty, no refinement
+  double coarse_response = 0.0;                                 // s1, loop matcher, no penalty, no refinement
   Eigen::Matrix3d coarse_covariance = Eigen::Matrix3d::Zero();  // C1
-  bool coarse_passed = false;    // s1 > p and both xy variances < q^2
-  double fine_response = -1.0;   // s2 (sequential matcher on a copy at m1); -1 when not run
-  bool accepted = false;         // s2 >= loop_match_minimum_response_fine
-  int linked_to = -1;            // chain member the loop edge starts from; -1: no edge (§6.1 quirk)
-  int solver_run = -1;           // index into Mapper::solver_runs() of the solve it triggered
+  bool coarse_passed = false;                                   // s1 > p and both xy variances < q^2
+  double fine_response = -1.0;  // s2 (sequential matcher on a copy at m1); -1 when not run
+  bool accepted = false;        // s2 >= loop_match_minimum_response_fine
+  int linked_to = -1;           // chain member the loop edge starts from; -1: no edge (§6.1 quirk)
+  int solver_run = -1;          // index into Mapper::solver_runs() of the solve it triggered
 };
 
 // What Process() did with one scan.
@@ -67,7 +66,7 @@ struct ProcessResult {
   // kRefusedByNode: the ROS node kept it from Karto (LogRunner, node_scan_filter.h).
   enum class Outcome { kProcessed, kNotMoved, kWrongReadingCount, kRefusedByNode };
   Outcome outcome = Outcome::kProcessed;
-  MoveDecision move = MoveDecision::kNotMoved;  // which test of HasMovedEnough accepted it
+  MoveDecision move = MoveDecision::kNotMoved;   // which test of HasMovedEnough accepted it
   int state_id = -1;                             // when processed
   std::array<int, kNumEdgeKinds> edges_added{};  // by EdgeKind
   int loops_closed = 0;

@@ -17,11 +17,11 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-using Member = std::variant<bool MapperParams::*, int MapperParams::*, double MapperParams::*,
-                            RangeThresholdRule MapperParams::*, NodeMode MapperParams::*, SolverKind MapperParams::*,
-                            CeresLoss MapperParams::*, CeresLinearSolver MapperParams::*,
-                            CeresPreconditioner MapperParams::*, CeresTrustStrategy MapperParams::*,
-                            CeresDoglegType MapperParams::*>;
+using Member =
+    std::variant<bool MapperParams::*, int MapperParams::*, double MapperParams::*, RangeThresholdRule MapperParams::*,
+                 NodeMode MapperParams::*, SolverKind MapperParams::*, CeresLoss MapperParams::*,
+                 CeresLinearSolver MapperParams::*, CeresPreconditioner MapperParams::*,
+                 CeresTrustStrategy MapperParams::*, CeresDoglegType MapperParams::*>;
 
 // Allowed interval of a numeric parameter; open ends are strict.
 struct Bounds {
@@ -54,12 +54,16 @@ std::vector<std::string> ChoiceNames(std::initializer_list<Enum> values) {
   return names;
 }
 
-#define ST_BOOL(name, ros, meaning) \
-  Row{{#name, ParamType::kBool, ros, "true or false", meaning}, &MapperParams::name, Any(), {}}
-#define ST_NUM(type, name, ros, bounds, rule, meaning) \
-  Row{{#name, type, ros, rule, meaning}, &MapperParams::name, bounds, {}}
+#define ST_BOOL(name, ros, meaning)                                                          \
+  Row {                                                                                      \
+    {#name, ParamType::kBool, ros, "true or false", meaning}, &MapperParams::name, Any(), {} \
+  }
+#define ST_NUM(type, name, ros, bounds, rule, meaning)                 \
+  Row {                                                                \
+    {#name, type, ros, rule, meaning}, &MapperParams::name, bounds, {} \
+  }
 #define ST_CHOICE(name, ros, rule, meaning, ...) \
-  Row{{#name, ParamType::kString, ros, rule, meaning}, &MapperParams::name, Any(), ChoiceNames({__VA_ARGS__})}
+  Row { {#name, ParamType::kString, ros, rule, meaning}, &MapperParams::name, Any(), ChoiceNames({__VA_ARGS__}) }
 
 const std::vector<Row>& Rows() {
   using enum ParamType;
@@ -68,10 +72,8 @@ const std::vector<Row>& Rows() {
       ST_BOOL(use_scan_barycenter, true, "measure scan distances between barycentres"),
       ST_NUM(kDouble, minimum_time_interval, true, Any(), "any finite value",
              "s; a scan this much newer than the last accepted one is accepted"),
-      ST_NUM(kDouble, minimum_travel_distance, true, AtLeast(0), ">= 0",
-             "m; odometric travel that accepts a scan"),
-      ST_NUM(kDouble, minimum_travel_heading, true, AtLeast(0), ">= 0",
-             "rad; odometric turn that accepts a scan"),
+      ST_NUM(kDouble, minimum_travel_distance, true, AtLeast(0), ">= 0", "m; odometric travel that accepts a scan"),
+      ST_NUM(kDouble, minimum_travel_heading, true, AtLeast(0), ">= 0", "rad; odometric turn that accepts a scan"),
       ST_NUM(kInt, scan_buffer_size, true, AtLeast(1), "an integer >= 1", "scans in the running buffer"),
       ST_NUM(kDouble, scan_buffer_maximum_scan_distance, true, AtLeast(0), ">= 0",
              "m; maximum span of the running buffer"),
@@ -91,24 +93,21 @@ const std::vector<Row>& Rows() {
              "p, the coarse loop response must be > p"),
       ST_NUM(kDouble, loop_match_minimum_response_fine, true, Closed(0, 1), "in [0, 1]",
              "the fine loop response must be >= this"),
-      ST_NUM(kDouble, correlation_search_space_dimension, true, Above(0), "> 0",
-             "m; sequential matcher search window"),
+      ST_NUM(kDouble, correlation_search_space_dimension, true, Above(0), "> 0", "m; sequential matcher search window"),
       ST_NUM(kDouble, correlation_search_space_resolution, true, Above(0), "> 0",
              "m; sequential matcher grid resolution"),
       ST_NUM(kDouble, correlation_search_space_smear_deviation, true, Above(0), "> 0",
              "m; sequential matcher smearing deviation"),
       ST_NUM(kDouble, loop_search_space_dimension, true, Above(0), "> 0", "m; loop matcher search window"),
       ST_NUM(kDouble, loop_search_space_resolution, true, Above(0), "> 0", "m; loop matcher grid resolution"),
-      ST_NUM(kDouble, loop_search_space_smear_deviation, true, Above(0), "> 0",
-             "m; loop matcher smearing deviation"),
+      ST_NUM(kDouble, loop_search_space_smear_deviation, true, Above(0), "> 0", "m; loop matcher smearing deviation"),
       ST_NUM(kDouble, distance_variance_penalty, true, Above(0), "> 0", "m; squared inside; distance penalty"),
       ST_NUM(kDouble, angle_variance_penalty, true, Above(0), "> 0", "rad; squared inside; angle penalty"),
       ST_NUM(kDouble, fine_search_angle_offset, true, Above(0), "> 0", "rad; fine angular step"),
       ST_NUM(kDouble, coarse_search_angle_offset, true, Above(0), "> 0", "rad; coarse angular range (+-)"),
       ST_NUM(kDouble, coarse_angle_resolution, true, Above(0), "> 0", "rad; coarse angular step"),
       ST_NUM(kDouble, minimum_angle_penalty, true, Closed(0, 1), "in [0, 1]", "floor of the angle penalty"),
-      ST_NUM(kDouble, minimum_distance_penalty, true, Closed(0, 1), "in [0, 1]",
-             "floor of the distance penalty"),
+      ST_NUM(kDouble, minimum_distance_penalty, true, Closed(0, 1), "in [0, 1]", "floor of the distance penalty"),
       ST_BOOL(use_response_expansion, true, "widen the coarse angle search on a zero response"),
       ST_BOOL(robot_pose_graph, false,
               "pose graph over robot (base) poses as slam_toolbox; false: over sensor poses as slam_karto"),
@@ -242,8 +241,8 @@ ParamValue ReadValue(const MapperParams& params, const Member& member) {
 }
 
 [[noreturn]] void OutOfRange(const Row& row, const std::string& value) {
-  throw InputError(fmt::format("mapper parameter {} = {} is out of range: must be {}", row.info.name, value,
-                               row.info.rule));
+  throw InputError(
+      fmt::format("mapper parameter {} = {} is out of range: must be {}", row.info.name, value, row.info.rule));
 }
 
 void CheckRow(const MapperParams& params, const Row& row) {

@@ -53,35 +53,35 @@ using UnknownChoices = std::map<std::string, std::string, std::less<>>;
 
 struct MapperParams {
   // --- Mapper parameters of §9.1 (ROS names, ROS units; slam_karto YAML defaults) ---
-  bool use_scan_matching = true;         // false: no graph, poses are pure odometry (§3.2)
-  bool use_scan_barycenter = true;       // distance tests between barycentres, not sensor poses (§2.2)
-  double minimum_time_interval = 3600;   // s; a scan this much newer than the last accepted one passes
-  double minimum_travel_distance = 0.2;  // m; odometric sensor travel that accepts a scan (§3.2 step 5)
-  double minimum_travel_heading = 0.174;  // rad; odometric sensor turn that accepts a scan
+  bool use_scan_matching = true;                    // false: no graph, poses are pure odometry (§3.2)
+  bool use_scan_barycenter = true;                  // distance tests between barycentres, not sensor poses (§2.2)
+  double minimum_time_interval = 3600;              // s; a scan this much newer than the last accepted one passes
+  double minimum_travel_distance = 0.2;             // m; odometric sensor travel that accepts a scan (§3.2 step 5)
+  double minimum_travel_heading = 0.174;            // rad; odometric sensor turn that accepts a scan
   int scan_buffer_size = 70;                        // scans kept in the running buffer (§3.3)
   double scan_buffer_maximum_scan_distance = 20.0;  // m; front-to-back span of the running buffer
   double link_match_minimum_response_fine = 0.8;    // near-chain link accepted if response > this - 1e-6
   double link_scan_maximum_distance = 10.0;         // m; L: near chains and LinkChainToScan radius (§5.2)
   double loop_search_maximum_distance = 4.0;        // m; r: loop candidate radius between barycentres (§6.2)
   bool do_loop_closing = true;
-  int loop_match_minimum_chain_size = 10;           // g: min run length of a loop candidate / near chain
-  double loop_match_maximum_variance_coarse = 0.4;  // m (ROS); q, squared to q^2 m^2 inside (§6.3)
-  double loop_match_minimum_response_coarse = 0.8;  // p: coarse loop response must be > p (§6.3)
-  double loop_match_minimum_response_fine = 0.8;    // fine loop response must be >= this (§6.4)
+  int loop_match_minimum_chain_size = 10;                  // g: min run length of a loop candidate / near chain
+  double loop_match_maximum_variance_coarse = 0.4;         // m (ROS); q, squared to q^2 m^2 inside (§6.3)
+  double loop_match_minimum_response_coarse = 0.8;         // p: coarse loop response must be > p (§6.3)
+  double loop_match_minimum_response_fine = 0.8;           // fine loop response must be >= this (§6.4)
   double correlation_search_space_dimension = 0.3;         // m; sequential matcher window D
   double correlation_search_space_resolution = 0.01;       // m; sequential matcher rho
   double correlation_search_space_smear_deviation = 0.03;  // m; sequential matcher sigma
   double loop_search_space_dimension = 8.0;                // m; loop matcher window
   double loop_search_space_resolution = 0.05;              // m; loop matcher rho
   double loop_search_space_smear_deviation = 0.03;         // m; loop matcher sigma
-  double distance_variance_penalty = 0.3;   // m (ROS); squared inside (§4.5)
-  double angle_variance_penalty = 0.349;    // rad (ROS); squared inside
-  double fine_search_angle_offset = 0.00349;   // rad; really the fine angular step (§4.2 item 6)
-  double coarse_search_angle_offset = 0.349;   // rad; +- coarse angular range
-  double coarse_angle_resolution = 0.0349;     // rad; coarse angular step
-  double minimum_angle_penalty = 0.9;          // floor of the angular penalty factor
-  double minimum_distance_penalty = 0.5;       // floor of the distance penalty factor
-  bool use_response_expansion = false;         // widen the coarse angle search on a zero response
+  double distance_variance_penalty = 0.3;                  // m (ROS); squared inside (§4.5)
+  double angle_variance_penalty = 0.349;                   // rad (ROS); squared inside
+  double fine_search_angle_offset = 0.00349;               // rad; really the fine angular step (§4.2 item 6)
+  double coarse_search_angle_offset = 0.349;               // rad; +- coarse angular range
+  double coarse_angle_resolution = 0.0349;                 // rad; coarse angular step
+  double minimum_angle_penalty = 0.9;                      // floor of the angular penalty factor
+  double minimum_distance_penalty = 0.5;                   // floor of the distance penalty factor
+  bool use_response_expansion = false;                     // widen the coarse angle search on a zero response
   // The pose graph's frame. false (slam_karto, open_karto): edges between sensor poses and
   // solved values written back as sensor poses (new nodes start at the robot pose, §7.3).
   // true (slam_toolbox): edges between robot (base) poses, the match covariances unchanged,
@@ -92,12 +92,12 @@ struct MapperParams {
   // slam_karto: rangeThreshold = clip(12, min_range, maxRange). slam_toolbox:
   // clip(min(max_laser_range, maxRange), ...), with max_laser_range <= 0 meaning maxRange.
   RangeThresholdRule range_threshold_rule = RangeThresholdRule::kSlamKarto;
-  double max_laser_range = 20.0;        // m; slam_toolbox's rangeThreshold (only for that rule)
-  double min_laser_range = 0.0;         // m; minRange (LaserScan range_min; CARMEN logs have none)
-  double laser_max_range_cap = 80.0;    // m; maxRange = min(this, the log's no-return value) (§2.3)
-  double resolution = 0.05;             // m per map cell
-  int min_pass_through = 2;             // a cell needs more passes than this to be known (§8.1)
-  double occupancy_threshold = 0.1;     // hit/pass above this is occupied (§8.1)
+  double max_laser_range = 20.0;      // m; slam_toolbox's rangeThreshold (only for that rule)
+  double min_laser_range = 0.0;       // m; minRange (LaserScan range_min; CARMEN logs have none)
+  double laser_max_range_cap = 80.0;  // m; maxRange = min(this, the log's no-return value) (§2.3)
+  double resolution = 0.05;           // m per map cell
+  int min_pass_through = 2;           // a cell needs more passes than this to be known (§8.1)
+  double occupancy_threshold = 0.1;   // hit/pass above this is occupied (§8.1)
   // --- The node around Karto (§3.4) ---
   NodeMode node_mode = NodeMode::kSlamKarto;  // which node feeds Karto, and how
   int throttle_scans = 1;                     // slam_karto and the synchronous node: every n-th scan
@@ -111,7 +111,7 @@ struct MapperParams {
   CeresLinearSolver ceres_linear_solver = CeresLinearSolver::kSparseNormalCholesky;
   CeresPreconditioner ceres_preconditioner = CeresPreconditioner::kJacobi;  // unused by sparse Cholesky
   CeresTrustStrategy ceres_trust_strategy = CeresTrustStrategy::kLevenbergMarquardt;
-  CeresDoglegType ceres_dogleg_type = CeresDoglegType::kTraditional;       // with DOGLEG only
+  CeresDoglegType ceres_dogleg_type = CeresDoglegType::kTraditional;  // with DOGLEG only
   // The ceres_* choices together, for MakeSolver.
   CeresChoices Ceres() const {
     return {ceres_loss_function, ceres_linear_solver, ceres_preconditioner, ceres_trust_strategy, ceres_dogleg_type};
@@ -167,11 +167,11 @@ const char* ParamTypeName(ParamType type);
 
 // One row of the parameter table.
 struct ParamInfo {
-  const char* name;       // ROS name
+  const char* name;  // ROS name
   ParamType type;
-  bool ros;               // a real slam_karto / slam_toolbox ROS parameter (written to ROS YAML)
-  const char* rule;       // allowed values, for messages and --help
-  const char* meaning;    // one line, with unit
+  bool ros;             // a real slam_karto / slam_toolbox ROS parameter (written to ROS YAML)
+  const char* rule;     // allowed values, for messages and --help
+  const char* meaning;  // one line, with unit
 };
 
 // All parameters, in declaration order.

@@ -1,8 +1,8 @@
 #include "slamtune/slam/mapper_params.h"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <fmt/format.h>
 
 #include <cmath>
 
@@ -237,9 +237,12 @@ TEST(MapperParams, NamedValuesCoverTheTableAndRoundTrip) {
     const std::string text = std::visit(
         [](const auto& x) -> std::string {
           using T = std::decay_t<decltype(x)>;
-          if constexpr (std::is_same_v<T, std::string>) return x;
-          else if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
-          else return fmt::format("{}", x);
+          if constexpr (std::is_same_v<T, std::string>)
+            return x;
+          else if constexpr (std::is_same_v<T, bool>)
+            return x ? "true" : "false";
+          else
+            return fmt::format("{}", x);
         },
         v.value);
     SetFromString(rebuilt, v.name, text);

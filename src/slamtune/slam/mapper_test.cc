@@ -93,9 +93,7 @@ class MapperOnCorridor : public ::testing::Test {
     before_loop_.reset();
     log_.reset();
   }
-  void SetUp() override {
-    ASSERT_GE(loop_.log_index, 0) << "the corridor run closed no loop; the fixture needs one";
-  }
+  void SetUp() override { ASSERT_GE(loop_.log_index, 0) << "the corridor run closed no loop; the fixture needs one"; }
 
   // Index (in the attempts of `runner`) of the attempt made for `log_index` on `chain_first`.
   static const LoopAttempt* AttemptFor(const LogRunner& runner, int log_index, int chain_first) {
@@ -324,10 +322,8 @@ TEST(Mapper, RejectsScansWithAnotherReadingCountAndStaysPut) {
   auto other = std::make_shared<LaserGeometry>(*geometry);
   other->num_readings = 2;
   auto two = std::make_shared<const std::vector<double>>(std::vector<double>{1, 1});
-  EXPECT_EQ(mapper.Process(LaserScan(other, two, {1, 0, 0}, 0.0)).outcome,
-            ProcessResult::Outcome::kWrongReadingCount);
-  EXPECT_EQ(mapper.Process(LaserScan(geometry, ranges, {0.05, 0, 0}, 0.0)).outcome,
-            ProcessResult::Outcome::kNotMoved);
+  EXPECT_EQ(mapper.Process(LaserScan(other, two, {1, 0, 0}, 0.0)).outcome, ProcessResult::Outcome::kWrongReadingCount);
+  EXPECT_EQ(mapper.Process(LaserScan(geometry, ranges, {0.05, 0, 0}, 0.0)).outcome, ProcessResult::Outcome::kNotMoved);
   EXPECT_EQ(mapper.counters().scans_processed, 1);
   EXPECT_EQ(mapper.counters().scans_wrong_reading_count, 1);
   EXPECT_EQ(mapper.counters().scans_not_moved, 1);

@@ -46,8 +46,8 @@ TEST(PositionalCovariance, WeightsPositionsWithinPointOneOfTheBest) {
   const Pose2 center{0, 0, 0};
   SearchProbabilityGrid grid = GridAround(center);
   grid.at(grid.IndexOf(0.0, 0.0)) = 0.8;
-  grid.at(grid.IndexOf(kStep, 0.0)) = 0.75;    // inside the window (>= 0.7)
-  grid.at(grid.IndexOf(0.0, kStep)) = 0.69;    // outside
+  grid.at(grid.IndexOf(kStep, 0.0)) = 0.75;      // inside the window (>= 0.7)
+  grid.at(grid.IndexOf(0.0, kStep)) = 0.69;      // outside
   grid.at(grid.IndexOf(-kStep, -kStep)) = 0.71;  // inside
   const Eigen::Matrix3d cov = PositionalCovariance(center, 0.8, center, kOffset, kStep, kAngleStep, grid);
   const double norm = 0.8 + 0.75 + 0.71;

@@ -44,7 +44,7 @@ TEST(FindNearChains, RecentRunReachingTheScanIsInvalid) {
 
 TEST(FindNearChains, OlderPassConnectedWithinLIsAChain) {
   // Old pass 0..5 along y = 0; the robot leaves (6..9 far) and returns: 10, 11 near scan 2.
-  std::vector<Pose2> refs{{-2, 0, 0}, {-1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0},
+  std::vector<Pose2> refs{{-2, 0, 0}, {-1, 0, 0}, {0, 0, 0},  {1, 0, 0},  {2, 0, 0},   {3, 0, 0},
                           {3, 8, 0},  {0, 8, 0},  {-3, 8, 0}, {-3, 3, 0}, {0, 0.6, 0}, {0.2, 0.4, 0}};
   PoseGraph g = ChainGraph(refs);
   // Without a link to the old pass, only the recent run is near-linked: no valid chain.

@@ -13,8 +13,8 @@ namespace slamtune::slam {
 
 void OccupancyGridOptions::Validate() const {
   if (!(resolution > 0.0) || !std::isfinite(resolution)) {
-    throw InputError(fmt::format("occupancy grid option resolution = {}: must be a positive finite number (m)",
-                                 resolution));
+    throw InputError(
+        fmt::format("occupancy grid option resolution = {}: must be a positive finite number (m)", resolution));
   }
   if (min_pass_through < 0) {
     throw InputError(fmt::format("occupancy grid option min_pass_through = {}: must be >= 0", min_pass_through));

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
@@ -47,11 +46,11 @@ enum class CellState : std::uint8_t { kUnknown = 0, kOccupied = 100, kFree = 255
 // What building the map did, and why cells ended as they did.
 struct OccupancyGridSummary {
   int scans = 0;
-  std::int64_t beams_traced = 0;       // beams drawn (possibly shortened)
-  std::int64_t beams_skipped = 0;      // r <= minRange, r >= maxRange or NaN: not drawn (§8.1)
-  std::int64_t beams_shortened = 0;    // r >= rangeThreshold: drawn up to the threshold, no hit
-  std::int64_t hits = 0;               // end points counted as hits
-  std::int64_t hits_outside = 0;       // valid end points outside the grid (max-edge quirk, §8.1)
+  std::int64_t beams_traced = 0;     // beams drawn (possibly shortened)
+  std::int64_t beams_skipped = 0;    // r <= minRange, r >= maxRange or NaN: not drawn (§8.1)
+  std::int64_t beams_shortened = 0;  // r >= rangeThreshold: drawn up to the threshold, no hit
+  std::int64_t hits = 0;             // end points counted as hits
+  std::int64_t hits_outside = 0;     // valid end points outside the grid (max-edge quirk, §8.1)
   std::int64_t occupied_cells = 0;
   std::int64_t free_cells = 0;
   std::int64_t unknown_cells = 0;

@@ -159,8 +159,7 @@ TEST(OccupancyGrid, CountsTheHitsTheMapDoesNotBack) {
 TEST(OccupancyGrid, SkipRulesAndTruncationAtTheRangeThreshold) {
   const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
   // min_range 0.1, max_range 20, threshold 12; beams 10 degrees apart.
-  const std::vector<double> readings = {0.1,  0.05, 20.0, 25.0, nan, inf,
-                                        15.0, 12.0, 12.0 - 5e-7, 11.9, 3.0};
+  const std::vector<double> readings = {0.1, 0.05, 20.0, 25.0, nan, inf, 15.0, 12.0, 12.0 - 5e-7, 11.9, 3.0};
   const LaserScan scan = FanScan(readings, 0.0, DegToRad(8.0));
   const LaserScan* scans[] = {&scan};
   const OccupancyGrid grid = OccupancyGrid::FromScans(scans, {});

@@ -140,8 +140,7 @@ bool operator==(const PoseGraph& a, const PoseGraph& b) {
   return a.edges_ == b.edges_ && a.incident_ == b.incident_ && a.node_values_ == b.node_values_;
 }
 
-std::vector<int> NearLinked(const PoseGraph& graph, std::span<const Pose2> reference_poses, int vertex,
-                            double radius) {
+std::vector<int> NearLinked(const PoseGraph& graph, std::span<const Pose2> reference_poses, int vertex, double radius) {
   SLAMTUNE_CHECK(vertex >= 0 && vertex < graph.num_vertices());
   SLAMTUNE_CHECK(static_cast<int>(reference_poses.size()) >= graph.num_vertices());
   const Pose2& centre = reference_poses[vertex];

@@ -9,7 +9,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -94,7 +93,6 @@ bool operator==(const Edge& a, const Edge& b);
 // neighbours in edge-insertion order. A vertex is accepted (and expanded) iff the squared
 // distance of its reference pose to the reference pose of `vertex` is <= R^2 - 1e-6. Returns
 // the accepted vertices in BFS order. `reference_poses` is indexed by vertex id.
-std::vector<int> NearLinked(const PoseGraph& graph, std::span<const Pose2> reference_poses, int vertex,
-                            double radius);
+std::vector<int> NearLinked(const PoseGraph& graph, std::span<const Pose2> reference_poses, int vertex, double radius);
 
 }  // namespace slamtune::slam

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
-
 #include <cmath>
 
 namespace slamtune::slam {

@@ -17,8 +17,8 @@ std::vector<io::TimedPose> OdometryTrajectory(const io::LaserLog& log) {
   return out;
 }
 
-io::MapImage MapFromPoses(const io::LaserLog& log, const std::vector<io::TimedPose>& poses,
-                          const MapperParams& params, PoseMapSummary* summary) {
+io::MapImage MapFromPoses(const io::LaserLog& log, const std::vector<io::TimedPose>& poses, const MapperParams& params,
+                          PoseMapSummary* summary) {
   params.Validate();
   std::vector<io::TimedPose> sorted = poses;
   std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.time < b.time; });

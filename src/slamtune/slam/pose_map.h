@@ -21,8 +21,8 @@ struct PoseMapSummary {
 
 // Draws every log scan at its pose in `poses` (laser poses, matched by timestamp within
 // 1e-5 s). Throws InputError when no scan has a pose.
-io::MapImage MapFromPoses(const io::LaserLog& log, const std::vector<io::TimedPose>& poses,
-                          const MapperParams& params, PoseMapSummary* summary = nullptr);
+io::MapImage MapFromPoses(const io::LaserLog& log, const std::vector<io::TimedPose>& poses, const MapperParams& params,
+                          PoseMapSummary* summary = nullptr);
 
 // The log's own odometric laser poses as a trajectory (what the map looks like with no
 // correction at all).

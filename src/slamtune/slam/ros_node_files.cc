@@ -15,34 +15,34 @@ namespace {
 using enum ParamType;
 
 // Karto's mapper parameters, read under the same names and types by both nodes.
-#define MAPPER_PARAMS                                                                                        \
-  {"use_scan_matching", kBool, "use_scan_matching"}, {"use_scan_barycenter", kBool, "use_scan_barycenter"},  \
-      {"minimum_travel_distance", kDouble, "minimum_travel_distance"},                                       \
-      {"minimum_travel_heading", kDouble, "minimum_travel_heading"},                                         \
-      {"scan_buffer_size", kInt, "scan_buffer_size"},                                                        \
-      {"scan_buffer_maximum_scan_distance", kDouble, "scan_buffer_maximum_scan_distance"},                   \
-      {"link_match_minimum_response_fine", kDouble, "link_match_minimum_response_fine"},                     \
-      {"link_scan_maximum_distance", kDouble, "link_scan_maximum_distance"},                                 \
-      {"loop_search_maximum_distance", kDouble, "loop_search_maximum_distance"},                             \
-      {"do_loop_closing", kBool, "do_loop_closing"},                                                         \
-      {"loop_match_minimum_chain_size", kInt, "loop_match_minimum_chain_size"},                              \
-      {"loop_match_maximum_variance_coarse", kDouble, "loop_match_maximum_variance_coarse"},                 \
-      {"loop_match_minimum_response_coarse", kDouble, "loop_match_minimum_response_coarse"},                 \
-      {"loop_match_minimum_response_fine", kDouble, "loop_match_minimum_response_fine"},                     \
-      {"correlation_search_space_dimension", kDouble, "correlation_search_space_dimension"},                 \
-      {"correlation_search_space_resolution", kDouble, "correlation_search_space_resolution"},               \
-      {"correlation_search_space_smear_deviation", kDouble, "correlation_search_space_smear_deviation"},     \
-      {"loop_search_space_dimension", kDouble, "loop_search_space_dimension"},                               \
-      {"loop_search_space_resolution", kDouble, "loop_search_space_resolution"},                             \
-      {"loop_search_space_smear_deviation", kDouble, "loop_search_space_smear_deviation"},                   \
-      {"distance_variance_penalty", kDouble, "distance_variance_penalty"},                                   \
-      {"angle_variance_penalty", kDouble, "angle_variance_penalty"},                                         \
-      {"fine_search_angle_offset", kDouble, "fine_search_angle_offset"},                                     \
-      {"coarse_search_angle_offset", kDouble, "coarse_search_angle_offset"},                                 \
-      {"coarse_angle_resolution", kDouble, "coarse_angle_resolution"},                                       \
-      {"minimum_angle_penalty", kDouble, "minimum_angle_penalty"},                                           \
-      {"minimum_distance_penalty", kDouble, "minimum_distance_penalty"},                                     \
-      {"use_response_expansion", kBool, "use_response_expansion"}
+#define MAPPER_PARAMS                                                                                                \
+  {"use_scan_matching", kBool, "use_scan_matching"}, {"use_scan_barycenter", kBool, "use_scan_barycenter"},          \
+      {"minimum_travel_distance", kDouble, "minimum_travel_distance"},                                               \
+      {"minimum_travel_heading", kDouble, "minimum_travel_heading"}, {"scan_buffer_size", kInt, "scan_buffer_size"}, \
+      {"scan_buffer_maximum_scan_distance", kDouble, "scan_buffer_maximum_scan_distance"},                           \
+      {"link_match_minimum_response_fine", kDouble, "link_match_minimum_response_fine"},                             \
+      {"link_scan_maximum_distance", kDouble, "link_scan_maximum_distance"},                                         \
+      {"loop_search_maximum_distance", kDouble, "loop_search_maximum_distance"},                                     \
+      {"do_loop_closing", kBool, "do_loop_closing"},                                                                 \
+      {"loop_match_minimum_chain_size", kInt, "loop_match_minimum_chain_size"},                                      \
+      {"loop_match_maximum_variance_coarse", kDouble, "loop_match_maximum_variance_coarse"},                         \
+      {"loop_match_minimum_response_coarse", kDouble, "loop_match_minimum_response_coarse"},                         \
+      {"loop_match_minimum_response_fine", kDouble, "loop_match_minimum_response_fine"},                             \
+      {"correlation_search_space_dimension", kDouble, "correlation_search_space_dimension"},                         \
+      {"correlation_search_space_resolution", kDouble, "correlation_search_space_resolution"},                       \
+      {"correlation_search_space_smear_deviation", kDouble, "correlation_search_space_smear_deviation"},             \
+      {"loop_search_space_dimension", kDouble, "loop_search_space_dimension"},                                       \
+      {"loop_search_space_resolution", kDouble, "loop_search_space_resolution"},                                     \
+      {"loop_search_space_smear_deviation", kDouble, "loop_search_space_smear_deviation"},                           \
+      {"distance_variance_penalty", kDouble, "distance_variance_penalty"},                                           \
+      {"angle_variance_penalty", kDouble, "angle_variance_penalty"},                                                 \
+      {"fine_search_angle_offset", kDouble, "fine_search_angle_offset"},                                             \
+      {"coarse_search_angle_offset", kDouble, "coarse_search_angle_offset"},                                         \
+      {"coarse_angle_resolution", kDouble, "coarse_angle_resolution"},                                               \
+      {"minimum_angle_penalty", kDouble, "minimum_angle_penalty"},                                                   \
+      {"minimum_distance_penalty", kDouble, "minimum_distance_penalty"}, {                                           \
+    "use_response_expansion", kBool, "use_response_expansion"                                                        \
+  }
 
 const std::vector<NodeParam>& ToolboxParams() {
   static const std::vector<NodeParam> params = {
@@ -89,11 +89,17 @@ const std::vector<NodeParam>& ToolboxParams() {
 const std::vector<NodeParam>& KartoParams() {
   // slam_karto.cpp's SlamKarto::SlamKarto reads these from its private namespace; with scan
   // times never set, minimum_time_interval only matters when ≤ 0 (docs/engine.md §3.4).
-  static const std::vector<NodeParam> params = {
-      {"odom_frame", kString, ""}, {"map_frame", kString, ""}, {"base_frame", kString, ""},
-      {"throttle_scans", kInt, "throttle_scans"}, {"map_update_interval", kDouble, ""},
-      {"transform_tolerance", kDouble, ""}, {"resolution", kDouble, "resolution"}, {"delta", kDouble, ""},
-      {"transform_publish_period", kDouble, ""}, {"minimum_time_interval", kDouble, ""}, MAPPER_PARAMS};
+  static const std::vector<NodeParam> params = {{"odom_frame", kString, ""},
+                                                {"map_frame", kString, ""},
+                                                {"base_frame", kString, ""},
+                                                {"throttle_scans", kInt, "throttle_scans"},
+                                                {"map_update_interval", kDouble, ""},
+                                                {"transform_tolerance", kDouble, ""},
+                                                {"resolution", kDouble, "resolution"},
+                                                {"delta", kDouble, ""},
+                                                {"transform_publish_period", kDouble, ""},
+                                                {"minimum_time_interval", kDouble, ""},
+                                                MAPPER_PARAMS};
   return params;
 }
 #undef MAPPER_PARAMS
@@ -303,9 +309,8 @@ bool IsFloat(const std::string& s) {
          std::regex_match(s, std::regex("[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)"));
 }
 bool IsBool(const std::string& s) {
-  static const char* kWords[] = {"true", "True", "TRUE", "false", "False", "FALSE",
-                                 "yes",  "Yes",  "YES",  "no",    "No",    "NO",
-                                 "on",   "On",   "ON",   "off",   "Off",   "OFF"};
+  static const char* kWords[] = {"true", "True", "TRUE", "false", "False", "FALSE", "yes", "Yes", "YES",
+                                 "no",   "No",   "NO",   "on",    "On",    "ON",    "off", "Off", "OFF"};
   return std::find(std::begin(kWords), std::end(kWords), s) != std::end(kWords);
 }
 
@@ -337,10 +342,10 @@ const NodeParam* FindNodeParam(RosNode node, std::string_view name) {
 MapperParams NodeDefaults(RosNode node) {
   if (node == RosNode::kSlamKarto) return MapperParams::Preset("open_karto");
   MapperParams p = MapperParams::Preset("slam_toolbox");
-  p.minimum_distance_penalty = 0.05;  // slam_mapper.cpp's declared default (its YAML writes 0.5)
-  p.max_laser_range = 25.0;           // laser_utils.cpp's declared default (its YAML writes 20.0)
+  p.minimum_distance_penalty = 0.05;                      // slam_mapper.cpp's declared default (its YAML writes 0.5)
+  p.max_laser_range = 25.0;                               // laser_utils.cpp's declared default (its YAML writes 20.0)
   p.ceres_preconditioner = CeresPreconditioner::kJacobi;  // ceres_solver.cpp's (its YAML: SCHUR_JACOBI)
-  p.sync_minimum_time_interval = 0.5;  // transform_timeout's declared 0.5 (slam_toolbox_common.cpp)
+  p.sync_minimum_time_interval = 0.5;                     // transform_timeout's declared 0.5 (slam_toolbox_common.cpp)
   return p;
 }
 
@@ -358,13 +363,13 @@ NodeFiles MakeNodeFiles(RosNode node, const NodeFileInputs& in, bool write_chang
   NodeFiles files;
   const std::string header = Comments(in.comments);
   const bool own_file = !in.base_file_text.empty() && NodeOfParamsFile(in.base_file_text, "base") == node;
-  files.full = header + (own_file ? FromBaseFile(node, in.base_file_text, in.tuned)
-                                  : ScratchFile(node, in.tuned, in.ros_level));
+  files.full =
+      header + (own_file ? FromBaseFile(node, in.base_file_text, in.tuned) : ScratchFile(node, in.tuned, in.ros_level));
   std::vector<std::pair<std::string, std::string>> change;
   for (const NodeParam& param : NodeParams(node)) {
     if (!Differs(param, in.base, in.tuned)) continue;
-    files.changed.push_back(fmt::format("{}: {} -> {}", param.name, NodeValue(param, in.base),
-                                        NodeValue(param, in.tuned)));
+    files.changed.push_back(
+        fmt::format("{}: {} -> {}", param.name, NodeValue(param, in.base), NodeValue(param, in.tuned)));
     change.emplace_back(param.name, NodeValue(param, in.tuned));
   }
   for (const NamedParam& named : ToNamedValues(in.tuned)) {
@@ -424,8 +429,8 @@ std::vector<std::string> CheckNodeFile(RosNode node, const std::string& yaml_tex
                                      ParamTypeName(got), ParamTypeName(param->type)));
     }
     if (name == "solver_plugin" && value.Scalar() != kCeresPlugin) {
-      problems.push_back(fmt::format("solver_plugin: '{}' is not registered by slam_toolbox (only {})", value.Scalar(),
-                                     kCeresPlugin));
+      problems.push_back(
+          fmt::format("solver_plugin: '{}' is not registered by slam_toolbox (only {})", value.Scalar(), kCeresPlugin));
     }
   }
   return problems;

@@ -54,9 +54,9 @@ MapperParams NodeDefaults(RosNode node);
 RosNode NodeOfParamsFile(const std::string& yaml_text, const std::string& source);
 
 struct NodeFileInputs {
-  MapperParams base;            // what was tuned from
-  MapperParams tuned;           // base with the recommended values
-  std::string base_file_text;   // the user's parameter file, or "" (a preset's defaults)
+  MapperParams base;                  // what was tuned from
+  MapperParams tuned;                 // base with the recommended values
+  std::string base_file_text;         // the user's parameter file, or "" (a preset's defaults)
   std::vector<std::string> comments;  // header lines, written as "# ..."
   // ROS-level values from the recording, for a file made from scratch (e.g. base_frame).
   std::map<std::string, std::string> ros_level;

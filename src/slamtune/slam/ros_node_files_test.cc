@@ -82,11 +82,12 @@ TEST(CheckNodeFile, AcceptsTheWaysRos2NamesTheNode) {
   EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox, "/slam_toolbox:\n" + params), IsEmpty());
   EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox, "/**:\n" + params), IsEmpty());
   // Another node's section beside it is that node's business.
+  EXPECT_THAT(
+      CheckNodeFile(RosNode::kSlamToolbox, "amcl:\n  ros__parameters:\n    alpha1: 0.2\nslam_toolbox:\n" + params),
+      IsEmpty());
   EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox,
-                            "amcl:\n  ros__parameters:\n    alpha1: 0.2\nslam_toolbox:\n" + params),
-              IsEmpty());
-  EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox, "amcl:\n  ros__parameters:\n    a: 1\nmap_server:\n"
-                                                   "  ros__parameters:\n    b: 2\n"),
+                            "amcl:\n  ros__parameters:\n    a: 1\nmap_server:\n"
+                            "  ros__parameters:\n    b: 2\n"),
               ElementsAre(HasSubstr("none for slam_toolbox")));
 }
 
@@ -153,8 +154,9 @@ TEST(MakeNodeFiles, ABareRos2MapIsWrappedForTheNodeAndOtherNodesAreKept) {
   EXPECT_THAT(files.full,
               HasSubstr("slam_toolbox:\n  ros__parameters:\n    loop_search_maximum_distance: 5.25  # r\n"));
 
-  const std::string two = "amcl:\n  ros__parameters:\n    alpha1: 0.2\n/**:\n  ros__parameters:\n"
-                          "    loop_search_maximum_distance: 3.0\n";
+  const std::string two =
+      "amcl:\n  ros__parameters:\n    alpha1: 0.2\n/**:\n  ros__parameters:\n"
+      "    loop_search_maximum_distance: 3.0\n";
   files = MakeNodeFiles(RosNode::kSlamToolbox, Inputs(Meaning(RosNode::kSlamToolbox, two), two), true);
   EXPECT_THAT(CheckNodeFile(RosNode::kSlamToolbox, files.full), IsEmpty()) << files.full;
   EXPECT_THAT(files.full, HasSubstr("amcl:\n  ros__parameters:\n    alpha1: 0.2\n/**:\n"));

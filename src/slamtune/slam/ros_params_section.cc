@@ -57,9 +57,9 @@ ParamsSection FindParamsSection(const YAML::Node& root, const std::string& sourc
   if (chosen < 0) chosen = wildcard;
   if (chosen < 0 && nodes.size() == 1) chosen = 0;
   if (chosen < 0) {
-    throw InputError(source, LineOf(root),
-                     fmt::format("the file has parameters for the nodes {} and none for slam_toolbox",
-                                 fmt::join(nodes, ", ")));
+    throw InputError(
+        source, LineOf(root),
+        fmt::format("the file has parameters for the nodes {} and none for slam_toolbox", fmt::join(nodes, ", ")));
   }
   return Checked({sections[chosen], true, nodes[chosen]}, source);
 }

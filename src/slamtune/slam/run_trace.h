@@ -7,7 +7,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstdio>
 #include <string>
 
@@ -18,15 +17,15 @@ namespace slamtune::slam {
 
 // One scan match as the mapper used it.
 struct TracedMatch {
-  const char* kind = "";      // sequential, near_chain, loop_coarse, loop_fine
-  int log_index = -1;         // log scan index of the scan being matched
-  int scan = -1;              // its state id
-  int base_first = -1;        // state ids of the first and last scan matched against
+  const char* kind = "";  // sequential, near_chain, loop_coarse, loop_fine
+  int log_index = -1;     // log scan index of the scan being matched
+  int scan = -1;          // its state id
+  int base_first = -1;    // state ids of the first and last scan matched against
   int base_last = -1;
-  int base_size = 0;          // how many scans
-  Pose2 pose_in;              // sensor pose the search was centred on
+  int base_size = 0;  // how many scans
+  Pose2 pose_in;      // sensor pose the search was centred on
   double response = 0.0;
-  Pose2 mean;                 // sensor pose found
+  Pose2 mean;  // sensor pose found
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   const char* decision = "";  // what the mapper did with it (docs/trace.md)
 };

@@ -31,8 +31,8 @@ void ScanLookupTable::Compute(const LaserScan& scan, double angle_center, double
 
   // The tables are a function of exactly these inputs; when every bit repeats the previous
   // call (the near chains of one scan are matched from the same pose), they are kept.
-  const double inputs[] = {angle_center, angle_offset, angle_step, grid_origin.x(), grid_origin.y(), scale,
-                           static_cast<double>(stride)};
+  const double inputs[] = {
+      angle_center, angle_offset, angle_step, grid_origin.x(), grid_origin.y(), scale, static_cast<double>(stride)};
   static_assert(sizeof(inputs) == sizeof(inputs_));
   const bool same = computed_ && std::memcmp(inputs, inputs_, sizeof(inputs)) == 0 &&
                     previous_local_points_.size() == local_points_.size() &&

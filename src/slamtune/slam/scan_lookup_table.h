@@ -14,7 +14,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -54,15 +53,15 @@ class ScanLookupTable {
   std::span<const std::int32_t> checked_offsets(int k) const { return Slice(checked_, checked_begin_, k); }
 
  private:
-  static std::span<const std::int32_t> Slice(const std::vector<std::int32_t>& v,
-                                             const std::vector<std::size_t>& begin, int k) {
+  static std::span<const std::int32_t> Slice(const std::vector<std::int32_t>& v, const std::vector<std::size_t>& begin,
+                                             int k) {
     const std::size_t b = begin[static_cast<std::size_t>(k)], e = begin[static_cast<std::size_t>(k) + 1];
     return {v.data() + b, e - b};
   }
 
   int num_beams_ = 0;
   std::vector<double> angles_;
-  std::vector<std::int32_t> offsets_;  // K x num_beams, heading-major
+  std::vector<std::int32_t> offsets_;          // K x num_beams, heading-major
   std::vector<Eigen::Vector2d> local_points_;  // scratch: points in the sensor frame
   std::vector<std::uint8_t> invalid_;          // scratch: reading is NaN or +-inf
   // Inputs of the tables in offsets_ (Compute skips the work when they repeat bit for bit).

@@ -51,19 +51,19 @@ void ScanMatcherOptions::Validate() const {
   const double cells = search_dimension / search_resolution;
   const double rounded = KartoRound(cells);
   if (!KartoEqual(rounded, cells) || std::fmod(rounded, 2.0) != 0.0) {
-    throw InputError(fmt::format(
-        "scan matcher option search_dimension / search_resolution = {} / {} = {}: must be an even integer",
-        search_dimension, search_resolution, cells));
+    throw InputError(
+        fmt::format("scan matcher option search_dimension / search_resolution = {} / {} = {}: must be an even integer",
+                    search_dimension, search_resolution, cells));
   }
   // Karto throws outside [0.5 rho, 10 rho] (the kernel spans 2 sigma, §4.1).
   if (smear_deviation < 0.5 * search_resolution || smear_deviation > 10 * search_resolution) {
-    throw InputError(fmt::format(
-        "scan matcher option smear_deviation = {}: must lie in [0.5, 10] x search_resolution = [{}, {}]",
-        smear_deviation, 0.5 * search_resolution, 10 * search_resolution));
+    throw InputError(
+        fmt::format("scan matcher option smear_deviation = {}: must lie in [0.5, 10] x search_resolution = [{}, {}]",
+                    smear_deviation, 0.5 * search_resolution, 10 * search_resolution));
   }
   if (!(minimum_distance_penalty >= 0.0 && minimum_distance_penalty <= 1.0)) {
-    throw InputError(fmt::format("scan matcher option minimum_distance_penalty = {}: must lie in [0, 1]",
-                                 minimum_distance_penalty));
+    throw InputError(
+        fmt::format("scan matcher option minimum_distance_penalty = {}: must lie in [0, 1]", minimum_distance_penalty));
   }
   if (!(minimum_angle_penalty >= 0.0 && minimum_angle_penalty <= 1.0)) {
     throw InputError(
@@ -133,10 +133,10 @@ struct ScanMatcher::Impl {
   CandidateCells cells;
   std::vector<double> offsets;  // lattice offsets from the centre, both axes
   std::vector<std::int32_t> sums;
-  std::vector<double> responses;       // penalised passes only
+  std::vector<double> responses;         // penalised passes only
   std::vector<std::int32_t> max_sum_at;  // unpenalised passes: best sum over headings per position
-  std::vector<double> cell_maximum;     // coarse passes: best response over headings per position
-  std::vector<double> response_of_sum;  // sum -> sum / (100 * beams), for the current beam count
+  std::vector<double> cell_maximum;      // coarse passes: best response over headings per position
+  std::vector<double> response_of_sum;   // sum -> sum / (100 * beams), for the current beam count
   PrunedSearchScratch pruned_scratch;
   std::vector<double> heading_cos, heading_sin;  // of the normalised heading alpha_k
   std::vector<double> raw_at_best, angles;       // angular covariance inputs

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <limits>
 #include <memory>
 #include <span>
@@ -26,10 +25,10 @@ namespace slamtune::slam {
 
 // Parameters of one matcher. Internal units (variance penalties already squared, §9.1).
 struct ScanMatcherOptions {
-  double search_dimension = 0.3;         // m, side of the xy search window (CorrelationSearchSpaceDimension)
-  double search_resolution = 0.01;       // m, grid cell size rho
-  double smear_deviation = 0.03;         // m, sigma of the smearing kernel
-  double range_threshold = 12.0;         // m, sets the grid margin (§4.1)
+  double search_dimension = 0.3;               // m, side of the xy search window (CorrelationSearchSpaceDimension)
+  double search_resolution = 0.01;             // m, grid cell size rho
+  double smear_deviation = 0.03;               // m, sigma of the smearing kernel
+  double range_threshold = 12.0;               // m, sets the grid margin (§4.1)
   double coarse_angle_offset = 0.349066;       // rad, +- range of the coarse angle search
   double coarse_angle_resolution = 0.0349066;  // rad, coarse angle step
   double fine_angle_step = 0.0034907;          // rad, FineSearchAngleOffset (a step, §4.2 item 6)
@@ -52,9 +51,9 @@ struct ScanMatcherOptions {
 };
 
 struct MatchResult {
-  Pose2 mean;                                       // sensor pose of the best match
+  Pose2 mean;  // sensor pose of the best match
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
-  double response = 0.0;                            // in [0, 1]
+  double response = 0.0;  // in [0, 1]
 };
 
 // Stands for a match that was not computed because its response provably cannot exceed the

@@ -52,8 +52,7 @@ struct Scene {
 };
 
 Scene MakeScene(const Pose2& truth, const Pose2& perturbation, int num_base = 5,
-                const std::vector<testing::WallSegment>& walls = testing::AsymmetricRoom(),
-                double no_return = 81.83) {
+                const std::vector<testing::WallSegment>& walls = testing::AsymmetricRoom(), double no_return = 81.83) {
   const auto laser = testing::CarmenLikeLaser();
   Scene scene{{}, testing::CastScan(walls, laser, truth, no_return)};
   for (int i = num_base; i >= 1; --i) {

@@ -80,9 +80,9 @@ optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
     res.evaluations.push_back(FakeRecord(2.0 + 0.3 * i, 6 + i, q, with_ground_truth));
   }
   res.evaluations.push_back(res.evaluations[3]);  // a repeated key: counted once in the correlation
-  res.evaluations.push_back(optim::EvaluationRecord::Failed("k-failed", {{"loop_search_maximum_distance", 5.9},
-                                                                       {"loop_match_minimum_chain_size", 20}},
-                                                            "scan matcher threw: bad, \"quoted\" reason"));
+  res.evaluations.push_back(optim::EvaluationRecord::Failed(
+      "k-failed", {{"loop_search_maximum_distance", 5.9}, {"loop_match_minimum_chain_size", 20}},
+      "scan matcher threw: bad, \"quoted\" reason"));
   for (int gen : {1, 3, 5}) {
     optim::GenerationSnapshot s;
     s.generation = gen;
@@ -115,8 +115,7 @@ optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
   region.loop_closures = res.candidates[0].record.loop_closures;
   region.members = 4;
   region.evaluated = 12;
-  region.ranges = {{"loop_search_maximum_distance", 2.6, 3.5, false},
-                   {"loop_match_minimum_chain_size", 10, 14, true}};
+  region.ranges = {{"loop_search_maximum_distance", 2.6, 3.5, false}, {"loop_match_minimum_chain_size", 10, 14, true}};
   res.equivalent_region = region;
   res.evaluation_count = 13;
   res.cache_hits = 27;

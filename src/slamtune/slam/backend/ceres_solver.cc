@@ -90,8 +90,8 @@ ceres::Solver::Options SolverOptionsOf(const CeresOptions& options) {
   o.linear_solver_type = LinearSolverOf(c.linear_solver);
   o.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
   o.preconditioner_type = PreconditionerOf(c.preconditioner);
-  o.trust_region_strategy_type = c.trust_strategy == CeresTrustStrategy::kDogleg ? ceres::DOGLEG
-                                                                                  : ceres::LEVENBERG_MARQUARDT;
+  o.trust_region_strategy_type =
+      c.trust_strategy == CeresTrustStrategy::kDogleg ? ceres::DOGLEG : ceres::LEVENBERG_MARQUARDT;
   if (o.trust_region_strategy_type == ceres::DOGLEG) {
     o.dogleg_type = c.dogleg_type == CeresDoglegType::kSubspace ? ceres::SUBSPACE_DOGLEG : ceres::TRADITIONAL_DOGLEG;
   }

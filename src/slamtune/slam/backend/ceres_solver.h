@@ -15,8 +15,8 @@
 namespace slamtune::slam {
 
 struct CeresOptions {
-  CeresChoices choices;        // loss, linear solver, preconditioner, trust region
-  int max_iterations = 50;     // Ceres default
+  CeresChoices choices;     // loss, linear solver, preconditioner, trust region
+  int max_iterations = 50;  // Ceres default
   double function_tolerance = 1e-3;
   double gradient_tolerance = 1e-6;
   double parameter_tolerance = 1e-3;

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <memory>
 #include <span>
 #include <string>
@@ -20,22 +19,22 @@ namespace slamtune::slam {
 
 // What one solve did.
 struct SolveSummary {
-  std::string backend;         // "spa" or "ceres"
-  int iterations = 0;          // LM iterations run (accepted and rejected)
+  std::string backend;  // "spa" or "ceres"
+  int iterations = 0;   // LM iterations run (accepted and rejected)
   int accepted_steps = 0;
-  double initial_cost = 0.0;   // sum e^T Lambda e before
-  double final_cost = 0.0;     // and after
-  bool updated = false;        // false when the solver left the node values unchanged
-  bool usable = true;          // false: write nothing back (Ceres "solution unusable", §7.4)
-  std::string termination;     // why it stopped
-  double wall_s = 0.0;         // wall time of the solve (set by the caller that times it)
+  double initial_cost = 0.0;  // sum e^T Lambda e before
+  double final_cost = 0.0;    // and after
+  bool updated = false;       // false when the solver left the node values unchanged
+  bool usable = true;         // false: write nothing back (Ceres "solution unusable", §7.4)
+  std::string termination;    // why it stopped
+  double wall_s = 0.0;        // wall time of the solve (set by the caller that times it)
   // Per iteration that took a step (spa only): the cost after the step and whether it was kept.
   struct Step {
     double cost = 0.0;
     bool accepted = false;
   };
   std::vector<Step> steps;
-  int cholesky_failures = 0;   // spa: factorisations that failed (the step was then the gradient)
+  int cholesky_failures = 0;  // spa: factorisations that failed (the step was then the gradient)
 };
 
 // §7.2 error of one edge for node values a (source) and b (target):

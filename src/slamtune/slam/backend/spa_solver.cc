@@ -1,7 +1,6 @@
 #include "slamtune/slam/backend/spa_solver.h"
 
 #include <Eigen/Core>
-
 #include <cmath>
 
 #include "slamtune/common/karto_math.h"

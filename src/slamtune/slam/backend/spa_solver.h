@@ -16,8 +16,8 @@
 namespace slamtune::slam {
 
 struct SpaOptions {
-  int max_iterations = 40;         // doSPA(40)
-  double initial_lambda = 1e-4;    // reset at every call
+  int max_iterations = 40;                // doSPA(40)
+  double initial_lambda = 1e-4;           // reset at every call
   double min_squared_step = 1e-8 * 1e-8;  // stop when |delta|^2 is below this (sba's product, not 1e-16)
 };
 

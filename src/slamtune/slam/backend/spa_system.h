@@ -21,7 +21,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <span>
 #include <vector>
 
@@ -33,10 +32,10 @@ namespace slamtune::slam {
 // A node as the SPA system sees it: homogeneous position, heading, world-to-node transform and
 // the derivative of R^T by the heading.
 struct SpaNodeFrame {
-  Eigen::Matrix<double, 3, 1> position;           // (x, y, 1)
+  Eigen::Matrix<double, 3, 1> position;  // (x, y, 1)
   double heading = 0.0;
-  Eigen::Matrix<double, 2, 3> world_to_node;      // [R^T | -(R^T t)]
-  Eigen::Matrix2d rotation_derivative;            // d(R^T)/d(theta)
+  Eigen::Matrix<double, 2, 3> world_to_node;  // [R^T | -(R^T t)]
+  Eigen::Matrix2d rotation_derivative;        // d(R^T)/d(theta)
 };
 
 SpaNodeFrame MakeSpaNodeFrame(const Pose2& pose);
@@ -69,7 +68,7 @@ class SpaNormalEquations {
   // which was made at the same frames).
   void Fill(std::span<const SpaNodeFrame> frames, double lambda);
 
-  int size() const { return 3 * num_free_; }  // rows of H
+  int size() const { return 3 * num_free_; }                                // rows of H
   const std::vector<int>& column_starts() const { return column_starts_; }  // size() + 1
   const std::vector<int>& row_indices() const { return row_indices_; }
   const std::vector<double>& values() const { return values_; }
@@ -77,10 +76,10 @@ class SpaNormalEquations {
 
  private:
   struct EdgeSlots {
-    int source_block = -1;     // free index of the source node, -1 when fixed
+    int source_block = -1;  // free index of the source node, -1 when fixed
     int target_block = -1;
-    int off_diagonal = -1;     // index into off_diagonal_, -1 when a node is fixed
-    bool transposed = false;   // the stored block is H_ij^T (target block before source block)
+    int off_diagonal = -1;    // index into off_diagonal_, -1 when a node is fixed
+    bool transposed = false;  // the stored block is H_ij^T (target block before source block)
   };
   void BuildPattern();
 

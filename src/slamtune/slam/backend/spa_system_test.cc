@@ -68,8 +68,8 @@ TEST(SpaNormalEquations, CompressedColumnLayoutOfTheUpperTriangle) {
   // Free blocks 0..2 (nodes 1..3); off-diagonal blocks (0,1) and (0,2) and (1,2).
   EXPECT_THAT(system.column_starts(), ElementsAre(0, 1, 3, 6, 10, 15, 21, 28, 36, 45));
   EXPECT_THAT(system.row_indices(),
-              ElementsAre(0, 0, 1, 0, 1, 2,                                 // block column 0: diagonal only
-                          0, 1, 2, 3, 0, 1, 2, 3, 4, 0, 1, 2, 3, 4, 5,        // column 1: block (0,1), diagonal
+              ElementsAre(0, 0, 1, 0, 1, 2,                             // block column 0: diagonal only
+                          0, 1, 2, 3, 0, 1, 2, 3, 4, 0, 1, 2, 3, 4, 5,  // column 1: block (0,1), diagonal
                           0, 1, 2, 3, 4, 5, 6, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 8));
 }
 

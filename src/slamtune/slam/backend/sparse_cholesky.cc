@@ -31,7 +31,10 @@ struct SparseCholesky::Analysis {
 
 SparseCholesky::SparseCholesky(int n, const std::vector<int>& column_starts, const std::vector<int>& row_indices,
                                const SparseCholeskyOptions& options)
-    : n_(n), amd_(Order(n, options) == 1), column_starts_(column_starts), row_indices_(row_indices),
+    : n_(n),
+      amd_(Order(n, options) == 1),
+      column_starts_(column_starts),
+      row_indices_(row_indices),
       analysis_(std::make_unique<Analysis>()) {
   SLAMTUNE_CHECK(n >= 0 && static_cast<int>(column_starts_.size()) == n + 1);
   const cs_di a = View(n_, column_starts_, row_indices_, nullptr);

@@ -18,7 +18,7 @@ namespace {
 struct Avx2Blocks {
   template <typename Acc, int kBlock>
   __attribute__((target("avx2"))) static void Sum(const std::uint8_t* base, std::span<const std::int32_t> offsets,
-                                                   Acc* out) {
+                                                  Acc* out) {
     static_assert(std::is_same_v<Acc, std::uint16_t> && kBlock % 16 == 0);
     constexpr int kVectors = kBlock / 16;
     __m256i acc[kVectors];
@@ -45,10 +45,10 @@ struct Avx2Blocks {
 // loop over every beam.
 template <int kBlock>
 __attribute__((target("avx2"), flatten)) void SumStepTwoColumnsAvx2(const std::uint8_t* grid, std::int64_t data_size,
-                                                                   const ScanLookupTable& table, std::int32_t row0,
-                                                                   int x_begin, int x_end,
-                                                                   RowScratch<std::uint16_t>* scratch,
-                                                                   std::int32_t* out) {
+                                                                    const ScanLookupTable& table, std::int32_t row0,
+                                                                    int x_begin, int x_end,
+                                                                    RowScratch<std::uint16_t>* scratch,
+                                                                    std::int32_t* out) {
   SumStepTwoColumns<std::uint16_t, kBlock, Avx2Blocks>(grid, data_size, table, row0, x_begin, x_end, scratch, out);
 }
 

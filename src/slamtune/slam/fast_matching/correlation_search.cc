@@ -87,9 +87,8 @@ void SumAllCandidates(const std::uint8_t* grid, std::int64_t data_size, const Sc
     }
   };
   const std::int64_t reads = static_cast<std::int64_t>(sums->size()) * table.num_beams();
-  const int workers =
-      static_cast<int>(std::clamp<std::int64_t>(std::min<std::int64_t>(threads, reads / kMinReadsPerThread), 1,
-                                                std::max(cells.ny, 1)));
+  const int workers = static_cast<int>(
+      std::clamp<std::int64_t>(std::min<std::int64_t>(threads, reads / kMinReadsPerThread), 1, std::max(cells.ny, 1)));
   if (workers <= 1) {
     run(0, cells.ny);
     return;

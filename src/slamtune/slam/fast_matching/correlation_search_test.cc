@@ -1,5 +1,4 @@
 #include "slamtune/slam/fast_matching/correlation_search.h"
-#include "slamtune/slam/fast_matching/correlation_kernels.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +7,8 @@
 #include <limits>
 #include <random>
 #include <vector>
+
+#include "slamtune/slam/fast_matching/correlation_kernels.h"
 
 namespace slamtune::slam {
 namespace {

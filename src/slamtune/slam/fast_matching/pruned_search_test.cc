@@ -53,9 +53,9 @@ TEST(PrunedSearch, SkipsOnlyCandidatesFarBelowTheBest) {
   };
   PrunedSearchScratch scratch;
   std::vector<std::int32_t> sums, max_sum_at;
-  const PrunedSearchStats stats = SumCandidatesPruned(pass.grid.data(), pass.grid.data_size(),
-                                                      pass.grid.geometry().stride, pass.table, pass.cells, prunable,
-                                                      &scratch, &sums, &max_sum_at);
+  const PrunedSearchStats stats =
+      SumCandidatesPruned(pass.grid.data(), pass.grid.data_size(), pass.grid.geometry().stride, pass.table, pass.cells,
+                          prunable, &scratch, &sums, &max_sum_at);
   EXPECT_EQ(stats.blocks, 21 * 6);
   EXPECT_LT(stats.blocks_evaluated, stats.blocks / 2) << "the bound should prune most blocks";
   EXPECT_EQ(*std::max_element(max_sum_at.begin(), max_sum_at.end()), best);
@@ -81,9 +81,9 @@ TEST(PrunedSearch, NothingPrunableGivesTheExhaustiveSums) {
   SumAllCandidates(pass.grid.data(), pass.grid.data_size(), pass.table, pass.cells, 1, &full);
   PrunedSearchScratch scratch;
   std::vector<std::int32_t> sums, max_sum_at;
-  const PrunedSearchStats stats =
-      SumCandidatesPruned(pass.grid.data(), pass.grid.data_size(), pass.grid.geometry().stride, pass.table, pass.cells,
-                          [](std::int32_t, std::int32_t) { return false; }, &scratch, &sums, &max_sum_at);
+  const PrunedSearchStats stats = SumCandidatesPruned(
+      pass.grid.data(), pass.grid.data_size(), pass.grid.geometry().stride, pass.table, pass.cells,
+      [](std::int32_t, std::int32_t) { return false; }, &scratch, &sums, &max_sum_at);
   EXPECT_EQ(stats.blocks_evaluated, stats.blocks);
   EXPECT_EQ(sums, full);
 }

@@ -232,8 +232,7 @@ int ResponseBound::MaxCount(const LaserScan& scan, int stop_at, Count goal) {
   return best;
 }
 
-bool ResponseBound::MayExceed(const LaserScan& scan, std::span<const LaserScan* const> base_scans,
-                              double threshold) {
+bool ResponseBound::MayExceed(const LaserScan& scan, std::span<const LaserScan* const> base_scans, double threshold) {
   const std::size_t beams = scan.ranges().size();
   if (beams == 0) return 0.0 > threshold;  // Match returns response 0 (§4.2 item 1)
   if (num_buckets_ == 0) return true;

@@ -29,7 +29,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -66,18 +65,18 @@ class ResponseBound {
   int MaxCount(const LaserScan& scan, int stop_at, Count goal);
 
   CorrelationGridGeometry geometry_;
-  double resolution_;          // rho, as the grid reads it back (1 / scale)
-  double window_;              // W: largest |offset| of a scored position from the scan's, per axis
-  double heading_lo_ = 0.0;    // scored headings lie in [theta + lo, theta + hi]
+  double resolution_;        // rho, as the grid reads it back (1 / scale)
+  double window_;            // W: largest |offset| of a scored position from the scan's, per axis
+  double heading_lo_ = 0.0;  // scored headings lie in [theta + lo, theta + hi]
   double heading_hi_ = 0.0;
-  double bucket_half_ = 0.0;   // delta
+  double bucket_half_ = 0.0;  // delta
   int num_buckets_ = 0;
-  double slack_;               // (h + 2.5) rho
-  double cell_;                // bitmap cell size s (metres)
+  double slack_;  // (h + 2.5) rho
+  double cell_;   // bitmap cell size s (metres)
   int words_per_row_ = 0;
-  int side_ = 0;               // bitmap columns = rows
-  Eigen::Vector2d origin_{0, 0};       // ROI cell (0, 0) of the current match (metres)
-  Eigen::Vector2d stored_lo_{0, 0};    // metric corner of the stored grid's cell (0, 0)
+  int side_ = 0;                     // bitmap columns = rows
+  Eigen::Vector2d origin_{0, 0};     // ROI cell (0, 0) of the current match (metres)
+  Eigen::Vector2d stored_lo_{0, 0};  // metric corner of the stored grid's cell (0, 0)
   // Each scan's points as cells of a world-aligned lattice of size s (so that they do not
   // depend on the match's origin), consecutive repeats dropped; kept while the scan's
   // readings and sensor pose are the same bits. The entry holds the readings, so their
@@ -85,7 +84,7 @@ class ResponseBound {
   struct ScanCells {
     std::shared_ptr<const std::vector<double>> ranges;
     Pose2 sensor_pose;
-    std::vector<std::int32_t> cells;  // x0, y0, x1, y1, ...
+    std::vector<std::int32_t> cells;                            // x0, y0, x1, y1, ...
     std::int32_t min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // their box (empty: max < min)
   };
   const ScanCells& CellsOf(const LaserScan& scan);
@@ -93,7 +92,7 @@ class ResponseBound {
   std::int32_t bitmap_x0_ = 0, bitmap_y0_ = 0;  // lattice cell of bitmap column / row 0
   std::vector<std::uint64_t> bits_;
   std::int32_t marked_x0_ = 0, marked_y0_ = 0, marked_x1_ = -1, marked_y1_ = -1;  // bitmap box of marked cells
-  std::vector<int> bucket_order_;      // centre first, then alternating outwards
+  std::vector<int> bucket_order_;       // centre first, then alternating outwards
   std::vector<Eigen::Vector2d> local_;  // valid beams' end points in the sensor frame
   std::vector<double> reach_;           // W + r delta of each of them
 };

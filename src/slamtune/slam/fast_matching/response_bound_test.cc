@@ -22,9 +22,7 @@ namespace {
 // The sequential matchers of the two presets (slam_toolbox: wider window and smear,
 // response expansion on), as the mapper builds them.
 ScanMatcherOptions KartoSequential() { return MapperParams::Preset("slam_karto").SequentialMatcherOptions(12.0); }
-ScanMatcherOptions ToolboxSequential() {
-  return MapperParams::Preset("slam_toolbox").SequentialMatcherOptions(20.0);
-}
+ScanMatcherOptions ToolboxSequential() { return MapperParams::Preset("slam_toolbox").SequentialMatcherOptions(20.0); }
 
 double BoundOf(ResponseBound& bound, const LaserScan& scan, const std::vector<const LaserScan*>& base) {
   return static_cast<double>(bound.MaxSumBound(scan, base)) / (100.0 * static_cast<double>(scan.ranges().size()));
@@ -62,8 +60,8 @@ TEST(ResponseBound, NeverBelowTheBestResponseInTheSyntheticRoom) {
       const Pose2 elsewhere{x(rng), y(rng), heading(rng)};
       std::vector<LaserScan> chain;
       for (int k = 0; k < 3; ++k) {
-        chain.push_back(testing::CastScan(
-            walls, laser, {elsewhere.x + 0.2 * k, elsewhere.y, elsewhere.theta + 0.1 * k}));
+        chain.push_back(
+            testing::CastScan(walls, laser, {elsewhere.x + 0.2 * k, elsewhere.y, elsewhere.theta + 0.1 * k}));
       }
       std::vector<const LaserScan*> base;
       for (const LaserScan& c : chain) base.push_back(&c);

@@ -37,10 +37,11 @@ void MatchCacheOptions::Validate() const {
 
 std::string MatchCacheCounters::ToString() const {
   const std::uint64_t calls = hits + waits + misses;
-  return fmt::format("match cache: {} hits, {} waits, {} misses (served {:.1f}% of {} matches), {} bypassed, "
-                     "{} evictions, {} entries, {} interned scans, {:.1f} MB",
-                     hits, waits, misses, calls > 0 ? 100.0 * static_cast<double>(hits + waits) / calls : 0.0, calls,
-                     bypassed, evictions, entries, interned, static_cast<double>(bytes) / (1 << 20));
+  return fmt::format(
+      "match cache: {} hits, {} waits, {} misses (served {:.1f}% of {} matches), {} bypassed, "
+      "{} evictions, {} entries, {} interned scans, {:.1f} MB",
+      hits, waits, misses, calls > 0 ? 100.0 * static_cast<double>(hits + waits) / calls : 0.0, calls, bypassed,
+      evictions, entries, interned, static_cast<double>(bytes) / (1 << 20));
 }
 
 MatchCache::MatchCache(const MatchCacheOptions& options) : options_(options) { options_.Validate(); }
@@ -116,9 +117,9 @@ std::vector<std::uint64_t> MatchCache::KeyLocked(MatchRole role, const ScanMatch
   header.reserve(32);
   header.push_back(static_cast<std::uint64_t>(role));
   // ScanMatcherOptions: every field but `threads` and `branch_and_bound` (result-independent).
-  for (double v : {o.search_dimension, o.search_resolution, o.smear_deviation, o.range_threshold,
-                   o.coarse_angle_offset, o.coarse_angle_resolution, o.fine_angle_step, o.distance_variance_penalty,
-                   o.angle_variance_penalty, o.minimum_distance_penalty, o.minimum_angle_penalty}) {
+  for (double v : {o.search_dimension, o.search_resolution, o.smear_deviation, o.range_threshold, o.coarse_angle_offset,
+                   o.coarse_angle_resolution, o.fine_angle_step, o.distance_variance_penalty, o.angle_variance_penalty,
+                   o.minimum_distance_penalty, o.minimum_angle_penalty}) {
     header.push_back(Bits(v));
   }
   header.push_back((o.use_response_expansion ? 1u : 0u) | (penalize == Penalize::kYes ? 2u : 0u) |

@@ -145,8 +145,8 @@ class MatchCache {
   std::unordered_map<std::vector<std::uint64_t>, std::uint32_t, KeyWordsHash> headers_;
   std::unordered_map<GeometryWords, std::uint32_t, KeyWordsHash> geometry_ids_;
   std::unordered_map<ScanWords, std::uint32_t, KeyWordsHash> scan_ids_;
-  std::vector<ScanWords> id_words_;   // by id
-  std::vector<std::uint32_t> refs_;   // by id: entries referring to it, or kFreeId
+  std::vector<ScanWords> id_words_;  // by id
+  std::vector<std::uint32_t> refs_;  // by id: entries referring to it, or kFreeId
   std::vector<std::uint32_t> free_ids_;
   std::map<std::uint64_t, std::shared_ptr<const std::vector<double>>> readings_;  // by address
   std::uint64_t next_sequence_ = 0;

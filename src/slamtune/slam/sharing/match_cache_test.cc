@@ -100,9 +100,8 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
   Fixture f;
   MatchCache cache;
   const auto key = [&](MatchRole role, const ScanMatcherOptions& o, const LaserScan& s,
-                       const std::vector<const LaserScan*>& b, Penalize penalize, Refine refine) {
-    return cache.KeyOf(role, o, s, b, penalize, refine);
-  };
+                       const std::vector<const LaserScan*>& b, Penalize penalize,
+                       Refine refine) { return cache.KeyOf(role, o, s, b, penalize, refine); };
   const auto base = key(MatchRole::kSequential, f.options, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
   ASSERT_FALSE(base.empty());
   EXPECT_NE(base, key(MatchRole::kLoop, f.options, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes));

@@ -56,8 +56,8 @@ std::optional<SolveCache::Solved> SolveCache::Find(const std::vector<std::uint64
 
 void SolveCache::Store(std::vector<std::uint64_t> key, Solved solved) {
   Entry entry;
-  entry.bytes = key.size() * sizeof(std::uint64_t) +
-                (solved.nodes.size() + solved.barycenters.size()) * sizeof(Pose2) + kEntryOverheadBytes;
+  entry.bytes = key.size() * sizeof(std::uint64_t) + (solved.nodes.size() + solved.barycenters.size()) * sizeof(Pose2) +
+                kEntryOverheadBytes;
   entry.solved = std::move(solved);
   std::lock_guard guard(mutex_);
   if (entry.bytes > byte_budget_ || entries_.count(key) != 0) return;
@@ -69,8 +69,8 @@ void SolveCache::Store(std::vector<std::uint64_t> key, Solved solved) {
 }
 
 void SolveCache::EvictLeastRecentlyUsedHalfLocked() {
-  counters_.evictions +=
-      EvictLeastRecentlyUsedHalf(entries_, [](const Entry& entry) { return entry.bytes; }, &counters_.bytes);
+  counters_.evictions += EvictLeastRecentlyUsedHalf(
+      entries_, [](const Entry& entry) { return entry.bytes; }, &counters_.bytes);
   counters_.entries = entries_.size();
 }
 

@@ -48,8 +48,7 @@ TEST(SolveCache, HitGivesTheSolversResultBitForBit) {
   ASSERT_TRUE(again.has_value());
   EXPECT_TRUE(SameBits(again->nodes, direct));
   EXPECT_EQ(again->summary.iterations, expected.iterations);
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(again->summary.final_cost),
-            std::bit_cast<std::uint64_t>(expected.final_cost));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(again->summary.final_cost), std::bit_cast<std::uint64_t>(expected.final_cost));
   ASSERT_EQ(again->barycenters.size(), 1u);
   EXPECT_EQ(again->barycenters[0].x, 0.5);
   EXPECT_EQ(cache.counters().hits, 1u);

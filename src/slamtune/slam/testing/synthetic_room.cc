@@ -29,12 +29,12 @@ double RayHit(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const WallSegm
 
 std::vector<WallSegment> AsymmetricRoom() {
   std::vector<WallSegment> walls;
-  AddBox(&walls, 0.0, 0.0, 10.0, 8.0);          // outer walls
-  walls.push_back({{6.0, 0.0}, {6.0, 3.5}});    // inner wall from the bottom
-  AddBox(&walls, 2.0, 5.0, 3.2, 5.6);           // box
-  AddBox(&walls, 7.5, 5.5, 8.1, 6.9);           // box
-  AddBox(&walls, 3.9, 2.0, 4.2, 2.3);           // pillar
-  walls.push_back({{0.0, 6.5}, {1.2, 8.0}});    // slanted corner
+  AddBox(&walls, 0.0, 0.0, 10.0, 8.0);        // outer walls
+  walls.push_back({{6.0, 0.0}, {6.0, 3.5}});  // inner wall from the bottom
+  AddBox(&walls, 2.0, 5.0, 3.2, 5.6);         // box
+  AddBox(&walls, 7.5, 5.5, 8.1, 6.9);         // box
+  AddBox(&walls, 3.9, 2.0, 4.2, 2.3);         // pillar
+  walls.push_back({{0.0, 6.5}, {1.2, 8.0}});  // slanted corner
   return walls;
 }
 
