@@ -2,9 +2,59 @@
 
 #include <fmt/format.h>
 
+#include <array>
+
 #include "slamtune/common/error.h"
 
 namespace slamtune::optim {
+namespace {
+
+// The share of the map's scan end points that land in cells the final map calls free or
+// unknown (slam/occupancy_grid.h); no end point on the map at all: nothing backs it.
+double UnbackedHits(const EvaluationRecord& r) {
+  if (!(r.hits > 0.0)) return 1.0;
+  return (r.hits_in_free_cells + r.hits_in_unknown_cells) / r.hits;
+}
+
+using R = EvaluationRecord;
+constexpr auto kObjectivesGroup = FigureStorage::kObjectivesGroup;
+constexpr auto kSecondGroup = FigureStorage::kSecondGroup;
+
+const std::array<RecordFigure, 12> kFigures = {{
+    {"occupied_ratio", &R::occupied_ratio, nullptr, kObjectivesGroup, true},
+    {"corner_pixels", &R::corner_pixels, nullptr, kObjectivesGroup, true},
+    {"enclosed_areas", &R::enclosed_areas, nullptr, kObjectivesGroup, true},
+    {"occupied_ratio_known", &R::occupied_ratio_known, nullptr, kSecondGroup, true},
+    {"corners", &R::corners, nullptr, kSecondGroup, true},
+    {"contours", &R::contours, nullptr, kSecondGroup, true},
+    {"occupied_cells", &R::occupied_cells, nullptr, kSecondGroup, false},
+    {"hits", &R::hits, nullptr, kSecondGroup, false},
+    {"hits_in_free_cells", &R::hits_in_free_cells, nullptr, kSecondGroup, false},
+    {"hits_in_unknown_cells", &R::hits_in_unknown_cells, nullptr, kSecondGroup, false},
+    {"unbacked_hits", nullptr, &UnbackedHits, FigureStorage::kDerived, false},
+    {"drawn_wall_cells", &R::drawn_wall_cells, nullptr, kSecondGroup, false},
+}};
+
+const char* GroupName(FigureStorage storage) {
+  return storage == FigureStorage::kObjectivesGroup ? "objectives" : "second";
+}
+
+}  // namespace
+
+std::span<const RecordFigure> RecordFigures() { return kFigures; }
+
+const RecordFigure& FigureNamed(std::string_view key) {
+  for (const RecordFigure& figure : kFigures)
+    if (key == figure.key) return figure;
+  SLAMTUNE_CHECK(false);
+  return kFigures[0];
+}
+
+double FigureValue(const RecordFigure& figure, const EvaluationRecord& record) {
+  if (figure.field != nullptr) return record.*figure.field;
+  SLAMTUNE_CHECK(figure.derive != nullptr);
+  return figure.derive(record);
+}
 
 const char* NameOf(RunStatus status) {
   switch (status) {
@@ -37,23 +87,15 @@ void to_json(nlohmann::json& j, const EvaluationRecord& r) {
                      {"params", r.params},
                      {"status", NameOf(r.status)},
                      {"reason", r.reason},
-                     {"objectives",
-                      {{"occupied_ratio", r.occupied_ratio},
-                       {"corner_pixels", r.corner_pixels},
-                       {"enclosed_areas", r.enclosed_areas}}},
-                     {"second",
-                      {{"occupied_ratio_known", r.occupied_ratio_known},
-                       {"corners", r.corners},
-                       {"contours", r.contours},
-                       {"occupied_cells", r.occupied_cells},
-                       {"hits", r.hits},
-                       {"hits_in_free_cells", r.hits_in_free_cells},
-                       {"hits_in_unknown_cells", r.hits_in_unknown_cells},
-                       {"drawn_wall_cells", r.drawn_wall_cells}}},
+                     {"objectives", nlohmann::json::object()},
+                     {"second", nlohmann::json::object()},
                      {"nodes", r.nodes},
                      {"loop_closures", r.loop_closures},
                      {"loop_scans", r.loop_scans},
                      {"wall_s", r.wall_s}};
+  for (const RecordFigure& figure : kFigures) {
+    if (figure.storage != FigureStorage::kDerived) j[GroupName(figure.storage)][figure.key] = r.*figure.field;
+  }
   if (r.has_gt) {
     j["gt_error"] = {{"trans_mean_m", r.trans_mean_m},
                      {"trans_std_m", r.trans_std_m},
@@ -68,20 +110,11 @@ void from_json(const nlohmann::json& j, EvaluationRecord& r) {
   r.params = j.at("params").get<std::map<std::string, double>>();
   r.status = ParseRunStatus(j.at("status").get<std::string>());
   r.reason = j.at("reason").get<std::string>();
-  const auto& o = j.at("objectives");
-  r.occupied_ratio = o.at("occupied_ratio").get<double>();
-  r.corner_pixels = o.at("corner_pixels").get<double>();
-  r.enclosed_areas = o.at("enclosed_areas").get<double>();
-  const auto& s = j.at("second");
-  r.occupied_ratio_known = s.at("occupied_ratio_known").get<double>();
-  r.corners = s.at("corners").get<double>();
-  r.contours = s.at("contours").get<double>();
-  // Absent from records stored before these figures existed.
-  r.occupied_cells = s.value("occupied_cells", 0.0);
-  r.hits = s.value("hits", 0.0);
-  r.hits_in_free_cells = s.value("hits_in_free_cells", 0.0);
-  r.hits_in_unknown_cells = s.value("hits_in_unknown_cells", 0.0);
-  r.drawn_wall_cells = s.value("drawn_wall_cells", 0.0);
+  for (const RecordFigure& figure : kFigures) {
+    if (figure.storage == FigureStorage::kDerived) continue;
+    const nlohmann::json& group = j.at(GroupName(figure.storage));
+    r.*figure.field = figure.in_every_stored_record ? group.at(figure.key).get<double>() : group.value(figure.key, 0.0);
+  }
   r.nodes = j.at("nodes").get<int>();
   r.loop_closures = j.at("loop_closures").get<int>();
   r.loop_scans = j.at("loop_scans").get<std::vector<int>>();

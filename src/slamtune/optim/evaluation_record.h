@@ -1,12 +1,18 @@
 // What one evaluation of a parameter set produced: the map figures the objectives are read
 // from (objective_set.h: the seed paper's eta, corner pixels and enclosed areas, and the
 // unbacked-hit share), the SLAM run's outcome, and ground-truth errors when relations were
-// given. Stored one row per
-// evaluation in the run's SQLite database, so it converts to and from JSON.
+// given. Stored one row per evaluation in the run's SQLite database, so it converts to and from
+// JSON.
+//
+// The figures are listed once, in RecordFigures(): their keys, where the record's JSON keeps
+// them, and how each is read off a record. The record's JSON, evaluations.csv, sweep.csv and the
+// objectives iterate that table, so a new figure is one row there and, when it is measured rather
+// than derived, one field of EvaluationRecord filled in slam_evaluation.cc.
 #pragma once
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,8 +34,8 @@ struct EvaluationRecord {
   RunStatus status = RunStatus::kOk;
   std::string reason;  // why it failed (exception text, NaN, ...)
 
-  // Map figures (metrics/map_quality.h, slam/occupancy_grid.h); objective_set.h picks the
-  // objectives among them.
+  // Map figures (metrics/map_quality.h, slam/occupancy_grid.h), each a row of RecordFigures();
+  // objective_set.h picks the objectives among them.
   double occupied_ratio = 0.0;         // eta
   double corner_pixels = 0.0;          // n_c (objective)
   double enclosed_areas = 0.0;         // n_e
@@ -56,6 +62,28 @@ struct EvaluationRecord {
   static EvaluationRecord Failed(const std::string& key, const std::map<std::string, double>& params,
                                  const std::string& reason);
 };
+
+// Where the record's JSON keeps a figure. The two groups are the run database's layout since its
+// first version ("objectives" held the seed paper's three objectives, "second" everything else
+// measured), kept so that every stored run folder reads back; a derived figure is computed from
+// the others and not stored.
+enum class FigureStorage { kObjectivesGroup, kSecondGroup, kDerived };
+
+struct RecordFigure {
+  const char* key;                                   // JSON and CSV name, e.g. "corner_pixels"
+  double EvaluationRecord::*field;                   // the record's field; nullptr for a derived figure
+  double (*derive)(const EvaluationRecord& record);  // a derived figure's value; nullptr otherwise
+  FigureStorage storage;
+  // False for figures added after the first stored records: a record without it reads as 0.
+  bool in_every_stored_record;
+};
+
+// Every figure, in the column order of evaluations.csv and sweep.csv.
+std::span<const RecordFigure> RecordFigures();
+// The figure called `key`; a broken invariant (SLAMTUNE_CHECK) for a key not in the table.
+const RecordFigure& FigureNamed(std::string_view key);
+// The figure's value in `record` (no failure scoring: see ObjectiveSet::Score).
+double FigureValue(const RecordFigure& figure, const EvaluationRecord& record);
 
 void to_json(nlohmann::json& j, const EvaluationRecord& r);
 void from_json(const nlohmann::json& j, EvaluationRecord& r);

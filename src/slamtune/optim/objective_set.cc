@@ -47,19 +47,7 @@ const std::vector<Objective>& AllObjectives() {
 }
 
 double ValueOf(const EvaluationRecord& record, Objective objective) {
-  switch (objective) {
-    case Objective::kOccupiedRatio: return record.occupied_ratio;
-    case Objective::kCornerPixels: return record.corner_pixels;
-    case Objective::kEnclosedAreas: return record.enclosed_areas;
-    case Objective::kUnbackedHits:
-      // No end point on the map at all: nothing backs it.
-      if (!(record.hits > 0.0)) return 1.0;
-      return (record.hits_in_free_cells + record.hits_in_unknown_cells) / record.hits;
-    case Objective::kOccupiedCells: return record.occupied_cells;
-    case Objective::kDrawnWallCells: return record.drawn_wall_cells;
-  }
-  SLAMTUNE_CHECK(false);
-  return 0.0;
+  return FigureValue(FigureNamed(InfoOf(objective).key), record);
 }
 
 ObjectiveSet::ObjectiveSet(ObjectiveSetKind kind) : kind_(kind) {

@@ -36,7 +36,7 @@ enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedH
 
 struct ObjectiveInfo {
   Objective id;
-  const char* key;         // JSON/CSV name
+  const char* key;         // JSON/CSV name: the record figure it reads (RecordFigures())
   const char* short_name;  // in figures and table headers: "eta", "n_c", "n_e", "u_h"
   const char* title;       // in prose
   double failure_score;    // the score of a failed run: worse than any real map

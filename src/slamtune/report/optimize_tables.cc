@@ -114,41 +114,19 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
   CsvTable t;
   t.header = {"index"};
   t.header.insert(t.header.end(), params.begin(), params.end());
-  for (const char* h : {"status",
-                        "reason",
-                        "occupied_ratio",
-                        "corner_pixels",
-                        "enclosed_areas",
-                        "occupied_ratio_known",
-                        "corners",
-                        "contours",
-                        "occupied_cells",
-                        "hits",
-                        "hits_in_free_cells",
-                        "hits_in_unknown_cells",
-                        "unbacked_hits",
-                        "drawn_wall_cells",
-                        "nodes",
-                        "loop_closures",
-                        "wall_s",
-                        "trans_mean_m",
-                        "trans_std_m",
-                        "rot_mean_deg",
-                        "rot_std_deg",
-                        "relations_used"}) {
-    t.header.push_back(h);
-  }
+  t.header.insert(t.header.end(), {"status", "reason"});
+  for (const optim::RecordFigure& figure : optim::RecordFigures()) t.header.push_back(figure.key);
+  t.header.insert(t.header.end(), {"nodes", "loop_closures", "wall_s", "trans_mean_m", "trans_std_m", "rot_mean_deg",
+                                   "rot_std_deg", "relations_used"});
   for (std::size_t i = 0; i < evaluations.size(); ++i) {
     const auto& r = evaluations[i];
     std::vector<std::string> row = {std::to_string(i)};
     for (const auto& p : params) row.push_back(Param(r.params, p));
-    row.insert(row.end(),
-               {NameOf(r.status), r.reason, Metric(r, r.occupied_ratio), Metric(r, r.corner_pixels),
-                Metric(r, r.enclosed_areas), Metric(r, r.occupied_ratio_known), Metric(r, r.corners),
-                Metric(r, r.contours), Metric(r, r.occupied_cells), Metric(r, r.hits), Metric(r, r.hits_in_free_cells),
-                Metric(r, r.hits_in_unknown_cells), Metric(r, optim::ValueOf(r, optim::Objective::kUnbackedHits)),
-                Metric(r, r.drawn_wall_cells), Ok(r) ? std::to_string(r.nodes) : "",
-                Ok(r) ? std::to_string(r.loop_closures) : "", FormatNumber(r.wall_s)});
+    row.insert(row.end(), {NameOf(r.status), r.reason});
+    for (const optim::RecordFigure& figure : optim::RecordFigures())
+      row.push_back(Metric(r, optim::FigureValue(figure, r)));
+    row.insert(row.end(), {Ok(r) ? std::to_string(r.nodes) : "", Ok(r) ? std::to_string(r.loop_closures) : "",
+                           FormatNumber(r.wall_s)});
     for (auto& cell : ErrorCells(r)) row.push_back(std::move(cell));
     t.AddRow(std::move(row));
   }

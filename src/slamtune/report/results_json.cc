@@ -12,8 +12,11 @@ nlohmann::json CandidateJson(const optim::Candidate& candidate) {
   const optim::EvaluationRecord& r = candidate.record;
   nlohmann::json j = r;  // the record's own JSON (optim/evaluation_record.h), then the report's fields
   j.erase("key");
+  // The derived figures (not stored in the run database) beside the seed paper's objectives.
   if (r.status == optim::RunStatus::kOk) {
-    j["objectives"]["unbacked_hits"] = optim::ValueOf(r, optim::Objective::kUnbackedHits);
+    for (const optim::RecordFigure& figure : optim::RecordFigures()) {
+      if (figure.storage == optim::FigureStorage::kDerived) j["objectives"][figure.key] = optim::FigureValue(figure, r);
+    }
   }
   j["label"] = candidate.label;
   j["description"] = candidate.description;

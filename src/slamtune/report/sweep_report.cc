@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/log_summary.h"
@@ -32,30 +33,19 @@ double Unbacked(const optim::EvaluationRecord& r) { return optim::ValueOf(r, opt
 
 CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>& points, bool gt) {
   CsvTable t;
-  t.header = {"parameter",     "value",          "status",
-              "reason",        "loop_closures",  "occupied_ratio",
-              "corner_pixels", "enclosed_areas", "occupied_ratio_known",
-              "corners",       "contours",       "unbacked_hits",
-              "nodes",         "wall_s"};
+  t.header = {"parameter", "value", "status", "reason", "loop_closures"};
+  for (const optim::RecordFigure& figure : optim::RecordFigures()) t.header.push_back(figure.key);
+  t.header.insert(t.header.end(), {"nodes", "wall_s"});
   if (gt)
     t.header.insert(t.header.end(), {"trans_mean_m", "trans_std_m", "rot_mean_deg", "rot_std_deg", "relations_used"});
   t.header.push_back("loop_scans");
   for (const auto& p : points) {
     const auto& r = p.record;
-    std::vector<std::string> row = {parameter,
-                                    FormatNumber(p.value),
-                                    NameOf(r.status),
-                                    r.reason,
-                                    Ok(r) ? std::to_string(r.loop_closures) : "",
-                                    Metric(r, r.occupied_ratio),
-                                    Metric(r, r.corner_pixels),
-                                    Metric(r, r.enclosed_areas),
-                                    Metric(r, r.occupied_ratio_known),
-                                    Metric(r, r.corners),
-                                    Metric(r, r.contours),
-                                    Metric(r, Unbacked(r)),
-                                    Ok(r) ? std::to_string(r.nodes) : "",
-                                    FormatNumber(r.wall_s)};
+    std::vector<std::string> row = {parameter, FormatNumber(p.value), NameOf(r.status), r.reason,
+                                    Ok(r) ? std::to_string(r.loop_closures) : ""};
+    for (const optim::RecordFigure& figure : optim::RecordFigures())
+      row.push_back(Metric(r, optim::FigureValue(figure, r)));
+    row.insert(row.end(), {Ok(r) ? std::to_string(r.nodes) : "", FormatNumber(r.wall_s)});
     if (gt) {
       const bool has = Ok(r) && r.has_gt;
       row.insert(row.end(), {has ? FormatNumber(r.trans_mean_m) : "", has ? FormatNumber(r.trans_std_m) : "",
@@ -70,20 +60,23 @@ CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>&
 
 struct Quantity {
   std::string title;  // panel title and y label
-  double (*get)(const optim::EvaluationRecord&);
+  std::function<double(const optim::EvaluationRecord&)> get;
   bool needs_gt;
 };
+
+Quantity ObjectiveQuantity(optim::Objective objective) {
+  return {Title(objective), [objective](const optim::EvaluationRecord& r) { return optim::ValueOf(r, objective); },
+          false};
+}
 
 cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>& points, bool gt,
                     const SweepReportOptions& options) {
   const std::vector<Quantity> quantities = {
       {"loop closures", [](const optim::EvaluationRecord& r) { return static_cast<double>(r.loop_closures); }, false},
-      {Title(optim::Objective::kUnbackedHits), [](const optim::EvaluationRecord& r) { return Unbacked(r); }, false},
-      {Title(optim::Objective::kOccupiedRatio), [](const optim::EvaluationRecord& r) { return r.occupied_ratio; },
-       false},
-      {Title(optim::Objective::kCornerPixels), [](const optim::EvaluationRecord& r) { return r.corner_pixels; }, false},
-      {Title(optim::Objective::kEnclosedAreas), [](const optim::EvaluationRecord& r) { return r.enclosed_areas; },
-       false},
+      ObjectiveQuantity(optim::Objective::kUnbackedHits),
+      ObjectiveQuantity(optim::Objective::kOccupiedRatio),
+      ObjectiveQuantity(optim::Objective::kCornerPixels),
+      ObjectiveQuantity(optim::Objective::kEnclosedAreas),
       {"mean translational error (m)", [](const optim::EvaluationRecord& r) { return r.trans_mean_m; }, true},
       {"mean rotational error (deg)", [](const optim::EvaluationRecord& r) { return r.rot_mean_deg; }, true},
   };
