@@ -47,8 +47,8 @@ TEST(WriteSweepReport, WritesCsvFigureAndPage) {
   const std::string csv = Slurp(dir / "sweep.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "parameter,value,status,reason,loop_closures,occupied_ratio,corner_pixels,enclosed_areas,"
-            "occupied_ratio_known,corners,contours,unbacked_hits,nodes,wall_s,trans_mean_m,trans_std_m,rot_mean_deg,"
-            "rot_std_deg,"
+            "occupied_ratio_known,corners,contours,occupied_cells,hits,hits_in_free_cells,hits_in_unknown_cells,"
+            "unbacked_hits,drawn_wall_cells,nodes,wall_s,trans_mean_m,trans_std_m,rot_mean_deg,rot_std_deg,"
             "relations_used,loop_scans");
   // Sorted by value: 6 first (12 loop closures, error 0.02), then the failed 7, then 8.
   const auto expected6 = testing::FakeRecord(2.0, 6, 0.0, true);
