@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0; [[ "${1:-}" == "--quick" ]] && quick=1
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSLAMTUNE_WARNINGS_AS_ERRORS=ON >/dev/null  # as scripts/test.sh
+bash scripts/configure.sh >/dev/null
 cmake --build build -j"$(nproc)" --target slamtune bench_engine bench_matcher bench_map_quality bench_nsga3_dtlz \
   bench_shared_eval bench_objectives
 out=runs/bench; mkdir -p "$out"

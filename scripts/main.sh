@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 # The same configuration as scripts/test.sh, so that the test command rebuilds nothing this built.
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSLAMTUNE_WARNINGS_AS_ERRORS=ON >/dev/null
+bash scripts/configure.sh >/dev/null
 cmake --build build -j"$(nproc)" --target slamtune
 if [ $# -eq 0 ]; then
   if [ -e runs/office-jump/run.sqlite ]; then

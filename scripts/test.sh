@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# Installs what slamtune needs, builds it (with tests and benchmarks) and runs the whole test suite,
-# then builds the io, metrics, nsga3 and optim suites and the fuzz corpus replays with
-# AddressSanitizer + UndefinedBehaviorSanitizer and runs them (scripts/sanitize.sh).
+# Installs what slamtune needs, builds it (with tests and benchmarks) and runs the tests: the CLI
+# tests, the house checks and the common, sim, slam and report unit suites in the release build;
+# then the io, metrics, nsga3 and optim unit suites and the fuzz corpus replays built with
+# AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh). Each suite is compiled and
+# run once.
 # This is the README's test command and what CI runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSLAMTUNE_WARNINGS_AS_ERRORS=ON
+bash scripts/configure.sh
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 900
 bash scripts/sanitize.sh

@@ -40,7 +40,7 @@ cmp -s <(grep '^NSGA-III' "$work/opt.out") <(grep '^NSGA-III' "$work/resume.out"
   fail "resume ended differently: $(grep '^NSGA-III' "$work/resume.out")"
 
 # Budget flags the user gives win: --population 8 and the rule off run the whole (small) budget.
-"$bin" optimize "$work/jump.clf" --population 8 --divisions 3 --sound-answer-window 0 --generations 1 --jobs 2 \
+"$bin" optimize "$work/jump.clf" --max-scans 600 --population 8 --divisions 3 --sound-answer-window 0 --generations 1 --jobs 2 \
   --out "$work/flags" > "$work/flags.out" 2> "$work/flags.err" || fail "optimize with flags: $(tail -3 "$work/flags.err")"
 grep -q "population 8," "$work/flags.err" "$work/flags.out" || fail "--population 8 not used"
 grep -q "^NSGA-III ran all 1 generations" "$work/flags.out" || fail "flags run: $(grep '^NSGA-III' "$work/flags.out")"

@@ -507,7 +507,7 @@ int RunOptimize(OptimizeArgs args, const CLI::App& app) {
   return 0;
 }
 
-const SubcommandRegistrar kRegistrar{{
+const SubcommandRegistrar kOptimize{{
     "optimize",
     "Tune loop closure (r, g by default) with NSGA-III on a log, or on the built-in office world",
     40,

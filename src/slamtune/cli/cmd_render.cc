@@ -50,7 +50,7 @@ int RunRender(const RenderArgs& args) {
   return 0;
 }
 
-const SubcommandRegistrar kRegistrar{{
+const SubcommandRegistrar kRender{{
     "render",
     "Draw a log's occupancy map from given poses (a trajectory file, or 'odometry') and score it",
     35,

@@ -118,9 +118,9 @@ std::function<int()> Setup(CLI::App& app) {
   return [state] { return Run(*state); };
 }
 
-const SubcommandRegistrar kRegistrar({"simulate",
-                                      "Simulate a laser log with odometry drift and ground truth in a built-in world",
-                                      20, &Setup});
+const SubcommandRegistrar kSimulate({"simulate",
+                                     "Simulate a laser log with odometry drift and ground truth in a built-in world",
+                                     25, &Setup});
 
 }  // namespace
 }  // namespace slamtune::cli

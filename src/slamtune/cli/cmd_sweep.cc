@@ -137,7 +137,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   return summary.failed > 0 ? 1 : 0;
 }
 
-const SubcommandRegistrar kRegistrar{{
+const SubcommandRegistrar kSweep{{
     "sweep",
     "Loop closures and map objectives along one parameter (the paper's Figures 14-15)",
     45,
