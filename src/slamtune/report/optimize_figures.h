@@ -14,9 +14,11 @@
 //   shows the values the best sets share. One parameter: the first objective against it. The
 //   candidates are marked in every view, the default even when it lies outside the search range;
 //   failed runs are grey crosses in the scatter panels and counted in the titles elsewhere.
+// * the base configuration's front end along the log, and the search's history.
 // The population figures share axis limits across generations so they can be compared side by
 // side. Failure-scored individuals (ObjectiveSet::IsFailureScore) are left out and counted in
-// the figure title.
+// the figure title. One family a file: optimize_figures.cc (what they share, the maps, objective
+// space), parameter_space_figures.cc, front_end_figure.cc, history_figure.cc.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -48,6 +50,9 @@ struct FigureOptions {
 
   void Validate() const;
 };
+
+// A plot panel of the figures' size and font (FigureOptions).
+PlotOptions PanelOptions(const FigureOptions& options);
 
 // Axis limits per objective (the result's objectives order), shared by every population
 // figure: from the best value of the non-dominated front of all snapshots' valid individuals
