@@ -62,7 +62,7 @@ struct RunArgs {
   bool quiet = false;
 };
 
-nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json FiniteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json ParamsJson(const slam::MapperParams& params) {
   nlohmann::json out = nlohmann::json::object();
@@ -301,10 +301,10 @@ nlohmann::json RunJson(const slam::RunSummary& summary, const io::LaserLog& log,
       {"wall_s", summary.wall_s},
       {"map_wall_s", map.wall_s},
       {"log_duration_s", summary.log_duration_s},
-      {"realtime_factor", summary.wall_s > 0 ? Number(summary.log_duration_s / summary.wall_s) : nullptr},
+      {"realtime_factor", summary.wall_s > 0 ? FiniteOrNull(summary.log_duration_s / summary.wall_s) : nullptr},
       {"laser_max_range_m", summary.laser_max_range},
       {"range_threshold_m", summary.range_threshold},
-      {"no_return_value_m", Number(log.no_return_value)},
+      {"no_return_value_m", FiniteOrNull(log.no_return_value)},
       {"no_return_rule", log.no_return_rule},
       {"input", io::DescribeLogInput(log)},
       {"params", ParamsJson(params)},
@@ -317,7 +317,7 @@ std::string AddGtError(const std::vector<io::TimedPose>& trajectory, const RunIn
   if (input.relations_label.empty()) return "";
   const metrics::GtError e = metrics::ComputeGtError(trajectory, input.relations);
   nlohmann::json gt = nlohmann::json::object();
-  for (const auto& [key, value] : metrics::GtErrorFields(e)) gt[key] = Number(value);
+  for (const auto& [key, value] : metrics::GtErrorFields(e)) gt[key] = FiniteOrNull(value);
   gt["relations_used"] = e.relations_used;
   gt["relations_missing"] = e.relations_missing;
   gt["relations_file"] = input.relations_label;
