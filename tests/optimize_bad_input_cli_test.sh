@@ -88,6 +88,14 @@ grep -q '"loop_match_minimum_response_coarse": 0.7' "$work/flags/results.json" |
 "$bin" optimize --resume "$work/flags" --quiet >/dev/null 2>"$work/flags_resume.err" ||
   fail "resume of a --vary run failed: $(cat "$work/flags_resume.err")"
 
+# A slice of the built-in world is refused, not ignored: the world is simulated whole.
+for cmd in optimize run; do
+  err=$("$bin" $cmd --max-scans 40 --out "$work/world_slice_$cmd" 2>&1 >/dev/null); rc=$?
+  [[ $rc -eq 2 && "$err" == "slamtune: error: --max-scans 40: reads the first scans of a LOG; the built-in world 'office' is simulated whole (write it to a log with \`slamtune simulate --world office --out DIR\` and give that log)" ]] ||
+    fail "$cmd --max-scans without a LOG: exit $rc, '$err'"
+  [[ ! -e "$work/world_slice_$cmd/run.sqlite" && ! -e "$work/world_slice_$cmd/run.json" ]] || fail "$cmd --max-scans without a LOG wrote a run"
+done
+
 # Readings all filtered out give an empty map: such runs fail, and one is never recommended.
 s=$(space minrange 'vary:\n  min_laser_range: {min: 0, max: 37}\n')
 "$bin" optimize "${slice[@]}" --space "$s" --out "$work/minrange" --population 8 --generations 2 --divisions 3 --jobs 2 --quiet \

@@ -135,6 +135,7 @@ void LoadRunLog(const RunArgs& args, const sim::SimulationOptions& world, RunInp
   input.log_label = args.log;
   input.relations_label = args.relations;
   if (args.log.empty()) {
+    args.input.RequireLogForSlice(args.world);
     if (!args.quiet) {
       std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n", args.world.c_str(),
                    args.world_seed);

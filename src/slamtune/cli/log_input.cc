@@ -1,5 +1,7 @@
 #include "slamtune/cli/log_input.h"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 
 #include "slamtune/common/error.h"
@@ -77,6 +79,14 @@ LogInputOptions LogInputOptions::FromJson(const nlohmann::json& j) {
   o.laser_offset = j.at("laser_offset").get<std::vector<double>>();
   o.max_odom_gap_s = j.at("max_odom_gap_s");
   return o;
+}
+
+void LogInputOptions::RequireLogForSlice(const std::string& world) const {
+  if (max_scans == 0) return;
+  throw InputError(
+      fmt::format("--max-scans {}: reads the first scans of a LOG; the built-in world '{}' is simulated whole (write "
+                  "it to a log with `slamtune simulate --world {} --out DIR` and give that log)",
+                  max_scans, world, world));
 }
 
 io::LaserLog ReadLog(const std::string& path, const LogInputOptions& options) {

@@ -31,6 +31,9 @@ struct LogInputOptions {
   // Everything that changes what is read, for the run database and --resume.
   nlohmann::json ToJson() const;
   static LogInputOptions FromJson(const nlohmann::json& j);
+  // InputError when a slice of the log was asked for (--max-scans) but no LOG is read: the
+  // built-in `world` is simulated whole, so the slice would be ignored without a word.
+  void RequireLogForSlice(const std::string& world) const;
 };
 
 // The log at `path` read with `options` (io::ReadLaserLog).

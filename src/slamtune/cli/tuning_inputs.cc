@@ -112,6 +112,7 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes note
   LoadBase(options, quiet, &in);
 
   if (options.log.empty()) {
+    options.input.RequireLogForSlice(options.world);
     sim::SimulationOptions sim_options;
     sim_options.world = options.world;
     sim_options.seed = options.world_seed;
