@@ -135,7 +135,6 @@ void LoadRunLog(const RunArgs& args, const sim::SimulationOptions& world, RunInp
   input.log_label = args.log;
   input.relations_label = args.relations;
   if (args.log.empty()) {
-    args.input.RequireLogForSlice(args.world);
     if (!args.quiet) {
       std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n", args.world.c_str(),
                    args.world_seed);
@@ -345,6 +344,7 @@ void PrintRunSummary(const slam::RunSummary& summary, slam::NodeMode mode, const
 }
 
 int Run(const RunArgs& args) {
+  if (args.log.empty()) args.input.RequireLogForSlice(args.world);  // before anything is said or written
   const slam::MapperParams params = ResolveParams(args);
   RunInput input;
   if (!args.relations.empty()) input.relations = io::ReadRelations(args.relations);  // fail before the long run

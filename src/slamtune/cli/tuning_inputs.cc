@@ -108,11 +108,11 @@ void WarnPartialRelations(const std::string& relations_file, const metrics::Rela
 
 TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes notes) {
   const bool quiet = notes != InputNotes::kAll;
+  if (options.log.empty()) options.input.RequireLogForSlice(options.world);  // before anything is said
   TuningInputs in;
   LoadBase(options, quiet, &in);
 
   if (options.log.empty()) {
-    options.input.RequireLogForSlice(options.world);
     sim::SimulationOptions sim_options;
     sim_options.world = options.world;
     sim_options.seed = options.world_seed;
