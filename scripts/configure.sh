@@ -6,4 +6,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSLAMTUNE_WARNINGS_AS_ERRORS=ON \
-  -DSLAMTUNE_TEST_SUITES="common;sim;slam;report" "$@"
+  -DSLAMTUNE_TEST_SUITES="common;sim;slam;report;tune" "$@"

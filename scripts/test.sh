@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what slamtune needs, builds it (with tests and benchmarks) and runs the tests: the CLI
-# tests, the house checks and the common, sim, slam and report unit suites in the release build;
+# tests, the house checks and the common, sim, slam, report and tune unit suites in the release build;
 # then the io, metrics, nsga3 and optim unit suites and the fuzz corpus replays built with
 # AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh). Each suite is compiled and
 # run once.

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/log_input.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/io/log_check.h"
 #include "slamtune/report/scan_losses_json.h"
 
@@ -18,7 +18,7 @@ struct CheckArgs {
   std::string log;
   bool json = false;
   bool strict = false;
-  LogInputOptions input;
+  tune::LogInputOptions input;
   io::CheckOptions check;
 };
 
@@ -45,7 +45,7 @@ const SubcommandRegistrar kCheck(Subcommand{
       app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag or CARMEN log")->required();
       app.add_flag("--json", args->json, "Print the report as one JSON object");
       app.add_flag("--strict", args->strict, "Exit 1 when a problem is found");
-      args->input.AddTo(app, LogInputOptions::MaxScans::kOmit);
+      AddLogInputFlags(app, args->input, MaxScansFlag::kOmit);
       io::CheckOptions& c = args->check;
       const char* limits = "Check limits";
       app.add_option("--gap-factor", c.gap_factor, "a scan gap is longer than this x the median period")

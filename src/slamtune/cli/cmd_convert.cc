@@ -14,7 +14,7 @@
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/log_input.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/common/error.h"
 #include "slamtune/io/carmen_writer.h"
 #include "slamtune/io/log_summary.h"
@@ -25,15 +25,15 @@ namespace {
 struct ConvertArgs {
   std::string log;
   std::string out;
-  LogInputOptions input;
+  tune::LogInputOptions input;
   bool quiet = false;
 };
 
 int Convert(const ConvertArgs& args) {
   if (std::filesystem::is_directory(args.out)) throw InputError(args.out, 0, "--out is a folder; give a file name");
-  io::LaserLog log = ReadLog(args.log, args.input);
+  io::LaserLog log = tune::ReadLog(args.log, args.input);
   const std::vector<std::string> input = io::DescribeLogInput(log);
-  PrintLogInput(log, args.quiet);
+  tune::PrintLogInput(log, args.quiet);
   const std::size_t replaced = io::PrepareForCarmen(&log);
   io::CarmenWriteOptions options;
   options.comments.push_back("converted by slamtune from " + args.log);
@@ -57,7 +57,7 @@ const SubcommandRegistrar kConvert(Subcommand{
       app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag (or a CARMEN log)")->required();
       app.add_option("--out", args->out, "CARMEN log to write (.clf)")->required();
       app.add_flag("--quiet", args->quiet, "Do not print what was read");
-      args->input.AddTo(app);
+      AddLogInputFlags(app, args->input);
       app.footer(
           "Examples:\n"
           "  slamtune convert drive.mcap --out drive.clf\n"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/log_input.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/common/error.h"
 #include "slamtune/io/carmen_writer.h"
 #include "slamtune/io/log_summary.h"
@@ -26,7 +26,7 @@ struct FaultArgs {
   std::string log;
   std::string out;
   std::vector<std::string> faults;  // KIND,START_M,LENGTH_M[,MAGNITUDE], in order
-  LogInputOptions input;
+  tune::LogInputOptions input;
   bool quiet = false;
 };
 
@@ -47,9 +47,9 @@ int Fault(const FaultArgs& args) {
   std::vector<sim::OdometryFault> faults;
   for (const std::string& text : args.faults) faults.push_back(sim::ParseOdometryFault(text));
   CheckOut(args.out);
-  io::LaserLog log = ReadLog(args.log, args.input);
+  io::LaserLog log = tune::ReadLog(args.log, args.input);
   const std::vector<std::string> input = io::DescribeLogInput(log);
-  PrintLogInput(log, args.quiet);
+  tune::PrintLogInput(log, args.quiet);
   const sim::LogFaultSummary planted = sim::PlantLogFaults(log, faults);
   const std::size_t replaced = io::PrepareForCarmen(&log, /*keep_flaser=*/true);
 
@@ -89,7 +89,7 @@ const SubcommandRegistrar kFault(Subcommand{
                      "(the travel reported backwards), over LENGTH_M of the log's odometric travel from START_M");
       app.add_option("--out", args->out, "CARMEN log to write (.clf)")->required();
       app.add_flag("--quiet", args->quiet, "Do not print what was read");
-      args->input.AddTo(app);
+      AddLogInputFlags(app, args->input);
       app.footer(
           "Faults are those of `slamtune simulate --fault`, located by the distance the log's odometry\n"
           "travelled (close to the odometry path `slamtune info LOG` prints); readings and timestamps are\n"

@@ -7,8 +7,9 @@
 #include <string>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/log_input.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/io/log_summary.h"
+#include "slamtune/report/json_number.h"
 
 namespace slamtune::cli {
 namespace {
@@ -16,13 +17,8 @@ namespace {
 struct InfoArgs {
   std::string log;
   bool json = false;
-  LogInputOptions input;
+  tune::LogInputOptions input;
 };
-
-// JSON numbers cannot be infinite: an infinite value (no no-return value) is written as null.
-nlohmann::ordered_json Number(double value) {
-  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
-}
 
 nlohmann::ordered_json ToJson(const io::LogSummary& s) {
   return {
@@ -50,7 +46,7 @@ nlohmann::ordered_json ToJson(const io::LogSummary& s) {
       {"min_reading_m", s.min_reading_m},
       {"max_reading_m", s.max_reading_m},
       {"max_valid_reading_m", s.max_valid_reading_m},
-      {"no_return_value", Number(s.no_return_value_m)},
+      {"no_return_value", report::FiniteOrNull<nlohmann::ordered_json>(s.no_return_value_m)},
       {"no_return_rule", s.no_return_rule},
       {"readings", s.readings},
       {"no_returns", s.no_returns},
@@ -76,13 +72,13 @@ const SubcommandRegistrar kInfo(Subcommand{
       app.add_option("LOG", args->log, "CARMEN log (.clf, plain or gzip), MCAP / .db3 / rosbag2 folder, or ROS 1 .bag")
           ->required();
       app.add_flag("--json", args->json, "Print the summary as one JSON object");
-      args->input.AddTo(app);
+      AddLogInputFlags(app, args->input);
       app.footer(
           "Examples:\n"
           "  slamtune info intel.clf.gz\n"
           "  slamtune info drive.mcap --scan-topic /scan --json");
       return [args]() -> int {
-        const io::LogSummary summary = io::SummarizeLog(ReadLog(args->log, args->input));
+        const io::LogSummary summary = io::SummarizeLog(tune::ReadLog(args->log, args->input));
         if (args->json) {
           std::printf("%s\n", ToJson(summary).dump(2).c_str());
         } else {

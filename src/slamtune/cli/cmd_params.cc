@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/common/text_file.h"
 #include "slamtune/slam/base_configuration.h"
 #include "slamtune/slam/params_yaml.h"

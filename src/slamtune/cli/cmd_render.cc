@@ -9,8 +9,7 @@
 #include <memory>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/log_input.h"
-#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
 #include "slamtune/io/log_summary.h"
@@ -24,16 +23,16 @@ namespace {
 
 struct RenderArgs {
   std::string log, poses, out, preset, params_file;
-  LogInputOptions input;
+  tune::LogInputOptions input;
   std::vector<std::string> sets;
 };
 
 int RunRender(const RenderArgs& args) {
   const slam::BaseConfiguration base = slam::LoadBaseConfiguration(args.params_file, args.preset, args.sets);
-  PrintParamsWarnings(base);
+  tune::PrintParamsWarnings(base);
   const slam::MapperParams& params = base.params;
   EnsureOutputDir(args.out);  // before the work
-  const io::LaserLog log = ReadLog(args.log, args.input);
+  const io::LaserLog log = tune::ReadLog(args.log, args.input);
   for (const std::string& line : io::DescribeLogInput(log)) std::fprintf(stderr, "%s\n", line.c_str());
   const auto poses = args.poses == "odometry" ? slam::OdometryTrajectory(log) : io::ReadTrajectory(args.poses);
   slam::PoseMapSummary summary;
@@ -57,11 +56,11 @@ const SubcommandRegistrar kRender{{
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RenderArgs>();
       app.add_option("LOG", args->log, "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag")->required();
-      args->input.AddTo(app);
+      AddLogInputFlags(app, args->input);
       app.add_option("--poses", args->poses, "trajectory file (timestamp x y theta per scan) or 'odometry'")
           ->required();
       app.add_option("--out", args->out, "output folder")->required();
-      AddPresetOption(app, args->preset);
+      AddPresetFlag(app, args->preset);
       app.add_option("--params", args->params_file,
                      "slam_toolbox or slam_karto parameter file (map resolution, laser range rules)");
       app.add_option("--set", args->sets, "NAME=VALUE override (repeatable)");

@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/cli/input_flags.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
 #include "slamtune/optim/batch_evaluator.h"
@@ -18,13 +18,14 @@
 #include "slamtune/optim/search_space.h"
 #include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/report/sweep_report.h"
+#include "slamtune/tune/tuning_process.h"
 
 namespace slamtune::cli {
 namespace {
 
 struct SweepArgs {
-  TuningInputOptions inputs;
-  TuningRunOptions run;
+  tune::TuningInputOptions inputs;
+  tune::TuningRunOptions run;
   std::string vary;
   std::vector<std::string> fix;
   std::string out;
@@ -94,18 +95,19 @@ void PrintSweepTable(const std::string& name, const std::vector<report::SweepPoi
 }
 
 int RunSweep(SweepArgs args, const CLI::App& app) {
-  TuningProcess process;
+  tune::TuningProcess process;
   if (process.is_worker()) return process.Serve();
-  process.FitJobs(app, args.run);
+  process.FitJobs(app.get_option("--jobs")->count() > 0, args.run);
   args.run.Validate();
   const SweepRange range = ParseSweepRange(args.vary);
   const std::string& name = range.name;
   if (args.out.empty()) throw InputError("--out DIR is required");
 
-  TuningInputs inputs = LoadTuningInputs(args.inputs, args.run.quiet ? InputNotes::kDataLoss : InputNotes::kAll);
-  auto context = MakeEvaluationContext(inputs, {}, args.run);
+  tune::TuningInputs inputs =
+      tune::LoadTuningInputs(args.inputs, args.run.quiet ? tune::InputNotes::kDataLoss : tune::InputNotes::kAll);
+  auto context = tune::MakeEvaluationContext(inputs, {}, args.run);
   const std::vector<optim::Assignment> batch = SweepBatch(range, args.fix, *context);
-  CreateOutputFolder(args.out);
+  tune::CreateOutputFolder(args.out);
   process.SetupWorkers(args.inputs, {}, args.run, optim::WallDrawing::kSkip);
 
   Progress progress(args.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
@@ -113,7 +115,7 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
                               process.Parallelism(args.run.jobs)),
                   true);
   progress.Finish();
-  optim::BatchEvaluator evaluator(EvaluateWith(context), nullptr, args.run.jobs);
+  optim::BatchEvaluator evaluator(tune::EvaluateWith(context), nullptr, args.run.jobs);
   process.ShareWith(evaluator);
   evaluator.SetProgressCallback([&](const optim::EvaluationRecord& r, const optim::BatchEvaluatorStats& s) {
     progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closure{}", s.evaluated, batch.size(), name,
@@ -131,7 +133,8 @@ int RunSweep(SweepArgs args, const CLI::App& app) {
   if (!args.run.quiet) {
     PrintSweepTable(name, points, !inputs.relations.empty());
     std::printf("wrote %zu files to %s\n", summary.files.size(), args.out.c_str());
-    process.PrintWorkersShare(evaluator);
+    const std::string workers = process.WorkersShare(evaluator.stats());
+    if (!workers.empty()) std::printf("%s\n", workers.c_str());
     std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
   }
   return summary.failed > 0 ? 1 : 0;
@@ -148,9 +151,9 @@ const SubcommandRegistrar kSweep{{
           ->required();
       app.add_option("--fix", args->fix, "NAME=VALUE held fixed (repeatable)");
       app.add_option("--out", args->out, "output folder")->required();
-      args->run.AddParallelismTo(app);
-      args->run.AddSharingTo(app);
-      args->inputs.AddTo(app);
+      AddParallelismFlags(app, args->run);
+      AddSharingFlags(app, args->run);
+      AddTuningInputFlags(app, args->inputs);
       app.footer(
           "Examples:\n"
           "  slamtune sweep --vary r=2:6:0.5 --out runs/sweep_r             # the built-in world\n"

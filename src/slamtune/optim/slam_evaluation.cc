@@ -41,13 +41,16 @@ class IdleSlotThreads {
   int steps_ = 0;
 };
 
-slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params) {
+slam::LogRunner RunToEnd(const SlamEvaluationContext& context, const slam::MapperParams& params,
+                         const RunObservers& observers = {}) {
   SLAMTUNE_CHECK(context.log != nullptr);
   slam::LogRunner runner(context.log, params, context.shared_work);
+  if (observers.trace) runner.set_trace(observers.trace);
   IdleSlotThreads threads(context, params);
   while (!runner.Done()) {
     runner.Step();
     threads.Update(runner);
+    if (observers.after_step) observers.after_step(runner);
   }
   return runner;
 }
@@ -89,7 +92,10 @@ EvaluationRecord Score(const SlamEvaluationContext& context, const Assignment& a
   if (run_out != nullptr) {
     run.sequential_matches = runner.sequential_matches();
     run.front_end = slam::AssessFrontEnd(run.sequential_matches);
+    run.lasers = runner.lasers();
+    run.range_threshold = runner.mapper().range_threshold();
   }
+  const auto map_start = std::chrono::steady_clock::now();
   // The map and its scores, or those of the same final state scored before (run_out wants the map).
   std::optional<MapScores> scores;
   std::vector<std::uint64_t> key;
@@ -109,6 +115,9 @@ EvaluationRecord Score(const SlamEvaluationContext& context, const Assignment& a
     if (use_cache) context.map_scores->Insert(std::move(key), *scores);
   }
   const metrics::MapQuality& quality = scores->quality;
+  run.quality = scores->quality;
+  run.error = scores->error;
+  run.map_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - map_start).count();
 
   EvaluationRecord record;
   record.params = assignment;
@@ -155,11 +164,13 @@ slam::MapperParams SlamEvaluationContext::ParamsFor(const Assignment& assignment
   return params;
 }
 
-EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment, SlamRun* run_out) {
+EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment, SlamRun* run_out,
+                              const RunObservers& observers) {
   const auto start = std::chrono::steady_clock::now();
   const slam::MapperParams params = context.ParamsFor(assignment);
   // The base configuration itself is always mapped to the end: every answer is judged against it.
-  if (context.stop_broken_runs && run_out == nullptr && !(params == context.base)) {
+  const bool observed = observers.after_step || observers.trace;
+  if (context.stop_broken_runs && run_out == nullptr && !observed && !(params == context.base)) {
     slam::LogRunner watched(context.log, params, context.shared_work);
     if (std::optional<std::string> broke = RunUntilBreak(context, params, watched)) {
       EvaluationRecord failed = EvaluationRecord::Failed("", assignment, *broke);
@@ -169,7 +180,7 @@ EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assign
     }
     return Score(context, assignment, params, watched, start, nullptr);
   }
-  const slam::LogRunner runner = RunToEnd(context, params);
+  const slam::LogRunner runner = RunToEnd(context, params, observers);
   return Score(context, assignment, params, runner, start, run_out);
 }
 

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/relations.h"
+#include "slamtune/metrics/gt_error.h"
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/metrics/trajectory_map.h"
 #include "slamtune/optim/batch_evaluator.h"
@@ -20,6 +22,7 @@
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/run_trace.h"
 #include "slamtune/slam/sharing/shared_work.h"
 
 namespace slamtune::optim {
@@ -77,13 +80,26 @@ struct SlamRun {
   slam::RunSummary summary;
   std::vector<io::TimedPose> trajectory;                      // one pose per log scan
   io::MapImage map;                                           // occupancy grid of the final poses
+  metrics::MapQuality quality;                                // the map's metrics (the record's objectives)
+  metrics::GtError error;                                     // against the context's relations (none: empty)
   std::vector<slam::SequentialMatchStep> sequential_matches;  // every sequential match, in log order
   slam::FrontEndEvidence front_end;                           // where sequential matching may have lost its place
+  slam::LogLasers lasers;                                     // the run's Karto lasers
+  double range_threshold = 0.0;                               // m, the mapper's (scans beyond it are not mapped)
+  double map_wall_s = 0.0;                                    // s, building and measuring the map
 };
 
-// `run` (may be null) receives the SLAM run the record was computed from.
+// What a single observed run adds to an evaluation (`slamtune run`): progress and a trace. They
+// change no result.
+struct RunObservers {
+  std::function<void(const slam::LogRunner& runner)> after_step;  // after every log scan
+  std::shared_ptr<slam::RunTrace> trace;                          // every match and solve (slam/run_trace.h)
+};
+
+// `run` (may be null) receives the SLAM run the record was computed from; `observers` watch it
+// (a run with observers is mapped to the end, like the base configuration).
 EvaluationRecord EvaluateSlam(const SlamEvaluationContext& context, const Assignment& assignment,
-                              SlamRun* run = nullptr);
+                              SlamRun* run = nullptr, const RunObservers& observers = {});
 
 // The map of the SLAM run of `assignment` and its loop closures as edges between the final
 // robot poses of the two scans each joins (for the report's figures). A loop closure that

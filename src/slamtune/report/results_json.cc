@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "slamtune/report/front_end_json.h"
+#include "slamtune/report/json_number.h"
 #include "slamtune/report/scan_losses_json.h"
 
 namespace slamtune::report {
@@ -33,8 +34,6 @@ nlohmann::json SearchSpaceJson(const optim::SearchSpace& space) {
 
 namespace {
 
-nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
 // Per generation: the best value of each objective and the normalised front's hypervolume,
 // with the ranges it was normalised by.
 nlohmann::json HistoryJson(const optim::OptimizeResult& result) {
@@ -42,13 +41,13 @@ nlohmann::json HistoryJson(const optim::OptimizeResult& result) {
   const optim::OptimizationHistory& h = result.history;
   nlohmann::json ranges = nlohmann::json::object();
   for (std::size_t k = 0; k < objectives.size() && k < h.lower.size(); ++k) {
-    ranges[optim::InfoOf(objectives[k]).key] = {Number(h.lower[k]), Number(h.upper[k])};
+    ranges[optim::InfoOf(objectives[k]).key] = {FiniteOrNull(h.lower[k]), FiniteOrNull(h.upper[k])};
   }
   nlohmann::json generations = nlohmann::json::array();
   for (const optim::GenerationSummary& g : h.generations) {
     nlohmann::json best = nlohmann::json::object();
     for (std::size_t k = 0; k < objectives.size() && k < g.best.size(); ++k) {
-      best[optim::InfoOf(objectives[k]).key] = Number(g.best[k]);
+      best[optim::InfoOf(objectives[k]).key] = FiniteOrNull(g.best[k]);
     }
     generations.push_back({{"generation", g.generation},
                            {"best", best},

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "slamtune/cli/tuning_inputs.h"
 #include "slamtune/optim/optimize_result.h"
+#include "slamtune/tune/tuning_inputs.h"
 
-namespace slamtune::cli {
+namespace slamtune::tune {
 
 struct RecommendationFiles {
   std::vector<std::string> written;   // file names, in the folder
@@ -33,4 +33,4 @@ std::vector<std::string> HowToLoad(const std::string& dir, slam::NodeMode mode);
 // offline_launch.py (online_async_launch.py when the mode is slam_karto's).
 const char* ToolboxLaunchFile(slam::NodeMode mode);
 
-}  // namespace slamtune::cli
+}  // namespace slamtune::tune

@@ -1,4 +1,4 @@
-#include "slamtune/cli/recommendation_files.h"
+#include "slamtune/tune/recommendation_files.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/slam/log_runner.h"
 
-namespace slamtune::cli {
+namespace slamtune::tune {
 namespace {
 
 struct Target {
@@ -159,4 +159,4 @@ std::vector<std::string> HowToLoad(const std::string& dir, slam::NodeMode mode) 
       fmt::format("slam_karto (ROS 1):   rosparam load {}/best_slam_karto.yaml /slam_karto  (before starting it)", d)};
 }
 
-}  // namespace slamtune::cli
+}  // namespace slamtune::tune

@@ -1,4 +1,4 @@
-#include "slamtune/cli/tuning_inputs.h"
+#include "slamtune/tune/tuning_inputs.h"
 
 #include <fmt/format.h>
 
@@ -6,40 +6,18 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "slamtune/common/error.h"
-#include "slamtune/common/text_file.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
+#include "slamtune/io/relations.h"
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/params_yaml.h"
 
-namespace slamtune::cli {
-
-void TuningInputOptions::AddTo(CLI::App& app) {
-  app.add_option("--relations", relations, "Freiburg relations file: adds ground-truth errors to every evaluation");
-  app.add_option("--world", world, "built-in world to simulate when no LOG is given (see `simulate --list`)")
-      ->capture_default_str();
-  app.add_option("--world-seed", world_seed, "seed of the simulated world")->capture_default_str();
-  AddPresetOption(app, preset);
-  app.add_option("--params", params_file,
-                 "your slam_toolbox (ROS 2) or slam_karto (ROS 1) parameter file: the base of every run and the "
-                 "baseline; keys it does not set take that node's own defaults");
-  app.add_option("--set", sets, "override one base parameter, NAME=VALUE (repeatable)");
-  input.AddTo(app);
-}
-
-CLI::Option* AddPresetOption(CLI::App& app, std::string& preset) {
-  return app.add_option("--preset", preset,
-                        "the node and its defaults: slam_karto (default), open_karto, slam_toolbox (asynchronous "
-                        "node), slam_toolbox_sync or slam_toolbox_offline (synchronous node, which filters scans); "
-                        "with --params, only the node's mode: the file's keys go over that node's declared "
-                        "defaults");
-}
+namespace slamtune::tune {
 
 void PrintParamsWarnings(const slam::BaseConfiguration& base) {
   for (const std::string& w : base.file_report.warnings) std::fprintf(stderr, "slamtune: warning: %s\n", w.c_str());
@@ -76,20 +54,20 @@ TuningInputOptions TuningInputOptions::FromJson(const nlohmann::json& j) {
   o.params_file = j.at("params");
   o.sets = j.at("sets").get<std::vector<std::string>>();
   o.input = LogInputOptions::FromJson(j.at("input"));
-  // Folders written before the rule applied --params over --preset's values.
-  o.base_rule = j.value("base_rule", std::string("preset_then_file")) == "node_defaults"
-                    ? slam::BaseRule::kNodeDefaults
-                    : slam::BaseRule::kPresetThenFile;
+  o.base_rule = j.at("base_rule").get<std::string>() == "node_defaults" ? slam::BaseRule::kNodeDefaults
+                                                                        : slam::BaseRule::kPresetThenFile;
   return o;
 }
 
 namespace {
 
-void LoadBase(const TuningInputOptions& options, bool quiet, TuningInputs* in) {
+// The base configuration (slam/base_configuration.h). Its file's warnings are said unless
+// nothing is (a worker rank): they are about the user's input, like data the log loses.
+void LoadBase(const TuningInputOptions& options, InputNotes notes, TuningInputs* in) {
   slam::BaseConfiguration base =
       slam::LoadBaseConfiguration(options.params_file, options.preset, options.sets, options.base_rule);
-  if (!quiet) {
-    PrintParamsWarnings(base);
+  if (notes != InputNotes::kNone) PrintParamsWarnings(base);
+  if (notes == InputNotes::kAll) {
     std::fprintf(stderr, "base: %s, modelling %s (mode: %s)\n", base.label.c_str(),
                  slam::LaunchOf(base.params.node_mode), base.mode_source.c_str());
   }
@@ -106,21 +84,33 @@ void WarnPartialRelations(const std::string& relations_file, const metrics::Rela
                match.Brief().c_str());
 }
 
-TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes notes) {
-  const bool quiet = notes != InputNotes::kAll;
-  if (options.log.empty()) options.input.RequireLogForSlice(options.world);  // before anything is said
-  TuningInputs in;
-  LoadBase(options, quiet, &in);
+sim::SimulationOptions WorldOptions(const TuningInputOptions& options) {
+  sim::SimulationOptions world;
+  world.world = options.world;
+  world.seed = options.world_seed;
+  return world;
+}
 
+TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes notes,
+                              const std::function<void()>& before_log) {
+  const bool quiet = notes != InputNotes::kAll;
+  if (options.log.empty()) {  // before anything is said
+    options.input.RequireLogForSlice(options.world);
+    WorldOptions(options).Validate();
+  }
+  TuningInputs in;
+  LoadBase(options, notes, &in);
+  // The relations file is read before the log, which may take long; matched against it after.
+  if (!options.relations.empty()) {
+    in.relations = io::ReadRelations(options.relations);
+    in.relations_label = options.relations;
+  }
+  if (before_log) before_log();
   if (options.log.empty()) {
-    sim::SimulationOptions sim_options;
-    sim_options.world = options.world;
-    sim_options.seed = options.world_seed;
-    sim_options.Validate();
     if (!quiet)
       std::fprintf(stderr, "no LOG given: simulating the built-in world '%s' (seed %u)\n", options.world.c_str(),
                    options.world_seed);
-    sim::Simulation simulation = sim::Simulate(sim_options);
+    sim::Simulation simulation = sim::Simulate(WorldOptions(options));
     in.log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
     in.log_label = fmt::format("built-in world {} (seed {})", options.world, options.world_seed);
     if (options.relations.empty()) {
@@ -136,29 +126,10 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes note
   }
   in.scans_not_used = io::ReadingLosses(*in.log, slam::LaserRuleOf(in.base.node_mode));
   if (!options.relations.empty()) {
-    in.relations = io::ReadRelations(options.relations);
-    in.relations_label = options.relations;
     const metrics::RelationMatch match = metrics::RequireMatchingRelations(*in.log, in.relations, options.relations);
     if (!quiet && !match.complete()) WarnPartialRelations(options.relations, match);
   }
   return in;
-}
-
-std::vector<CLI::Option*> TuningRunOptions::AddParallelismTo(CLI::App& app) {
-  return {app.add_option("--jobs,-j", jobs,
-                         "parallel SLAM runs (default: all cores; under mpirun: 1 on rank 0, each other rank runs "
-                         "one)"),
-          app.add_flag("--quiet,-q", quiet, "no progress output")};
-}
-
-std::vector<CLI::Option*> TuningRunOptions::AddSharingTo(CLI::App& app) {
-  return {app.add_flag("--no-share", no_share,
-                       "do not share scan matches, solves and map scores between SLAM runs (same results, slower; for "
-                       "timing comparisons)"),
-          app.add_option("--share-mb", share_mb,
-                         "memory budget of the shared scan-match cache, MB (solves get half as much more, map scores "
-                         "a quarter, barycentres an eighth)")
-              ->capture_default_str()};
 }
 
 void TuningRunOptions::Validate() const {
@@ -192,16 +163,6 @@ optim::EvaluateFn EvaluateWith(std::shared_ptr<const optim::SlamEvaluationContex
   return [context = std::move(context)](const optim::Assignment& a) { return optim::EvaluateSlam(*context, a); };
 }
 
-nlohmann::json WorkerSetup(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                           const TuningRunOptions& run, optim::WallDrawing drawing, bool stop_broken_runs) {
-  return {{"inputs", inputs.ToJson()},
-          {"fixed", fixed},
-          {"no_share", run.no_share},
-          {"share_mb", run.share_mb},
-          {"draw_wall", drawing == optim::WallDrawing::kDraw},
-          {"stop_broken_runs", stop_broken_runs}};
-}
-
 void CreateOutputFolder(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -219,51 +180,4 @@ void EnsureWritableOutputFolder(const std::string& dir) {
   std::filesystem::remove(probe, ec);
 }
 
-int ServeAsWorker(const optim::MpiWorld& world) {
-  optim::ServeEvaluations(world, [](const nlohmann::json& setup) -> optim::EvaluateFn {
-    const TuningInputs inputs = LoadTuningInputs(TuningInputOptions::FromJson(setup.at("inputs")), InputNotes::kNone);
-    TuningRunOptions run;
-    run.no_share = setup.at("no_share").get<bool>();
-    run.share_mb = setup.at("share_mb").get<std::size_t>();
-    auto context = MakeEvaluationContext(inputs, setup.at("fixed").get<std::map<std::string, double>>(), run);
-    optim::DrawWall(*context,
-                    setup.at("draw_wall").get<bool>() ? optim::WallDrawing::kDraw : optim::WallDrawing::kSkip);
-    context->stop_broken_runs = setup.value("stop_broken_runs", false);
-    return EvaluateWith(std::move(context));
-  });
-  return 0;
-}
-
-TuningProcess::TuningProcess() {
-  if (world_.distributed() && world_.rank() == 0) workers_.emplace(world_);
-}
-
-void TuningProcess::FitJobs(const CLI::App& app, TuningRunOptions& run) const {
-  if (workers_ && app.get_option("--jobs")->count() == 0) run.jobs = 1;
-}
-
-void TuningProcess::SetupWorkers(const TuningInputOptions& inputs, const std::map<std::string, double>& fixed,
-                                 const TuningRunOptions& run, optim::WallDrawing drawing, bool stop_broken_runs) {
-  if (workers_) workers_->Setup(WorkerSetup(inputs, fixed, run, drawing, stop_broken_runs));
-}
-
-void TuningProcess::ShareWith(optim::BatchEvaluator& evaluator) {
-  if (workers_) evaluator.SetRemote(&*workers_);
-}
-
-void TuningProcess::StopWorkers() {
-  if (workers_) workers_->Stop();
-}
-
-std::string TuningProcess::Parallelism(int jobs) const {
-  return workers_ ? fmt::format("{} MPI ranks ({} evaluating on rank 0)", world_.size(), jobs)
-                  : fmt::format("{} job{}", jobs, jobs == 1 ? "" : "s");
-}
-
-void TuningProcess::PrintWorkersShare(const optim::BatchEvaluator& evaluator) const {
-  if (workers_) {
-    std::printf("%zu of the SLAM runs ran on the %d worker ranks\n", evaluator.stats().remote, world_.size() - 1);
-  }
-}
-
-}  // namespace slamtune::cli
+}  // namespace slamtune::tune

@@ -1,4 +1,4 @@
-#include "slamtune/cli/log_input.h"
+#include "slamtune/tune/log_input.h"
 
 #include <fmt/format.h>
 
@@ -9,38 +9,7 @@
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
 
-namespace slamtune::cli {
-
-void LogInputOptions::AddTo(CLI::App& app, MaxScans max_scans_option) {
-  app.add_flag("--lenient", lenient,
-               "Skip malformed records or messages (and count them) instead of failing; a recording cut off inside "
-               "a record reads up to its last whole record without it");
-  app.add_option("--no-return", no_return,
-                 "Readings >= this value (m) are no-returns; overrides the log's own (PARAM, range_max, detected)");
-  if (max_scans_option == MaxScans::kOffer) {
-    app.add_option("--max-scans", max_scans, "Read only the first N laser scans (0 = all)");
-  }
-  app.add_option("--beams", beams,
-                 "scans whose beam count changes: node (default: dropped, as the ROS node drops them), per-geometry "
-                 "(one Karto laser per beam geometry) or nearest-beam (resampled onto the most common geometry, an "
-                 "approximation)")
-      ->capture_default_str();
-  auto* ros = "ROS recordings";
-  app.add_option("--scan-topic", scan_topic, "sensor_msgs/LaserScan topic (default: the only one)")->group(ros);
-  app.add_option("--odom-topic", odom_topic,
-                 "nav_msgs/Odometry topic for the robot poses (default: odom -> base frame from /tf)")
-      ->group(ros);
-  app.add_option("--odom-frame", odom_frame, "odometry frame of /tf (default: odom)")->group(ros);
-  app.add_option("--base-frame", base_frame, "robot base frame (default: base_footprint, else base_link)")->group(ros);
-  app.add_option("--laser-offset", laser_offset,
-                 "laser mounting pose in the base frame X,Y,YAW (m, m, rad), instead of the tf tree's")
-      ->expected(3)
-      ->delimiter(',')
-      ->group(ros);
-  app.add_option("--max-odom-gap", max_odom_gap_s, "odometry samples farther apart (s) are not interpolated")
-      ->capture_default_str()
-      ->group(ros);
-}
+namespace slamtune::tune {
 
 io::LogReadOptions LogInputOptions::ToReadOptions() const {
   io::LogReadOptions o;
@@ -99,4 +68,4 @@ void PrintLogInput(const io::LaserLog& log, bool quiet) {
   }
 }
 
-}  // namespace slamtune::cli
+}  // namespace slamtune::tune

@@ -1,0 +1,74 @@
+#include "slamtune/tune/single_run.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "slamtune/common/error.h"
+#include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/relations.h"
+#include "slamtune/sim/simulation.h"
+
+namespace slamtune::tune {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+class SingleRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = testing::UniqueTempDir("single_run");
+    sim::Simulation s = sim::Simulate(sim::SimulationOptions{});
+    io::WriteCarmenLog((dir_ / "office.clf").string(), s.log);
+    io::WriteRelations((dir_ / "office.relations").string(), s.relations);
+    options_.inputs.log = (dir_ / "office.clf").string();
+    options_.inputs.relations = (dir_ / "office.relations").string();
+    options_.inputs.input.max_scans = 300;
+    options_.out = (dir_ / "out").string();
+    options_.quiet = true;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::filesystem::path dir_;
+  RunOptions options_;
+  Progress progress_{Progress::Mode::kQuiet};
+};
+
+TEST_F(SingleRun, WritesEveryFileAndTheErrorOfTheRelations) {
+  const RunOutcome outcome = RunAndWrite(options_, progress_);
+  for (const char* name : {"map.pgm", "map.yaml", "map.png", "trajectory.txt", "loop_closures.csv", "front_end.csv",
+                           "front_end_map.png", "run.json"}) {
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir_ / "out" / name)) << name;
+  }
+  ASSERT_TRUE(outcome.error.has_value());
+  EXPECT_GT(outcome.error->relations_used, 0u);
+  EXPECT_EQ(outcome.run.trajectory.size(), 300u);
+  const nlohmann::json run = nlohmann::json::parse(std::ifstream(dir_ / "out" / "run.json"));
+  EXPECT_EQ(run.at("scans"), 300);
+  EXPECT_EQ(run.at("gt_error").at("relations_used"), outcome.error->relations_used);
+  EXPECT_EQ(run.at("map").at("occupied_cells"), outcome.run.quality.occupied_cells);
+  EXPECT_EQ(run.at("params").at("do_loop_closing"), true);
+}
+
+TEST_F(SingleRun, NoLoopClosureIsTheBaseWithoutIt) {
+  options_.no_loop_closure = true;
+  const RunOutcome outcome = RunAndWrite(options_, progress_);
+  EXPECT_TRUE(outcome.run.summary.loop_closures.empty());
+  const nlohmann::json run = nlohmann::json::parse(std::ifstream(dir_ / "out" / "run.json"));
+  EXPECT_EQ(run.at("params").at("do_loop_closing"), false);
+}
+
+TEST_F(SingleRun, TheOutputFolderIsCheckedBeforeTheLogIsRead) {
+  std::ofstream(dir_ / "file") << "x";
+  options_.out = (dir_ / "file" / "out").string();
+  options_.inputs.log = (dir_ / "missing.clf").string();
+  EXPECT_THAT([&] { RunAndWrite(options_, progress_); }, ThrowsMessage<InputError>(HasSubstr("file/out")));
+}
+
+}  // namespace
+}  // namespace slamtune::tune
