@@ -1,26 +1,20 @@
 // `slamtune evaluate MAP [MAP...]`: the map-quality figures (metrics/map_quality.h) of saved
-// maps, from this engine or any SLAM system that writes map_server PGM/YAML or PNG.
+// maps, from this engine or any SLAM system that writes map_server PGM/YAML or PNG
+// (tune/map_evaluation.h), as a table or JSON.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/common/error.h"
-#include "slamtune/io/map_image.h"
-#include "slamtune/metrics/map_quality.h"
-#include "slamtune/metrics/map_quality_overlay.h"
+#include "slamtune/tune/map_evaluation.h"
 
 namespace slamtune::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 struct EvaluateArgs {
   std::vector<std::string> maps;
@@ -29,42 +23,13 @@ struct EvaluateArgs {
   metrics::MapQualityOptions options;
 };
 
-struct Row {
-  std::string map;
-  metrics::MapQuality quality;
-  std::string overlay;  // written overlay PNG, if any
-};
-
-nlohmann::ordered_json ToJson(const Row& row) {
-  const metrics::MapQuality& q = row.quality;
-  nlohmann::ordered_json j = {
-      {"map", row.map},
-      {"width", q.width},
-      {"height", q.height},
-      {"resolution", q.resolution},
-      {"occupied_cells", q.occupied_cells},
-      {"free_cells", q.free_cells},
-      {"unknown_cells", q.unknown_cells},
-      {"occupied_ratio", q.occupied_ratio},
-      {"occupied_ratio_known", q.occupied_ratio_known},
-      {"max_corner_response", q.max_corner_response},
-      {"corner_pixels", q.corner_pixels},
-      {"corners", q.corners},
-      {"enclosed_areas", q.enclosed_areas},
-      {"contours", q.contours},
-      {"message", q.message},
-  };
-  if (!row.overlay.empty()) j["overlay"] = row.overlay;
-  return j;
-}
-
-void PrintTable(const std::vector<Row>& rows) {
+void PrintTable(const std::vector<tune::MapEvaluation>& rows) {
   std::size_t name_width = 3;
-  for (const Row& row : rows) name_width = std::max(name_width, row.map.size());
+  for (const tune::MapEvaluation& row : rows) name_width = std::max(name_width, row.map.size());
   std::printf("%s\n", fmt::format("{:<{}}  {:>11}  {:>9}  {:>9}  {:>11}  {:>7}  {:>8}  {:>8}", "map", name_width,
                                   "size", "eta", "eta_known", "corner_px", "corners", "enclosed", "contours")
                           .c_str());
-  for (const Row& row : rows) {
+  for (const tune::MapEvaluation& row : rows) {
     const metrics::MapQuality& q = row.quality;
     std::printf("%s\n", fmt::format("{:<{}}  {:>11}  {:>9.6f}  {:>9.6f}  {:>11}  {:>7}  {:>8}  {:>8}", row.map,
                                     name_width, fmt::format("{}x{}", q.width, q.height), q.occupied_ratio,
@@ -74,42 +39,11 @@ void PrintTable(const std::vector<Row>& rows) {
   std::printf("eta = occupied/all cells, n_c = corner_px (Harris pixels), n_e = enclosed; lower is better\n");
 }
 
-// `<stem>.quality.png` in the debug folder; a repeated stem gets the map's position prepended.
-std::string OverlayPath(const std::string& dir, const std::string& map, std::size_t index,
-                        std::set<std::string>& used) {
-  std::string name = fs::path(map).stem().string() + ".quality.png";
-  if (!used.insert(name).second) {
-    name = fmt::format("{}_{}", index + 1, name);
-    used.insert(name);
-  }
-  return (fs::path(dir) / name).string();
-}
-
 int Run(const EvaluateArgs& args) {
-  args.options.Validate();  // before any file is read
-  if (!args.debug_dir.empty()) {
-    std::error_code ec;
-    fs::create_directories(args.debug_dir, ec);
-    if (ec || !fs::is_directory(args.debug_dir)) {
-      throw InputError(args.debug_dir, 0, "--debug-dir: cannot create the folder" + (ec ? ": " + ec.message() : ""));
-    }
-  }
-  std::vector<Row> rows;
-  std::set<std::string> used_names;
-  for (std::size_t i = 0; i < args.maps.size(); ++i) {
-    const io::MapImage map = io::ReadMap(args.maps[i]);
-    Row row{args.maps[i], {}, {}};
-    if (args.debug_dir.empty()) {
-      row.quality = metrics::ComputeMapQuality(map, args.options);
-    } else {
-      row.overlay = OverlayPath(args.debug_dir, args.maps[i], i, used_names);
-      row.quality = metrics::WriteMapQualityOverlay(map, args.options, row.overlay);
-    }
-    rows.push_back(std::move(row));
-  }
+  const std::vector<tune::MapEvaluation> rows = tune::EvaluateMaps(args.maps, args.options, args.debug_dir);
   if (args.json) {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const Row& row : rows) list.push_back(ToJson(row));
+    for (const tune::MapEvaluation& row : rows) list.push_back(tune::ToJson(row));
     std::printf("%s\n", list.dump(2).c_str());
   } else {
     PrintTable(rows);

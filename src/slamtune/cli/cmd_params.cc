@@ -1,22 +1,17 @@
 // `slamtune params FILE...`: what a slam_toolbox or slam_karto parameter file means to the
-// engine, and whether its node would load it (slam/ros_node_files.h CheckNodeFile). Several
-// files are applied in order, as a launch file stacks them (your file, then a change file).
+// engine, and whether its node would load it (tune/params_inspection.h). Several files are
+// applied in order, as a launch file stacks them (your file, then a change file).
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/cli/input_flags.h"
-#include "slamtune/common/text_file.h"
-#include "slamtune/slam/base_configuration.h"
-#include "slamtune/slam/params_yaml.h"
-#include "slamtune/slam/ros_node_files.h"
 #include "slamtune/slam/ros_params_section.h"
+#include "slamtune/tune/params_inspection.h"
 
 namespace slamtune::cli {
 namespace {
@@ -27,13 +22,6 @@ struct ParamsArgs {
   std::vector<std::string> sets;
   bool all = false;
   bool json = false;
-};
-
-struct FileCheck {
-  std::string path;
-  slam::RosNode node;
-  std::vector<std::string> problems;
-  slam::ParamsYamlReport report;  // what each key means to the engine
 };
 
 std::string ValueText(const slam::ParamValue& value) {
@@ -63,78 +51,38 @@ void PrintKeys(const slam::ParamsYamlReport& report, const std::string& text) {
   }
 }
 
-nlohmann::ordered_json KeysJson(const slam::ParamsYamlReport& report) {
-  nlohmann::ordered_json keys = nlohmann::ordered_json::array();
-  for (const slam::KeyReport& k : report.keys) {
-    keys.push_back({{"key", k.key}, {"line", k.line}, {"use", slam::NameOf(k.use)}, {"note", k.note}});
-  }
-  return keys;
-}
-
-int RunParams(const ParamsArgs& args) {
-  slam::BaseConfiguration base = slam::LoadBaseConfiguration(args.files.front(), args.preset, {});
-  std::vector<FileCheck> checks;
-  checks.push_back({args.files.front(), base.node, slam::CheckNodeFile(base.node, base.file_text), base.file_report});
-  std::vector<std::string> texts = {base.file_text};
-  for (std::size_t i = 1; i < args.files.size(); ++i) {
-    texts.push_back(ReadTextFile(args.files[i]));
-    const slam::RosNode node = slam::NodeOfParamsFile(texts.back(), args.files[i]);
-    slam::ParamsYamlReport report = slam::ApplyParamsYaml(base.params, texts.back(), args.files[i]);
-    checks.push_back({args.files[i], node, slam::CheckNodeFile(node, texts.back()), std::move(report)});
-  }
-  slam::ApplyOverrides(base.params, args.sets);
-  base.params.Validate();
-
-  slam::MapperParams defaults = slam::NodeDefaults(base.node);
-  defaults.node_mode = base.params.node_mode;
-  const std::string defaults_label =
-      fmt::format("{}'s declared defaults, {}", slam::RosNodeName(base.node), slam::LaunchOf(base.params.node_mode));
-  const std::vector<slam::NamedParam> values = slam::ToNamedValues(base.params);
-  const std::vector<slam::NamedParam> default_values = slam::ToNamedValues(defaults);
-  bool all_load = true;
-  for (const FileCheck& c : checks) all_load = all_load && c.problems.empty();
-
-  if (args.json) {
-    nlohmann::ordered_json j;
-    j["files"] = nlohmann::ordered_json::array();
-    for (const FileCheck& c : checks) {
-      j["files"].push_back({{"path", c.path},
-                            {"node", slam::RosNodeName(c.node)},
-                            {"loads", c.problems.empty()},
-                            {"problems", c.problems},
-                            {"keys", KeysJson(c.report)}});
-    }
-    j["node_mode"] = slam::NameOf(base.params.node_mode);
-    j["over"] = defaults_label;
-    nlohmann::ordered_json params = nlohmann::ordered_json::object();
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if (!args.all && values[i].value == default_values[i].value) continue;
-      std::visit([&](const auto& v) { params[values[i].name] = v; }, values[i].value);
-    }
-    j["params"] = params;
-    std::printf("%s\n", j.dump(2).c_str());
-    return all_load ? 0 : 1;
-  }
-  for (std::size_t i = 0; i < checks.size(); ++i) {
-    const FileCheck& c = checks[i];
+void PrintFiles(const tune::ParamsInspection& inspection) {
+  for (const tune::ParamsFileCheck& c : inspection.files) {
     std::printf("%s: a %s (%s) parameter file; %s\n", c.path.c_str(), slam::RosNodeName(c.node),
                 c.node == slam::RosNode::kSlamToolbox ? "ROS 2" : "ROS 1",
                 c.problems.empty() ? "the node loads it" : "the node would not take it as it is:");
     for (const std::string& p : c.problems) std::printf("  %s\n", p.c_str());
     if (!c.report.keys.empty()) {
       std::printf("what each key means here:\n");
-      PrintKeys(c.report, texts[i]);
+      PrintKeys(c.report, c.text);
     }
   }
-  std::printf("engine parameters over %s (%s):\n", defaults_label.c_str(),
+}
+
+int RunParams(const ParamsArgs& args) {
+  const tune::ParamsInspection inspection = tune::InspectParamsFiles(args.files, args.preset, args.sets);
+  const int status = inspection.AllLoad() ? 0 : 1;
+  if (args.json) {
+    std::printf("%s\n", tune::ToJson(inspection, args.all).dump(2).c_str());
+    return status;
+  }
+  PrintFiles(inspection);
+  std::printf("engine parameters over %s (%s):\n", inspection.defaults_label.c_str(),
               args.all ? "all; * = differs" : "those that differ");
+  const std::vector<slam::NamedParam> values = slam::ToNamedValues(inspection.params);
+  const std::vector<slam::NamedParam> defaults = slam::ToNamedValues(inspection.defaults);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    const bool differs = values[i].value != default_values[i].value;
+    const bool differs = values[i].value != defaults[i].value;
     if (!args.all && !differs) continue;
     std::printf("  %-42s %s%s\n", values[i].name.c_str(), ValueText(values[i].value).c_str(),
                 args.all && differs ? " *" : "");
   }
-  return all_load ? 0 : 1;
+  return status;
 }
 
 const SubcommandRegistrar kParams(Subcommand{

@@ -1,86 +1,21 @@
 // `slamtune sweep [LOG] --vary NAME=LO:HI[:STEP] [--fix NAME=V]... --out DIR`: loop closures
 // and the three map objectives (and errors, with relations) along one parameter — the seed
-// paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18). Under mpirun, rank 0
-// writes and the other ranks evaluate, as for optimize (optim/mpi_evaluation.h).
+// paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18); the work is
+// tune/sweep_command.h. Under mpirun, rank 0 writes and the other ranks evaluate, as for optimize
+// (optim/mpi_evaluation.h).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <filesystem>
 #include <memory>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/input_flags.h"
-#include "slamtune/common/error.h"
 #include "slamtune/common/progress.h"
-#include "slamtune/optim/batch_evaluator.h"
-#include "slamtune/optim/mpi_evaluation.h"
-#include "slamtune/optim/search_space.h"
-#include "slamtune/optim/slam_evaluation.h"
-#include "slamtune/report/sweep_report.h"
+#include "slamtune/tune/sweep_command.h"
 #include "slamtune/tune/tuning_process.h"
 
 namespace slamtune::cli {
 namespace {
-
-struct SweepArgs {
-  tune::TuningInputOptions inputs;
-  tune::TuningRunOptions run;
-  std::string vary;
-  std::vector<std::string> fix;
-  std::string out;
-};
-
-// --vary NAME=LO:HI[:STEP], NAME a full ROS name.
-struct SweepRange {
-  std::string name;
-  double lo = 0, hi = 0, step = 1;
-};
-
-SweepRange ParseSweepRange(const std::string& vary) {
-  const auto eq = vary.find('=');
-  if (eq == std::string::npos) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + vary + "'");
-  SweepRange range;
-  range.name = optim::FullParamName(vary.substr(0, eq));
-  std::vector<std::string> parts;
-  for (std::string rest = vary.substr(eq + 1);;) {
-    const auto c = rest.find(':');
-    parts.push_back(rest.substr(0, c));
-    if (c == std::string::npos) break;
-    rest = rest.substr(c + 1);
-  }
-  if (parts.size() < 2 || parts.size() > 3) throw InputError("--vary must be NAME=LO:HI[:STEP], got '" + vary + "'");
-  range.lo = optim::ParseFlagNumber(parts[0], "--vary LO");
-  range.hi = optim::ParseFlagNumber(parts[1], "--vary HI");
-  range.step = parts.size() == 3 ? optim::ParseFlagNumber(parts[2], "--vary STEP") : 1.0;
-  if (!(range.lo <= range.hi)) throw InputError(fmt::format("--vary: bounds reversed ({} > {})", range.lo, range.hi));
-  if (!(range.step > 0)) throw InputError(fmt::format("--vary: STEP must be > 0, got {}", range.step));
-  if ((range.hi - range.lo) / range.step > 10000) {
-    throw InputError("--vary: more than 10000 values; use a larger STEP");
-  }
-  return range;
-}
-
-// One assignment per value of `range`, each with the --fix values; every one validated before any work.
-std::vector<optim::Assignment> SweepBatch(const SweepRange& range, const std::vector<std::string>& fix,
-                                          const optim::SlamEvaluationContext& context) {
-  optim::Assignment fixed;
-  for (const auto& f : fix) {
-    const auto e = f.find('=');
-    if (e == std::string::npos) throw InputError("--fix must be NAME=VALUE, got '" + f + "'");
-    fixed[optim::FullParamName(f.substr(0, e))] = optim::ParseFlagNumber(f.substr(e + 1), "--fix " + f.substr(0, e));
-  }
-  std::vector<optim::Assignment> batch;
-  for (int i = 0;; ++i) {
-    const double v = range.lo + i * range.step;
-    if (v > range.hi + 1e-9 * std::max(1.0, std::fabs(range.hi))) break;
-    optim::Assignment a = fixed;
-    a[range.name] = std::round(v * 1e9) / 1e9;  // 2 + 3 * 0.25 prints as 2.75, not 2.7500000000000004
-    context.ParamsFor(a);                       // validates names and values before any work
-    batch.push_back(a);
-  }
-  return batch;
-}
 
 // The sweep as a table on stdout: one row per value.
 void PrintSweepTable(const std::string& name, const std::vector<report::SweepPoint>& points, bool with_errors) {
@@ -94,50 +29,30 @@ void PrintSweepTable(const std::string& name, const std::vector<report::SweepPoi
   }
 }
 
-int RunSweep(SweepArgs args, const CLI::App& app) {
+int RunSweep(tune::SweepOptions options, const CLI::App& app) {
   tune::TuningProcess process;
   if (process.is_worker()) return process.Serve();
-  process.FitJobs(app.get_option("--jobs")->count() > 0, args.run);
-  args.run.Validate();
-  const SweepRange range = ParseSweepRange(args.vary);
-  const std::string& name = range.name;
-  if (args.out.empty()) throw InputError("--out DIR is required");
-
-  tune::TuningInputs inputs =
-      tune::LoadTuningInputs(args.inputs, args.run.quiet ? tune::InputNotes::kDataLoss : tune::InputNotes::kAll);
-  auto context = tune::MakeEvaluationContext(inputs, {}, args.run);
-  const std::vector<optim::Assignment> batch = SweepBatch(range, args.fix, *context);
-  tune::CreateOutputFolder(args.out);
-  process.SetupWorkers(args.inputs, {}, args.run, optim::WallDrawing::kSkip);
-
-  Progress progress(args.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
-  progress.Update(fmt::format("sweeping {} over {} values on {} with {}", name, batch.size(), inputs.log_label,
-                              process.Parallelism(args.run.jobs)),
-                  true);
+  process.FitJobs(app.get_option("--jobs")->count() > 0, options.run);
+  Progress progress(options.run.quiet ? Progress::Mode::kQuiet : Progress::Mode::kAuto);
+  tune::SweepHooks hooks;
+  hooks.started = [&progress](const std::string& headline) {
+    progress.Update(headline, true);
+    progress.Finish();
+  };
+  hooks.evaluated = [&progress](const tune::SweepStep& s) {
+    progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closure{}", s.done, s.total, s.name, s.value,
+                                s.loop_closures, s.loop_closures == 1 ? "" : "s"));
+  };
+  const tune::SweepOutcome outcome = tune::RunSweep(options, process, hooks);
   progress.Finish();
-  optim::BatchEvaluator evaluator(tune::EvaluateWith(context), nullptr, args.run.jobs);
-  process.ShareWith(evaluator);
-  evaluator.SetProgressCallback([&](const optim::EvaluationRecord& r, const optim::BatchEvaluatorStats& s) {
-    progress.Update(fmt::format("{}/{} runs | last {}={:.4g}: {} loop closure{}", s.evaluated, batch.size(), name,
-                                r.params.at(name), r.loop_closures, r.loop_closures == 1 ? "" : "s"));
-  });
-  const auto records = evaluator.Evaluate(batch);
-  progress.Finish();
-  process.StopWorkers();
-  std::vector<report::SweepPoint> points;
-  for (std::size_t i = 0; i < batch.size(); ++i) points.push_back({batch[i].at(name), records[i]});
-  report::SweepReportOptions options;
-  options.log_path = inputs.log_label;
-  options.log_input = inputs.log_input;
-  const auto summary = report::WriteSweepReport(name, points, args.out, options);
-  if (!args.run.quiet) {
-    PrintSweepTable(name, points, !inputs.relations.empty());
-    std::printf("wrote %zu files to %s\n", summary.files.size(), args.out.c_str());
-    const std::string workers = process.WorkersShare(evaluator.stats());
+  if (!options.run.quiet) {
+    PrintSweepTable(outcome.name, outcome.points, outcome.with_errors);
+    std::printf("wrote %zu files to %s\n", outcome.report.files.size(), options.out.c_str());
+    const std::string workers = process.WorkersShare(outcome.evaluations);
     if (!workers.empty()) std::printf("%s\n", workers.c_str());
-    std::printf("%s\n", optim::SharedWorkReport(*context).c_str());
+    std::printf("%s\n", outcome.shared_work.c_str());
   }
-  return summary.failed > 0 ? 1 : 0;
+  return outcome.report.failed > 0 ? 1 : 0;
 }
 
 const SubcommandRegistrar kSweep{{
@@ -145,7 +60,7 @@ const SubcommandRegistrar kSweep{{
     "Loop closures and map objectives along one parameter (the paper's Figures 14-15)",
     45,
     [](CLI::App& app) -> std::function<int()> {
-      auto args = std::make_shared<SweepArgs>();
+      auto args = std::make_shared<tune::SweepOptions>();
       app.add_option("LOG", args->inputs.log, "CARMEN log; none: the built-in world");
       app.add_option("--vary", args->vary, "NAME=LO:HI[:STEP] (r, g, p, q or any numeric ROS name); STEP 1 if omitted")
           ->required();
