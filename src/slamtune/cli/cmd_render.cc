@@ -1,6 +1,7 @@
 // `slamtune render LOG --poses TRAJECTORY|odometry --out DIR`: the occupancy map of a log drawn
 // from given poses (a simulated world's truth.txt, another system's trajectory, or raw
-// odometry), with its map metrics — e.g. to check that the metrics prefer the true map.
+// odometry), with its map metrics — e.g. to check that the metrics prefer the true map. The log
+// and the base configuration are loaded as every command loads them (tune::LoadTuningInputs).
 // map.pgm, map.yaml and map.png are written whole or not at all (io/map_image.h).
 #include <fmt/format.h>
 
@@ -12,29 +13,28 @@
 #include "slamtune/cli/input_flags.h"
 #include "slamtune/common/error.h"
 #include "slamtune/common/output_dir.h"
-#include "slamtune/io/log_summary.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/metrics/map_quality.h"
-#include "slamtune/slam/base_configuration.h"
 #include "slamtune/slam/pose_map.h"
 
 namespace slamtune::cli {
 namespace {
 
 struct RenderArgs {
-  std::string log, poses, out, preset, params_file;
-  tune::LogInputOptions input;
-  std::vector<std::string> sets;
+  tune::TuningInputOptions inputs;  // the log and the base configuration (map resolution, laser range rules)
+  std::string poses, out;
 };
 
 int RunRender(const RenderArgs& args) {
-  const slam::BaseConfiguration base = slam::LoadBaseConfiguration(args.params_file, args.preset, args.sets);
-  tune::PrintParamsWarnings(base);
-  const slam::MapperParams& params = base.params;
-  EnsureOutputDir(args.out);  // before the work
-  const io::LaserLog log = tune::ReadLog(args.log, args.input);
-  for (const std::string& line : io::DescribeLogInput(log)) std::fprintf(stderr, "%s\n", line.c_str());
-  const auto poses = args.poses == "odometry" ? slam::OdometryTrajectory(log) : io::ReadTrajectory(args.poses);
+  const bool odometry = args.poses == "odometry";
+  std::vector<io::TimedPose> poses;
+  if (!odometry) poses = io::ReadTrajectory(args.poses);  // before the log, which may take long to read
+  // The one loader of every command; the output folder is checked before the log is read.
+  const tune::TuningInputs inputs =
+      tune::LoadTuningInputs(args.inputs, tune::InputNotes::kAll, [&args] { EnsureOutputDir(args.out); });
+  const slam::MapperParams& params = inputs.base;
+  const io::LaserLog& log = *inputs.log;
+  if (odometry) poses = slam::OdometryTrajectory(log);
   slam::PoseMapSummary summary;
   const io::MapImage map = slam::MapFromPoses(log, poses, params, &summary);
   io::WriteMapServer(map, (std::filesystem::path(args.out) / "map.yaml").string());
@@ -55,15 +55,15 @@ const SubcommandRegistrar kRender{{
     35,
     [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<RenderArgs>();
-      app.add_option("LOG", args->log, "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag")->required();
-      AddLogInputFlags(app, args->input);
+      app.add_option("LOG", args->inputs.log, "CARMEN log (plain or gzip), or a ROS 2 / ROS 1 bag")->required();
+      AddLogInputFlags(app, args->inputs.input);
       app.add_option("--poses", args->poses, "trajectory file (timestamp x y theta per scan) or 'odometry'")
           ->required();
       app.add_option("--out", args->out, "output folder")->required();
-      AddPresetFlag(app, args->preset);
-      app.add_option("--params", args->params_file,
+      AddPresetFlag(app, args->inputs.preset);
+      app.add_option("--params", args->inputs.params_file,
                      "slam_toolbox or slam_karto parameter file (map resolution, laser range rules)");
-      app.add_option("--set", args->sets, "NAME=VALUE override (repeatable)");
+      app.add_option("--set", args->inputs.sets, "NAME=VALUE override (repeatable)");
       app.footer(
           "Examples:\n"
           "  slamtune render intel.clf.gz --poses odometry --out runs/intel_odometry   # the map before SLAM\n"
