@@ -5,8 +5,8 @@
 #include <functional>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/recording_container.h"
-#include "slamtune/io/ros_messages.h"
+#include "slamtune/io/ros/recording_container.h"
+#include "slamtune/io/ros/ros_messages.h"
 
 namespace slamtune::fuzz {
 

@@ -1,4 +1,4 @@
-// MCAP files (io/mcap_reader.h), in memory, with the messages decoded.
+// MCAP files (io/ros/mcap_reader.h), in memory, with the messages decoded.
 #include <span>
 
 #include "container_fuzz.h"

@@ -1,5 +1,5 @@
 // The step from a recording's decoded contents to the laser log every command works on
-// (io/recording_log.h RecordingToLog), past the containers: the contents are built from the input
+// (io/ros/recording_log.h RecordingToLog), past the containers: the contents are built from the input
 // as a program (fuzz_input.h) — LaserScans on one or two topics with any stamps, angles, limits
 // and ranges (NaN, infinities, range_max 0 or negative, range_min above range_max), a tf tree of
 // static and dynamic transforms between a few frames (loops, gaps, bad rotations), Odometry
@@ -18,8 +18,8 @@
 #include "slamtune/io/log_check.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
-#include "slamtune/io/recording_contents.h"
-#include "slamtune/io/recording_log.h"
+#include "slamtune/io/ros/recording_contents.h"
+#include "slamtune/io/ros/recording_log.h"
 #include "slamtune/io/scan_losses.h"
 
 namespace {

@@ -1,9 +1,9 @@
-// The LaserScan, Odometry and TFMessage decoders (io/ros_messages.h): every input is decoded as
+// The LaserScan, Odometry and TFMessage decoders (io/ros/ros_messages.h): every input is decoded as
 // each type in both serializations.
 #include <span>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/ros_messages.h"
+#include "slamtune/io/ros/ros_messages.h"
 
 namespace {
 

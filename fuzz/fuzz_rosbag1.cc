@@ -1,4 +1,4 @@
-// ROS 1 bags v2.0 (io/rosbag1_reader.h), in memory, with the messages decoded.
+// ROS 1 bags v2.0 (io/ros/rosbag1_reader.h), in memory, with the messages decoded.
 #include <span>
 
 #include "container_fuzz.h"

@@ -1,9 +1,9 @@
-// rosbag2 SQLite3 databases (io/rosbag2_sqlite_reader.h), as a database image in memory, with
+// rosbag2 SQLite3 databases (io/ros/rosbag2_sqlite_reader.h), as a database image in memory, with
 // the messages decoded.
 #include <vector>
 
 #include "container_fuzz.h"
-#include "slamtune/io/rosbag2_sqlite_reader.h"
+#include "slamtune/io/ros/rosbag2_sqlite_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   slamtune::fuzz::FuzzContainer([&](const auto& options, const auto& on_message) {

@@ -1,4 +1,4 @@
-// The transform tree of a recording (io/tf_buffer.h), built from the input as a program: each
+// The transform tree of a recording (io/ros/tf_buffer.h), built from the input as a program: each
 // step adds a transform (static or dynamic, with any stamp, translation and rotation, NaN and
 // infinities included, between frames of a small set that makes loops, second parents and
 // self-transforms likely) or asks the tree something. Besides crashes, the tree's promises are
@@ -11,7 +11,7 @@
 
 #include "fuzz_input.h"
 #include "slamtune/common/error.h"
-#include "slamtune/io/tf_buffer.h"
+#include "slamtune/io/ros/tf_buffer.h"
 
 namespace {
 

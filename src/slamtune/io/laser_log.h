@@ -15,7 +15,7 @@
 
 namespace slamtune::io {
 
-// kRosLaserScan: a sensor_msgs/LaserScan of a ROS recording (recording_log.h).
+// kRosLaserScan: a sensor_msgs/LaserScan of a ROS recording (ros/recording_log.h).
 enum class RecordKind { kFlaser, kRobotLaser1, kRawLaser, kOdom, kParam, kComment, kUnknown, kRosLaserScan };
 
 const char* RecordKindName(RecordKind kind);
@@ -110,7 +110,7 @@ struct OdomRecord {
   double ipc_time = 0.0, logger_time = 0.0;
 };
 
-// Where the scans of a ROS recording came from and what could not be used (recording_log.h).
+// Where the scans of a ROS recording came from and what could not be used (ros/recording_log.h).
 // The rule for a LaserScan whose range_max is NaN, infinite, 0 or negative, as every output says it.
 inline constexpr const char* kBadRangeMaxRule =
     "read with no upper limit: inf and NaN readings are no-returns, every other reading above range_min is a range, "
@@ -194,7 +194,7 @@ struct LaserLog {
   std::optional<RecordingInfo> recording;  // set when the log was read from a ROS recording
 };
 
-// Choices made when turning a ROS recording into a log (recording_log.h); empty = automatic.
+// Choices made when turning a ROS recording into a log (ros/recording_log.h); empty = automatic.
 struct RecordingReadOptions {
   std::string scan_topic;             // sensor_msgs/LaserScan topic; "" = the only one
   std::string odom_topic;             // nav_msgs/Odometry topic for the poses; "" = odom -> base from /tf

@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "slamtune/io/laser_log.h"
-#include "slamtune/io/recording_contents.h"
+#include "slamtune/io/ros/recording_contents.h"
 #include "slamtune/io/scan_losses.h"
 
 namespace slamtune::io {

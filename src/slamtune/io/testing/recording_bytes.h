@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "slamtune/io/recording_container.h"
+#include "slamtune/io/ros/recording_container.h"
 
 namespace slamtune::io::testing {
 

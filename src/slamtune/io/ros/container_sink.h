@@ -1,0 +1,60 @@
+// Where the single-file container readers (MCAP, rosbag2 SQLite3, ROS 1) put what they read:
+// the ContainerSummary being filled (recording_container.h), shared by all split files of a
+// rosbag2 bag folder so that their topics merge, and the caller's message callback.
+//
+// Topics with the same name, type and serialization are one RecordedTopic, whichever file,
+// MCAP channel or ROS 1 connection they come from (several publishers on /tf are one topic).
+// With message-level compression (rosbag2 compression_mode "message", docs/recordings.md §1.1)
+// each payload is a zstd frame, decompressed here before the callback sees it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "slamtune/io/ros/recording_container.h"
+
+namespace slamtune::io {
+
+class ContainerSink {
+ public:
+  // Both must outlive the sink.
+  ContainerSink(ContainerSummary* summary, const MessageCallback* on_message);
+
+  ContainerSummary& summary() { return *summary_; }
+
+  // The index of `topic` in summary().topics, adding it when new (its `messages` is ignored). A
+  // topic latched anywhere is latched.
+  std::size_t AddTopic(const RecordedTopic& topic);
+
+  // Message payloads are zstd frames (rosbag2 message-level compression).
+  void set_zstd_messages(bool zstd) { zstd_messages_ = zstd; }
+
+  // Counts `message` on its topic and hands it to the callback. `message.topic` must come from
+  // AddTopic. The callback may see `message.data` replaced by its decompressed bytes.
+  void Deliver(RecordedMessage& message);
+
+  // True while the callback runs, i.e. when an exception comes from the callback rather than
+  // from the reader: such an exception must pass through unchanged, even with lenient reading.
+  bool in_callback() const { return in_callback_; }
+
+  // Reading ended a file of `file_bytes` bytes `bytes` before its end because of `reason`: the
+  // file ends inside a record (cut off, read up to its last whole record whether lenient or
+  // not), or a record is corrupt (--lenient).
+  enum class TailKind { kCutOff, kCorrupt };
+  void DropTail(std::uint64_t bytes, std::uint64_t file_bytes, const std::string& reason, TailKind kind);
+
+ private:
+  using TopicKey = std::tuple<std::string, std::string, MessageSerialization>;
+
+  ContainerSummary* summary_;
+  const MessageCallback* on_message_;
+  std::map<TopicKey, std::size_t> topic_index_;
+  bool zstd_messages_ = false;
+  bool in_callback_ = false;
+};
+
+}  // namespace slamtune::io

@@ -1,0 +1,189 @@
+#include "slamtune/io/ros/rosbag1_reader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "slamtune/common/error.h"
+#include "slamtune/io/testing/recording_bytes.h"
+
+namespace slamtune::io {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+using namespace testing;  // NOLINT: the record builders
+
+// What a reader's error says after the record that is not read.
+const std::string kLenient = " (--lenient reads the recording up to this record)";
+
+constexpr std::uint64_t kFirstChunk = 13 + 4096;  // after the version line and the padded bag header
+
+struct BagRead {
+  ContainerSummary summary;
+  std::vector<Delivered> messages;
+  std::string error;
+};
+
+BagRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
+  BagRead read;
+  try {
+    read.summary = ReadRosbag1Bytes(bytes, "b.bag", options, Collect(&read.messages));
+  } catch (const InputError& e) {
+    read.error = e.what();
+  }
+  return read;
+}
+
+std::string Byte(std::uint64_t offset) { return "byte " + std::to_string(offset); }
+
+// The offset of SmallRos1Bag's second chunk.
+std::uint64_t SecondChunk(std::string_view compression) {
+  const Bytes chunk1 = Ros1Chunk(Concat({Ros1Connection(0, "/scan", "sensor_msgs/LaserScan"),
+                                         Ros1Connection(1, "/tf_static", "tf2_msgs/TFMessage", true),
+                                         Ros1MessageData(0, 1, 500000000, "scan-1"), Ros1MessageData(1, 2, 0, "tf-1")}),
+                                 compression);
+  return kFirstChunk + chunk1.size() + Ros1IndexData(0).size() + Ros1IndexData(1).size();
+}
+
+Bytes Opening() { return Concat({Ros1Magic(), Ros1BagHeader(0, 0, 0)}); }
+
+TEST(Rosbag1ReaderTest, ReadsChunksOfEachCompressionAndIgnoresTheIndexsRepeatedConnections) {
+  for (const std::string compression : {"none", "bz2", "lz4"}) {
+    SCOPED_TRACE(compression);
+    const BagRead read = Read(SmallRos1Bag(compression));
+    ASSERT_EQ(read.error, "");
+    const std::uint64_t second = SecondChunk(compression);
+    ASSERT_EQ(read.messages.size(), 3u);
+    EXPECT_EQ(read.messages[0].data, "scan-1");
+    EXPECT_EQ(read.messages[0].log_time_ns, 1'500'000'000);
+    EXPECT_EQ(read.messages[0].location, Byte(kFirstChunk));
+    EXPECT_EQ(read.messages[1].topic, "/tf_static");
+    EXPECT_EQ(read.messages[1].log_time_ns, 2'000'000'000);
+    EXPECT_EQ(read.messages[2].data, "scan-2");
+    EXPECT_EQ(read.messages[2].location, Byte(second));
+    EXPECT_EQ(read.messages[2].file, "b.bag");
+    const ContainerSummary& s = read.summary;
+    ASSERT_EQ(s.topics.size(), 2u);
+    EXPECT_EQ(s.topics[0].name, "/scan");
+    EXPECT_EQ(s.topics[0].type, "sensor_msgs/LaserScan");
+    EXPECT_EQ(s.topics[0].serialization, MessageSerialization::kRos1);
+    EXPECT_FALSE(s.topics[0].latched);
+    EXPECT_EQ(s.topics[0].messages, 2u);
+    EXPECT_TRUE(s.topics[1].latched);
+    EXPECT_EQ(s.chunks, 2u);
+    EXPECT_EQ(s.chunk_compression.at(compression), 2u);
+    EXPECT_EQ(s.skipped_records, 5u);  // 3 index data, 2 chunk info
+    EXPECT_EQ(s.unknown_records, 0u);
+    EXPECT_TRUE(s.complete);
+    EXPECT_THAT(s.ending, StartsWith("index"));
+    EXPECT_EQ(s.profile, "ros1");
+  }
+}
+
+TEST(Rosbag1ReaderTest, AnUnindexedBagOrOneCutBeforeItsIndexReadsAsIncomplete) {
+  const BagRead unindexed = Read(SmallRos1Bag("lz4", /*indexed=*/false));
+  ASSERT_EQ(unindexed.error, "");
+  EXPECT_EQ(unindexed.messages.size(), 3u);
+  EXPECT_FALSE(unindexed.summary.complete);
+  EXPECT_EQ(unindexed.summary.ending,
+            "no index (the bag header's index_pos is 0): the file ends after a complete "
+            "record (recording cut off?)");
+  const Bytes indexed = SmallRos1Bag("none");
+  const std::size_t index_size = Ros1Connection(0, "/scan", "sensor_msgs/LaserScan").size() +
+                                 Ros1Connection(1, "/tf_static", "tf2_msgs/TFMessage", true).size() +
+                                 2 * Ros1ChunkInfo(0).size();
+  const Bytes cut(indexed.begin(), indexed.end() - static_cast<std::ptrdiff_t>(index_size));
+  const BagRead before_index = Read(cut);
+  ASSERT_EQ(before_index.error, "");
+  EXPECT_FALSE(before_index.summary.complete);
+  EXPECT_EQ(before_index.summary.ending, "no index at index_pos " + std::to_string(cut.size()) +
+                                             ": the file ends after a complete record (recording cut off?)");
+}
+
+// A bag that ends inside a record (a power loss while recording) reads up to its last whole
+// record, lenient or not, and says how many bytes were not read.
+TEST(Rosbag1ReaderTest, ABagCutInsideAChunkReadsUpToItsLastWholeRecord) {
+  const Bytes full = SmallRos1Bag("bz2", /*indexed=*/false);
+  const std::uint64_t second = SecondChunk("bz2");
+  for (const std::uint64_t kept : {2, 60}) {  // inside the header length, inside the data
+    const Bytes cut(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(second + kept));
+    for (const bool lenient : {false, true}) {
+      const BagRead read = Read(cut, {.lenient = lenient});
+      ASSERT_EQ(read.error, "");
+      EXPECT_EQ(read.messages.size(), 2u);
+      EXPECT_EQ(read.summary.dropped_tail_bytes, kept);
+      EXPECT_FALSE(read.summary.complete);
+      EXPECT_THAT(read.summary.ending, StartsWith("cut off inside a record: read up to its last whole record"));
+    }
+  }
+}
+
+TEST(Rosbag1ReaderTest, AMessageOnAnUndeclaredConnectionIsAnErrorInsideItsChunk) {
+  const Bytes records = Concat({Ros1Connection(0, "/scan", "sensor_msgs/LaserScan"), Ros1MessageData(7, 1, 0, "x")});
+  const BagRead read = Read(Concat({Opening(), Ros1Chunk(records, "lz4")}));
+  EXPECT_EQ(read.error, "b.bag: " + Byte(kFirstChunk) + " (chunk), uncompressed " +
+                            Byte(Ros1Connection(0, "/scan", "sensor_msgs/LaserScan").size()) +
+                            " (message data record): message on connection 7, which was never declared" + kLenient);
+}
+
+TEST(Rosbag1ReaderTest, UnknownOrCorruptChunkCompressionIsAnErrorAtTheChunk) {
+  const Bytes records = Ros1Connection(0, "/scan", "sensor_msgs/LaserScan");
+  EXPECT_EQ(Read(Concat({Opening(), Ros1Chunk(records, "brotli")})).error,
+            "b.bag: " + Byte(kFirstChunk) + " (chunk record): unknown compression \"brotli\"" + kLenient);
+  const Bytes fake_bz2 = Ros1Record(
+      {{"op", {0x05}}, {"compression", ToBytes("bz2")}, {"size", ByteWriter().U32(10).Take()}}, ToBytes("not bz2"));
+  EXPECT_EQ(Read(Concat({Opening(), fake_bz2})).error,
+            "b.bag: " + Byte(kFirstChunk) + " (chunk record): bz2: BZ_DATA_ERROR_MAGIC (not bzip2 data)" + kLenient);
+}
+
+TEST(Rosbag1ReaderTest, TopLevelMessagesUnknownOpsAndMalformedHeaders) {
+  const Bytes good = Concat({Opening(), Ros1Connection(3, "/odom", "nav_msgs/Odometry"),
+                             Ros1MessageData(3, 10, 5, "odom"), Ros1Record({{"op", {0x09}}}, {})});
+  const BagRead read = Read(good);
+  ASSERT_EQ(read.error, "");
+  ASSERT_EQ(read.messages.size(), 1u);
+  EXPECT_EQ(read.messages[0].log_time_ns, 10'000'000'005);
+  EXPECT_EQ(read.messages[0].location, Byte(kFirstChunk + Ros1Connection(3, "/odom", "nav_msgs/Odometry").size()));
+  EXPECT_EQ(read.summary.unknown_records, 1u);
+  EXPECT_EQ(read.summary.chunks, 0u);
+
+  EXPECT_EQ(Read(Concat({Opening(), Ros1Record({{"op", {0x07}}, {"topic", ToBytes("/a")}}, {})})).error,
+            "b.bag: " + Byte(kFirstChunk) + " (connection record): no field conn" + kLenient);
+  EXPECT_EQ(Read(Concat({Opening(), Ros1Record({{"op", {0x02}}, {"conn", {1, 0}}}, {})})).error,
+            "b.bag: " + Byte(kFirstChunk) + " (message data record): field conn has 2 bytes, expected 4" + kLenient);
+  EXPECT_EQ(Read(Concat({Ros1Magic(), Ros1Connection(0, "/a", "T")})).error,
+            "b.bag: byte 13 (connection record): the first record is not the bag header");
+  EXPECT_EQ(Read(ToBytes("#ROSBAG V1.2\n")).error,
+            "b.bag: byte 0 (version line): not a ROS 1 bag v2.0 (no #ROSBAG V2.0 line)");
+}
+
+TEST(Rosbag1ReaderTest, ReadsAFileByPath) {
+  const std::string path = FreshTempDir("rosbag1_file") + "/noetic.bag";
+  WriteFile(path, SmallRos1Bag("lz4"));
+  std::vector<Delivered> messages;
+  const ContainerSummary summary = ReadRosbag1(path, {}, Collect(&messages));
+  EXPECT_THAT(summary.files, ElementsAre(path));
+  EXPECT_EQ(summary.format, ContainerFormat::kRosbag1);
+  ASSERT_EQ(messages.size(), 3u);
+  EXPECT_EQ(messages[0].file, path);
+}
+
+TEST(Rosbag1ReaderTest, EveryTruncationAndRandomCorruptionSucceedsOrThrowsInputError) {
+  for (const std::string compression : {"none", "bz2", "lz4"}) {
+    for (const bool lenient : {false, true}) {
+      SCOPED_TRACE(compression + (lenient ? " lenient" : " strict"));
+      const FuzzOutcome outcome = FuzzReader(SmallRos1Bag(compression), 400, [&](const Bytes& bytes) {
+        ReadRosbag1Bytes(bytes, "fuzz.bag", {.lenient = lenient}, [](const RecordedTopic&, const RecordedMessage&) {});
+      });
+      EXPECT_THAT(outcome.other_failures, ::testing::IsEmpty());
+      EXPECT_GT(outcome.succeeded, 0u);
+      if (!lenient) {
+        EXPECT_GT(outcome.input_errors, 0u);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace slamtune::io
