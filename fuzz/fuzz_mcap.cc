@@ -1,12 +1,13 @@
 // MCAP files (io/ros/mcap_reader.h), in memory, with the messages decoded.
-#include <span>
+#include <vector>
 
 #include "container_fuzz.h"
+#include "slamtune/io/ros/ros_recording.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::span<const std::uint8_t> bytes(data, size);
   slamtune::fuzz::FuzzContainer([&](const auto& options, const auto& on_message) {
-    slamtune::io::ReadMcapBytes(bytes, "fuzz.mcap", options, on_message);
+    slamtune::io::ReadContainerBytes(slamtune::io::ContainerFormat::kMcap, std::vector<std::uint8_t>(data, data + size),
+                                     "fuzz.mcap", options, on_message);
   });
   return 0;
 }

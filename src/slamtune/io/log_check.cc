@@ -12,9 +12,9 @@
 #include "slamtune/io/beam_geometry.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
-#include "slamtune/io/ros/recording_container.h"
 #include "slamtune/io/ros/recording_contents.h"
 #include "slamtune/io/ros/recording_log.h"
+#include "slamtune/io/ros/ros_recording.h"
 
 namespace slamtune::io {
 namespace {

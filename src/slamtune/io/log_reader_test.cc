@@ -11,7 +11,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/log_summary.h"
-#include "slamtune/io/ros/recording_container.h"
+#include "slamtune/io/ros/ros_recording.h"
 
 namespace slamtune::io {
 namespace {

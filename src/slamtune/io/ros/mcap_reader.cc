@@ -10,7 +10,6 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/byte_cursor.h"
-#include "slamtune/io/mapped_file.h"
 #include "slamtune/io/ros/decompression.h"
 #include "slamtune/io/ros/mcap_records.h"
 
@@ -288,21 +287,6 @@ bool HasMcapMagic(std::span<const std::uint8_t> bytes) {
 void ReadMcapInto(std::span<const std::uint8_t> bytes, const std::string& name, const ContainerReadOptions& options,
                   ContainerSink* sink) {
   McapReader(bytes, name, options, sink).Read();
-}
-
-ContainerSummary ReadMcapBytes(std::span<const std::uint8_t> bytes, const std::string& name,
-                               const ContainerReadOptions& options, const MessageCallback& on_message) {
-  ContainerSummary summary;
-  summary.format = ContainerFormat::kMcap;
-  ContainerSink sink(&summary, &on_message);
-  ReadMcapInto(bytes, name, options, &sink);
-  return summary;
-}
-
-ContainerSummary ReadMcap(const std::string& path, const ContainerReadOptions& options,
-                          const MessageCallback& on_message) {
-  const MappedFile file(path);
-  return ReadMcapBytes(file.bytes(), path, options, on_message);
 }
 
 }  // namespace slamtune::io

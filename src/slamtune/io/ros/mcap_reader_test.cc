@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/ros/ros_recording.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
@@ -31,7 +32,7 @@ struct McapRead {
 McapRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
   McapRead read;
   try {
-    read.summary = ReadMcapBytes(bytes, "m.mcap", options, Collect(&read.messages));
+    read.summary = ReadContainerBytes(ContainerFormat::kMcap, bytes, "m.mcap", options, Collect(&read.messages));
   } catch (const InputError& e) {
     read.error = e.what();
   }
@@ -229,13 +230,13 @@ TEST(McapReaderTest, ChannelsOfOneTopicMergeAndOtherEncodingsAreMarkedInTheType)
 TEST(McapReaderTest, CallbackExceptionsPassThroughUnchangedEvenWhenLenient) {
   const MessageCallback stop = [](const RecordedTopic&, const RecordedMessage&) { throw InputError("stop here"); };
   try {
-    ReadMcapBytes(SmallMcap("zstd"), "m.mcap", {.lenient = true}, stop);
+    ReadContainerBytes(ContainerFormat::kMcap, SmallMcap("zstd"), "m.mcap", {.lenient = true}, stop);
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "stop here");
   }
   const MessageCallback other = [](const RecordedTopic&, const RecordedMessage&) { throw std::out_of_range("x"); };
-  EXPECT_THROW(ReadMcapBytes(SmallMcap(""), "m.mcap", {}, other), std::out_of_range);
+  EXPECT_THROW(ReadContainerBytes(ContainerFormat::kMcap, SmallMcap(""), "m.mcap", {}, other), std::out_of_range);
 }
 
 TEST(McapReaderTest, NotMcapAndAHeaderThatIsNotFirstAreErrors) {
@@ -252,12 +253,12 @@ TEST(McapReaderTest, ReadsAFileByPathAndNamesAMissingOne) {
   const std::string path = FreshTempDir("mcap_file") + "/drive.mcap";
   WriteFile(path, SmallMcap("lz4"));
   std::vector<Delivered> messages;
-  const ContainerSummary summary = ReadMcap(path, {}, Collect(&messages));
+  const ContainerSummary summary = ReadContainerFile(ContainerFormat::kMcap, path, {}, Collect(&messages));
   EXPECT_THAT(summary.files, ElementsAre(path));
   ASSERT_EQ(messages.size(), 4u);
   EXPECT_EQ(messages[3].file, path);
   try {
-    ReadMcap(path + ".missing", {}, Collect(&messages));
+    ReadContainerFile(ContainerFormat::kMcap, path + ".missing", {}, Collect(&messages));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), path + ".missing: cannot open (No such file or directory)");
@@ -269,7 +270,8 @@ TEST(McapReaderTest, EveryTruncationAndRandomCorruptionSucceedsOrThrowsInputErro
     for (const bool lenient : {false, true}) {
       SCOPED_TRACE(compression + (lenient ? " lenient" : " strict"));
       const FuzzOutcome outcome = FuzzReader(SmallMcap(compression), 400, [&](const Bytes& bytes) {
-        ReadMcapBytes(bytes, "fuzz.mcap", {.lenient = lenient}, [](const RecordedTopic&, const RecordedMessage&) {});
+        ReadContainerBytes(ContainerFormat::kMcap, bytes, "fuzz.mcap", {.lenient = lenient},
+                           [](const RecordedTopic&, const RecordedMessage&) {});
       });
       EXPECT_THAT(outcome.other_failures, ::testing::IsEmpty());
       EXPECT_GT(outcome.succeeded, 0u);

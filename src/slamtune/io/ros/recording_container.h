@@ -13,7 +13,9 @@
 // metadata.yaml's compression_mode / compression_format say).
 //
 // Messages are handed to a callback one at a time in file order (rosbag2 SQLite3: ORDER BY
-// timestamp, id), so a recording of any size is read in one pass without holding it whole.
+// timestamp, id), so a recording of any size is read in one pass without holding it whole. The
+// readers are reached through ros_recording.h: ReadRosRecording judges the format by content,
+// ReadContainerFile and ReadContainerBytes are told it.
 //
 // Errors: malformed data (bad CRC, unknown compression, a message on an undeclared channel /
 // connection, a Channel whose schema is missing, an unreadable or corrupt database) throw
@@ -39,9 +41,8 @@
 
 namespace slamtune::io {
 
+// Named by ContainerFormatName (ros_recording.h).
 enum class ContainerFormat { kMcap, kRosbag2Sqlite, kRosbag1 };
-// "MCAP", "rosbag2 SQLite3", "ROS 1 bag v2.0".
-const char* ContainerFormatName(ContainerFormat format);
 
 // How message payloads are serialized: ROS 2 CDR (XCDR1, with its 4-byte encapsulation
 // header) or ROS 1 serialization.
@@ -102,35 +103,5 @@ struct ContainerReadOptions {
 };
 
 using MessageCallback = std::function<void(const RecordedTopic& topic, const RecordedMessage& message)>;
-
-// Each reads the whole file (or bag folder) and calls `on_message` for every message in file
-// order. They throw InputError as described above; an exception thrown by the callback passes
-// through unchanged.
-ContainerSummary ReadMcap(const std::string& path, const ContainerReadOptions& options,
-                          const MessageCallback& on_message);
-ContainerSummary ReadRosbag2Sqlite(const std::string& path, const ContainerReadOptions& options,
-                                   const MessageCallback& on_message);
-ContainerSummary ReadRosbag1(const std::string& path, const ContainerReadOptions& options,
-                             const MessageCallback& on_message);
-// The same on bytes in memory; `name` stands for the file in messages.
-ContainerSummary ReadMcapBytes(std::span<const std::uint8_t> bytes, const std::string& name,
-                               const ContainerReadOptions& options, const MessageCallback& on_message);
-ContainerSummary ReadRosbag1Bytes(std::span<const std::uint8_t> bytes, const std::string& name,
-                                  const ContainerReadOptions& options, const MessageCallback& on_message);
-
-// What a path holds, judged by content (magic bytes), never by its name: a folder with
-// metadata.yaml is a rosbag2 bag folder; a file starting with "\x89MCAP0\r\n" is MCAP, with
-// "SQLite format 3\0" rosbag2 SQLite3, with "#ROSBAG V2.0\n" a ROS 1 bag, with a zstd frame
-// magic a file-compressed rosbag2 split (its inner format judged after decompression);
-// anything else is a CARMEN log (text or gzip).
-enum class RecordingKind { kCarmenLog, kMcap, kRosbag2Sqlite, kRosbag1, kRosbag2Folder, kZstdFile };
-const char* RecordingKindName(RecordingKind kind);
-// Throws InputError "PATH: cannot open (reason)" for a missing or unreadable path.
-RecordingKind DetectRecordingKind(const std::string& path);
-
-// Any ROS recording (kind other than kCarmenLog): a single file of any of the three formats
-// (zstd-compressed or not), or a rosbag2 bag folder. InputError for a CARMEN log path.
-ContainerSummary ReadRosRecording(const std::string& path, const ContainerReadOptions& options,
-                                  const MessageCallback& on_message);
 
 }  // namespace slamtune::io

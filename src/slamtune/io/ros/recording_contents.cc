@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/ros/ros_recording.h"
 
 namespace slamtune::io {
 namespace {

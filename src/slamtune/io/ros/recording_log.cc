@@ -9,6 +9,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/beam_geometry.h"
+#include "slamtune/io/ros/ros_recording.h"
 
 namespace slamtune::io {
 namespace {

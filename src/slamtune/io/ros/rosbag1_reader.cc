@@ -8,7 +8,6 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/byte_cursor.h"
-#include "slamtune/io/mapped_file.h"
 #include "slamtune/io/ros/decompression.h"
 #include "slamtune/io/ros/rosbag1_records.h"
 
@@ -179,21 +178,6 @@ bool HasRosbag1Magic(std::span<const std::uint8_t> bytes) {
 void ReadRosbag1Into(std::span<const std::uint8_t> bytes, const std::string& name, const ContainerReadOptions& options,
                      ContainerSink* sink) {
   Rosbag1Reader(bytes, name, options, sink).Read();
-}
-
-ContainerSummary ReadRosbag1Bytes(std::span<const std::uint8_t> bytes, const std::string& name,
-                                  const ContainerReadOptions& options, const MessageCallback& on_message) {
-  ContainerSummary summary;
-  summary.format = ContainerFormat::kRosbag1;
-  ContainerSink sink(&summary, &on_message);
-  ReadRosbag1Into(bytes, name, options, &sink);
-  return summary;
-}
-
-ContainerSummary ReadRosbag1(const std::string& path, const ContainerReadOptions& options,
-                             const MessageCallback& on_message) {
-  const MappedFile file(path);
-  return ReadRosbag1Bytes(file.bytes(), path, options, on_message);
 }
 
 }  // namespace slamtune::io

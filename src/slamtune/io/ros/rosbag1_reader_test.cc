@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/ros/ros_recording.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
@@ -28,7 +29,7 @@ struct BagRead {
 BagRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
   BagRead read;
   try {
-    read.summary = ReadRosbag1Bytes(bytes, "b.bag", options, Collect(&read.messages));
+    read.summary = ReadContainerBytes(ContainerFormat::kRosbag1, bytes, "b.bag", options, Collect(&read.messages));
   } catch (const InputError& e) {
     read.error = e.what();
   }
@@ -162,7 +163,7 @@ TEST(Rosbag1ReaderTest, ReadsAFileByPath) {
   const std::string path = FreshTempDir("rosbag1_file") + "/noetic.bag";
   WriteFile(path, SmallRos1Bag("lz4"));
   std::vector<Delivered> messages;
-  const ContainerSummary summary = ReadRosbag1(path, {}, Collect(&messages));
+  const ContainerSummary summary = ReadContainerFile(ContainerFormat::kRosbag1, path, {}, Collect(&messages));
   EXPECT_THAT(summary.files, ElementsAre(path));
   EXPECT_EQ(summary.format, ContainerFormat::kRosbag1);
   ASSERT_EQ(messages.size(), 3u);
@@ -174,7 +175,8 @@ TEST(Rosbag1ReaderTest, EveryTruncationAndRandomCorruptionSucceedsOrThrowsInputE
     for (const bool lenient : {false, true}) {
       SCOPED_TRACE(compression + (lenient ? " lenient" : " strict"));
       const FuzzOutcome outcome = FuzzReader(SmallRos1Bag(compression), 400, [&](const Bytes& bytes) {
-        ReadRosbag1Bytes(bytes, "fuzz.bag", {.lenient = lenient}, [](const RecordedTopic&, const RecordedMessage&) {});
+        ReadContainerBytes(ContainerFormat::kRosbag1, bytes, "fuzz.bag", {.lenient = lenient},
+                           [](const RecordedTopic&, const RecordedMessage&) {});
       });
       EXPECT_THAT(outcome.other_failures, ::testing::IsEmpty());
       EXPECT_GT(outcome.succeeded, 0u);

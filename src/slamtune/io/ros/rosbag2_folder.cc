@@ -10,8 +10,6 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/text_file.h"
 #include "slamtune/io/mapped_file.h"
-#include "slamtune/io/ros/container_sink.h"
-#include "slamtune/io/ros/ros_recording.h"
 
 namespace slamtune::io {
 namespace {
@@ -79,16 +77,8 @@ Rosbag2Metadata ReadRosbag2Metadata(const std::string& folder) {
   }
 }
 
-ContainerSummary ReadRosbag2Folder(const std::string& folder, const ContainerReadOptions& options,
-                                   const MessageCallback& on_message) {
-  const Rosbag2Metadata metadata = ReadRosbag2Metadata(folder);
-  ContainerSummary summary;
-  ContainerSink sink(&summary, &on_message);
-  if (metadata.compression_mode == "message") {
-    sink.set_zstd_messages(true);
-    summary.message_compression = "zstd";
-  }
-  // Every split found before any is read; one file listed twice (by the same or another name)
+std::vector<std::string> Rosbag2SplitFiles(const std::string& folder, const Rosbag2Metadata& metadata) {
+  // Every split is found before any is read: one file listed twice (by the same or another name)
   // would deliver each of its messages twice.
   std::vector<std::string> paths;
   for (std::size_t k = 0; k < metadata.relative_file_paths.size(); ++k) {
@@ -110,16 +100,7 @@ ContainerSummary ReadRosbag2Folder(const std::string& folder, const ContainerRea
     }
     paths.push_back(path);
   }
-  std::string incomplete;  // endings of the splits that did not end complete
-  for (const std::string& path : paths) {
-    const bool complete_before = summary.complete;
-    summary.complete = true;
-    ReadRecordingFileInto(path, options, &sink);
-    if (!summary.complete) incomplete += (incomplete.empty() ? "" : "; ") + path + ": " + summary.ending;
-    summary.complete = summary.complete && complete_before;
-  }
-  if (!incomplete.empty()) summary.ending = incomplete;
-  return summary;
+  return paths;
 }
 
 }  // namespace slamtune::io

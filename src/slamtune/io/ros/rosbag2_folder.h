@@ -3,7 +3,8 @@
 // their storage (storage_identifier: sqlite3 or mcap) and compression (compression_mode
 // file / message, compression_format zstd), and the split files themselves.
 //
-// The splits are read one after the other into one ContainerSummary: topics with the same name
+// What the folder lists is read here; the splits themselves are read by ReadRosRecording
+// (ros_recording.h), one after the other into one ContainerSummary: topics with the same name
 // and type are one topic whichever split they come from. Each split's format is judged by its
 // content (a file-compressed split, `*.db3.zstd` / `*.mcap.zstd`, is decompressed into memory
 // first); with compression_mode message every payload is a zstd frame, decompressed before the
@@ -14,8 +15,6 @@
 
 #include <string>
 #include <vector>
-
-#include "slamtune/io/ros/recording_container.h"
 
 namespace slamtune::io {
 
@@ -34,8 +33,10 @@ struct Rosbag2Metadata {
 // or names a compression other than zstd.
 Rosbag2Metadata ReadRosbag2Metadata(const std::string& folder);
 
-// Reads every split of the bag folder `folder` in order (see above).
-ContainerSummary ReadRosbag2Folder(const std::string& folder, const ContainerReadOptions& options,
-                                   const MessageCallback& on_message);
+// The paths of the split files `metadata` lists for the bag folder `folder`, in order, each found
+// as described above. InputError "FOLDER/SPLIT: missing: ..." for a split found nowhere, and
+// "FOLDER/metadata.yaml: relative_file_paths lists PATH twice ..." for one file listed twice (it
+// would give every message twice).
+std::vector<std::string> Rosbag2SplitFiles(const std::string& folder, const Rosbag2Metadata& metadata);
 
 }  // namespace slamtune::io

@@ -282,22 +282,4 @@ void ReadRosbag2SqliteBytesInto(std::vector<std::uint8_t> bytes, const std::stri
   ReadDatabase(raw, name, options, sink);
 }
 
-ContainerSummary ReadRosbag2SqliteBytes(std::vector<std::uint8_t> bytes, const std::string& name,
-                                        const ContainerReadOptions& options, const MessageCallback& on_message) {
-  ContainerSummary summary;
-  summary.format = ContainerFormat::kRosbag2Sqlite;
-  ContainerSink sink(&summary, &on_message);
-  ReadRosbag2SqliteBytesInto(std::move(bytes), name, options, &sink);
-  return summary;
-}
-
-ContainerSummary ReadRosbag2Sqlite(const std::string& path, const ContainerReadOptions& options,
-                                   const MessageCallback& on_message) {
-  ContainerSummary summary;
-  summary.format = ContainerFormat::kRosbag2Sqlite;
-  ContainerSink sink(&summary, &on_message);
-  ReadRosbag2SqliteInto(path, options, &sink);
-  return summary;
-}
-
 }  // namespace slamtune::io

@@ -35,8 +35,4 @@ void ReadRosbag2SqliteInto(const std::string& path, const ContainerReadOptions& 
 void ReadRosbag2SqliteBytesInto(std::vector<std::uint8_t> bytes, const std::string& name,
                                 const ContainerReadOptions& options, ContainerSink* sink);
 
-// As ReadRosbag2Sqlite (recording_container.h), on a database image in memory.
-ContainerSummary ReadRosbag2SqliteBytes(std::vector<std::uint8_t> bytes, const std::string& name,
-                                        const ContainerReadOptions& options, const MessageCallback& on_message);
-
 }  // namespace slamtune::io

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/ros/ros_recording.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
@@ -25,7 +26,7 @@ struct DbRead {
 DbRead Read(const std::string& path, ContainerReadOptions options = {}) {
   DbRead read;
   try {
-    read.summary = ReadRosbag2Sqlite(path, options, Collect(&read.messages));
+    read.summary = ReadContainerFile(ContainerFormat::kRosbag2Sqlite, path, options, Collect(&read.messages));
   } catch (const InputError& e) {
     read.error = e.what();
   }
@@ -184,7 +185,8 @@ TEST(Rosbag2SqliteReaderTest, ReadsADatabaseImageInMemory) {
   const std::string path = FreshTempDir("db3_memory") + "/bag.db3";
   WriteJazzyDb3(path);
   std::vector<Delivered> messages;
-  const ContainerSummary summary = ReadRosbag2SqliteBytes(ReadFile(path), "image.db3", {}, Collect(&messages));
+  const ContainerSummary summary =
+      ReadContainerBytes(ContainerFormat::kRosbag2Sqlite, ReadFile(path), "image.db3", {}, Collect(&messages));
   ASSERT_EQ(messages.size(), 4u);
   EXPECT_EQ(messages[0].file, "image.db3");
   EXPECT_EQ(summary.ros_distro, "jazzy");
@@ -198,8 +200,8 @@ TEST(Rosbag2SqliteReaderTest, EveryTruncationAndRandomCorruptionSucceedsOrThrows
   for (const bool lenient : {false, true}) {
     SCOPED_TRACE(lenient ? "lenient" : "strict");
     const FuzzOutcome outcome = FuzzReader(image, 400, [&](const Bytes& bytes) {
-      ReadRosbag2SqliteBytes(bytes, "fuzz.db3", {.lenient = lenient},
-                             [](const RecordedTopic&, const RecordedMessage&) {});
+      ReadContainerBytes(ContainerFormat::kRosbag2Sqlite, bytes, "fuzz.db3", {.lenient = lenient},
+                         [](const RecordedTopic&, const RecordedMessage&) {});
     });
     EXPECT_THAT(outcome.other_failures, ::testing::IsEmpty());
     EXPECT_GT(outcome.succeeded, 0u);
