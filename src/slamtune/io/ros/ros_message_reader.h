@@ -31,9 +31,15 @@
 #include <vector>
 
 #include "slamtune/io/ros/recording_container.h"
-#include "slamtune/io/ros/ros_messages.h"
 
 namespace slamtune::io {
+
+// std_msgs/Header, as RosMessageReader::ReadHeader reads it.
+struct RosHeader {
+  std::uint32_t seq = 0;      // ROS 1 only (0 for CDR)
+  std::int64_t stamp_ns = 0;  // sec * 1e9 + nanosec, exact (int64 end to end)
+  std::string frame_id;
+};
 
 enum class RosWireFormat { kCdrLittleEndian, kCdrBigEndian, kRos1 };
 // "CDR little-endian", "CDR big-endian", "ROS 1".

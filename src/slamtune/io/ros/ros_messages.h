@@ -34,15 +34,11 @@
 #include <vector>
 
 #include "slamtune/io/ros/recording_container.h"
+#include "slamtune/io/ros/ros_message_reader.h"
 
 namespace slamtune::io {
 
-struct RosHeader {
-  std::uint32_t seq = 0;      // ROS 1 only (0 for CDR)
-  std::int64_t stamp_ns = 0;  // sec * 1e9 + nanosec, exact (int64 end to end)
-  std::string frame_id;
-};
-
+// Each message's std_msgs/Header is a RosHeader (ros_message_reader.h, whose reader reads it).
 struct LaserScanMessage {
   RosHeader header;
   float angle_min = 0, angle_max = 0, angle_increment = 0;  // rad
