@@ -302,17 +302,6 @@ LaserLog Read(LineReader& reader, const LogReadOptions& options) {
 
 }  // namespace
 
-void FlaserBeamGeometry(std::size_t num_readings, double* angle_min, double* angle_increment) {
-  *angle_min = -kPi / 2.0;
-  if (num_readings <= 1) {
-    *angle_increment = 0.0;
-  } else if (num_readings % 2 == 0) {
-    *angle_increment = kPi / static_cast<double>(num_readings);
-  } else {
-    *angle_increment = kPi / static_cast<double>(num_readings - 1);
-  }
-}
-
 LaserLog ReadCarmenLog(const std::string& path, const LogReadOptions& options) {
   options.Validate();
   LineReader reader(path);

@@ -75,7 +75,4 @@ LaserLog ReadCarmenLog(const std::string& path, const LogReadOptions& options = 
 // LaserLog::path.
 LaserLog ReadCarmenLog(std::istream& in, const std::string& name, const LogReadOptions& options = {});
 
-// The FLASER beam geometry rule above: first beam angle and increment (rad) for n readings.
-void FlaserBeamGeometry(std::size_t num_readings, double* angle_min, double* angle_increment);
-
 }  // namespace slamtune::io

@@ -12,6 +12,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
+#include "slamtune/io/carmen_records.h"
 
 namespace slamtune::io {
 namespace {

@@ -7,7 +7,6 @@
 
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/carmen_reader.h"
 #include "slamtune/io/line_reader.h"
 
 namespace slamtune::io::carmen {
@@ -225,3 +224,18 @@ std::pair<std::string, std::string> ParseParam(const Fields& f) {
 }
 
 }  // namespace slamtune::io::carmen
+
+namespace slamtune::io {
+
+void FlaserBeamGeometry(std::size_t num_readings, double* angle_min, double* angle_increment) {
+  *angle_min = -kPi / 2.0;
+  if (num_readings <= 1) {
+    *angle_increment = 0.0;
+  } else if (num_readings % 2 == 0) {
+    *angle_increment = kPi / static_cast<double>(num_readings);
+  } else {
+    *angle_increment = kPi / static_cast<double>(num_readings - 1);
+  }
+}
+
+}  // namespace slamtune::io

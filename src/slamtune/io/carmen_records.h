@@ -1,10 +1,13 @@
 // Parsers of single CARMEN records (one line split into fields, field 0 = record name), used
-// by carmen_reader.cc. Layouts and conventions are documented in carmen_reader.h.
+// by carmen_reader.cc, and the FLASER beam geometry rule, which writers of FLASER records
+// (carmen_writer.h, the simulator) follow too. Layouts and conventions are documented in
+// carmen_reader.h.
 //
 // A malformed record throws CarmenRecordError with a message naming the record and the problem
 // (no file or line: the reader adds "FILE:LINE: " and decides whether to skip it).
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -41,3 +44,11 @@ OdomRecord ParseOdom(const Fields& f);
 std::pair<std::string, std::string> ParseParam(const Fields& f);
 
 }  // namespace slamtune::io::carmen
+
+namespace slamtune::io {
+
+// The FLASER beam geometry rule (carmen_reader.h): first beam angle and increment (rad) for n
+// readings.
+void FlaserBeamGeometry(std::size_t num_readings, double* angle_min, double* angle_increment);
+
+}  // namespace slamtune::io

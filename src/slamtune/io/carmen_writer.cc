@@ -10,7 +10,7 @@
 
 #include "slamtune/common/atomic_file.h"
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen_records.h"
 
 namespace slamtune::io {
 namespace {

@@ -10,6 +10,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen_records.h"
 
 namespace slamtune::io {
 namespace {
