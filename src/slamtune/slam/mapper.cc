@@ -7,6 +7,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/slam/backend/make_solver.h"
 #include "slamtune/slam/loop_closure.h"
 #include "slamtune/slam/near_chains.h"
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "slamtune/common/error.h"
+#include "slamtune/slam/backend/make_solver.h"
 #include "slamtune/slam/backend/spa_solver.h"
 #include "slamtune/slam/testing/ring_graph.h"
 

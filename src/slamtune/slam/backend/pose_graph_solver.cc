@@ -3,8 +3,6 @@
 #include <cmath>
 
 #include "slamtune/common/error.h"
-#include "slamtune/slam/backend/ceres_solver.h"
-#include "slamtune/slam/backend/spa_solver.h"
 #include "slamtune/slam/backend/spa_system.h"
 
 namespace slamtune::slam {
@@ -77,13 +75,6 @@ const char* NameOf(CeresDoglegType type) {
   }
   SLAMTUNE_CHECK(false);
   return "";
-}
-
-std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, const CeresChoices& ceres) {
-  if (kind == SolverKind::kSpa) return std::make_shared<const SpaSolver>();
-  CeresOptions options;
-  options.choices = ceres;
-  return std::make_shared<const CeresSolver>(options);
 }
 
 }  // namespace slamtune::slam

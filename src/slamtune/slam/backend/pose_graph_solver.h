@@ -2,12 +2,12 @@
 // first node fixed, minimising sum over edges of e^T Lambda e with the SPA residual of §7.2.
 //
 // Two implementations reproduce the two ROS packages: SpaSolver (slam_karto's
-// SysSPA2d::doSPA(40), §7.3) and CeresSolver (slam_toolbox's default plugin, §7.4). Solvers
-// hold only options, so one instance can be shared by copies of the engine state.
+// SysSPA2d::doSPA(40), §7.3) and CeresSolver (slam_toolbox's default plugin, §7.4); MakeSolver
+// (make_solver.h) picks one. Solvers hold only options, so one instance can be shared by copies
+// of the engine state.
 #pragma once
 
 #include <Eigen/Core>
-#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -90,8 +90,5 @@ struct CeresChoices {
 
   friend bool operator==(const CeresChoices&, const CeresChoices&) = default;
 };
-
-// The back-end of `kind`; `ceres` applies to kCeres.
-std::shared_ptr<const PoseGraphSolver> MakeSolver(SolverKind kind, const CeresChoices& ceres = {});
 
 }  // namespace slamtune::slam

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "slamtune/common/testing/same_bits.h"
+#include "slamtune/slam/backend/make_solver.h"
 
 namespace slamtune::slam {
 namespace {
