@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <set>
 #include <thread>
 
 #include "slamtune/common/error.h"
@@ -44,33 +45,32 @@ BatchEvaluatorStats BatchEvaluator::stats() const {
   return stats_;
 }
 
-std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignment>& batch) {
-  std::vector<std::string> keys(batch.size());
-  std::map<std::string, std::size_t> first_of;  // key -> index of its first occurrence
-  std::vector<std::size_t> todo;                // indices to run
-  std::map<std::string, EvaluationRecord> known;
-  {
-    std::lock_guard guard(mutex_);
-    stats_.requested += batch.size();
-  }
+BatchEvaluator::BatchLookup BatchEvaluator::Lookup(const std::vector<Assignment>& batch) {
+  BatchLookup lookup;
+  lookup.keys.resize(batch.size());
+  std::set<std::string> seen;
   for (std::size_t i = 0; i < batch.size(); ++i) {
-    keys[i] = SearchSpace::Key(batch[i]);
-    if (first_of.count(keys[i])) continue;
-    first_of[keys[i]] = i;
+    const std::string& key = lookup.keys[i] = SearchSpace::Key(batch[i]);
+    if (!seen.insert(key).second) continue;
     std::optional<EvaluationRecord> cached;
     {
       std::lock_guard guard(mutex_);
-      auto it = memory_.find(keys[i]);
+      auto it = memory_.find(key);
       if (it != memory_.end()) cached = it->second;
     }
-    if (!cached && store_) cached = store_->Get(keys[i]);
+    if (!cached && store_) cached = store_->Get(key);
     if (cached) {
-      known[keys[i]] = *cached;
+      lookup.known[key] = *cached;
     } else {
-      todo.push_back(i);
+      lookup.todo.push_back(i);
     }
   }
+  return lookup;
+}
 
+std::vector<EvaluationRecord> BatchEvaluator::RunTodo(const std::vector<Assignment>& batch, const BatchLookup& lookup) {
+  const std::vector<std::size_t>& todo = lookup.todo;
+  const std::vector<std::string>& keys = lookup.keys;
   std::vector<EvaluationRecord> fresh(todo.size());
   std::atomic<std::size_t> next{0};
   // Bookkeeping of one finished evaluation, local or remote.
@@ -134,15 +134,24 @@ std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignm
     for (auto& th : pool) th.join();
   }
   idle_slots_->store(0);
-  for (std::size_t t = 0; t < todo.size(); ++t) known[keys[todo[t]]] = fresh[t];
+  return fresh;
+}
 
+std::vector<EvaluationRecord> BatchEvaluator::Evaluate(const std::vector<Assignment>& batch) {
+  {
+    std::lock_guard guard(mutex_);
+    stats_.requested += batch.size();
+  }
+  BatchLookup lookup = Lookup(batch);
+  const std::vector<EvaluationRecord> fresh = RunTodo(batch, lookup);
+  for (std::size_t t = 0; t < lookup.todo.size(); ++t) lookup.known[lookup.keys[lookup.todo[t]]] = fresh[t];
   std::vector<EvaluationRecord> out;
   out.reserve(batch.size());
   {
     std::lock_guard guard(mutex_);
-    stats_.cache_hits += batch.size() - todo.size();
+    stats_.cache_hits += batch.size() - lookup.todo.size();
   }
-  for (std::size_t i = 0; i < batch.size(); ++i) out.push_back(known.at(keys[i]));
+  for (std::size_t i = 0; i < batch.size(); ++i) out.push_back(lookup.known.at(lookup.keys[i]));
   return out;
 }
 

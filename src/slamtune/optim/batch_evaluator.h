@@ -79,6 +79,16 @@ class BatchEvaluator {
   std::shared_ptr<const std::atomic<int>> idle_slots() const { return idle_slots_; }
 
  private:
+  // A batch split into what is known (memory or run database) and what must run.
+  struct BatchLookup {
+    std::vector<std::string> keys;                  // by batch index
+    std::vector<std::size_t> todo;                  // indices of the first occurrence of each unknown key
+    std::map<std::string, EvaluationRecord> known;  // by key
+  };
+  BatchLookup Lookup(const std::vector<Assignment>& batch);
+  // Runs lookup.todo on the local threads and the remote slots; returns their records, by todo index.
+  std::vector<EvaluationRecord> RunTodo(const std::vector<Assignment>& batch, const BatchLookup& lookup);
+
   EvaluateFn evaluate_;
   EvaluationStore* store_;
   int jobs_;

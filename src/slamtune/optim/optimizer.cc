@@ -19,6 +19,7 @@
 #include "slamtune/nsga3/nsga3.h"
 #include "slamtune/optim/budget_estimate.h"
 #include "slamtune/optim/candidate_selection.h"
+#include "slamtune/optim/stored_settings.h"
 #include "slamtune/optim/tuning_problem.h"
 
 namespace slamtune::optim {
@@ -117,36 +118,6 @@ nlohmann::json OptimizeSettings::ToJson() const {
 
 namespace {
 
-// Adds to `stored` every key of `current` it lacks, at any depth of objects.
-void AddMissingKeys(const nlohmann::json& current, nlohmann::json& stored) {
-  if (!current.is_object() || !stored.is_object()) return;
-  for (const auto& [key, value] : current.items()) {
-    if (!stored.contains(key)) {
-      stored[key] = value;
-    } else {
-      AddMissingKeys(value, stored[key]);
-    }
-  }
-}
-
-// Stored settings as today's ToJson writes them: folders written before objective sets
-// existed were optimised on the paper's objectives; a parameter or input option that did not
-// exist when the folder was written had the value it has today (the engine's behaviour then;
-// `current` gives it).
-nlohmann::json UpgradedSettings(nlohmann::json stored, const nlohmann::json& current) {
-  if (stored.is_object() && stored.contains("engine") && current.contains("engine")) {
-    AddMissingKeys(current.at("engine"), stored["engine"]);
-  }
-  if (stored.is_object() && !stored.contains("objectives")) {
-    stored["objectives"] = ObjectiveSet::NameOf(ObjectiveSetKind::kPaper);
-  }
-  // ... and ran their whole budget.
-  if (stored.is_object() && !stored.contains("settling")) {
-    stored["settling"] = SettlingOptions{false}.ToJson();
-  }
-  return stored;
-}
-
 // "best u_h 0.0123 n_c 4512 n_e 3" over the latest population.
 std::string BestObjectives(const ObjectiveSet& objectives, const std::vector<std::vector<double>>& population) {
   std::string out = "best";
@@ -165,7 +136,7 @@ nlohmann::json OpenRun(const OptimizeSettings& settings, EvaluationStore& store,
   const nlohmann::json settings_json = settings.ToJson();
   const auto stored_raw = store.Settings();
   const std::optional<nlohmann::json> stored =
-      stored_raw ? std::optional<nlohmann::json>(UpgradedSettings(*stored_raw, settings_json)) : std::nullopt;
+      stored_raw ? std::optional<nlohmann::json>(UpgradeStoredSettings(*stored_raw, settings_json)) : std::nullopt;
   if (start == OptimizationStart::kResume) {
     if (!stored) throw InputError(store.path(), 0, "--resume: this folder holds no slamtune optimisation");
     if (*stored != settings_json) {

@@ -221,27 +221,22 @@ cv::Point2d RenderedPlot::ToPixel(double x, double y) const {
   return {plot_area.x + fx * (plot_area.width - 1), plot_area.y + (1.0 - fy) * (plot_area.height - 1)};
 }
 
-RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& options) {
-  options.Validate();
-  for (const Series& s : series) {
-    SLAMTUNE_CHECK_MSG(s.x.size() == s.y.size(), "series '" + s.name + "' has x and y of different lengths");
-  }
-  RenderedPlot out;
-  out.x_axis = AxisFor(series, true, options.x_limits, options.target_ticks);
-  if (options.x_whole_numbers) out.x_axis = KeepWholeNumbers(std::move(out.x_axis));
-  out.y_axis = AxisFor(series, false, options.y_limits, options.target_ticks);
+namespace {
 
-  // Resolved styles of every series, and the legend's entries (the named series).
-  std::vector<LegendEntry> styles;
-  for (std::size_t i = 0; i < series.size(); ++i) styles.push_back(StyleOf(series[i], i, options));
-  const std::vector<LegendEntry> legend = LegendEntries(series, options);
+// The plot area within the image, and the legend's width (0: no legend), from the outside in.
+struct PlotLayout {
+  cv::Rect area;
+  int legend_width = 0;
+  int line_height = 0;  // of a line of text at the options' scale
+};
 
-  // Layout, from the outside in.
+PlotLayout LayOut(const RenderedPlot& plot, const std::vector<LegendEntry>& legend, const PlotOptions& options) {
   const double scale = options.font_scale;
   const double title_scale = scale * 1.25;
-  const int line_h = TextSize("Ag", scale).height;
+  PlotLayout layout;
+  const int line_h = layout.line_height = TextSize("Ag", scale).height;
   int y_tick_width = 0;
-  for (const auto& label : out.y_axis.labels) y_tick_width = std::max(y_tick_width, TextSize(label, scale).width);
+  for (const auto& label : plot.y_axis.labels) y_tick_width = std::max(y_tick_width, TextSize(label, scale).width);
   const int sample_w = std::max(options.marker_size, 18);
   int legend_w = 0;
   if (options.legend) {
@@ -252,17 +247,20 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
       kMargin + (options.title.empty() ? line_h / 2 : TextSize(options.title, title_scale, 2).height + kGap);
   const int bottom = kMargin + kTickLength + kGap + line_h + (options.x_label.empty() ? 0 : line_h + kGap);
   const int left = kMargin + (options.y_label.empty() ? 0 : line_h + kGap) + y_tick_width + kGap + kTickLength;
-  int right = kMargin + TextSize(out.x_axis.labels.back(), scale).width / 2;
+  int right = kMargin + TextSize(plot.x_axis.labels.back(), scale).width / 2;
   if (options.width - left - right - legend_w < 60) legend_w = 0;  // too narrow: drop the legend
   right += legend_w;
-  out.plot_area =
+  layout.legend_width = legend_w;
+  layout.area =
       cv::Rect(left, top, std::max(options.width - left - right, 10), std::max(options.height - top - bottom, 10));
-  const cv::Rect& area = out.plot_area;
+  return layout;
+}
 
+// Grid, ticks and tick labels, and the frame of the axes.
+void DrawAxes(RenderedPlot& out, const PlotOptions& options) {
   cv::Mat& image = out.image;
-  image = cv::Mat(options.height, options.width, CV_8UC3, kWhite);
-
-  // Grid, ticks and tick labels.
+  const cv::Rect& area = out.plot_area;
+  const double scale = options.font_scale;
   for (std::size_t i = 0; i < out.x_axis.values.size(); ++i) {
     const int px = static_cast<int>(std::lround(out.ToPixel(out.x_axis.values[i], out.y_axis.lower).x));
     if (options.grid) cv::line(image, {px, area.y}, {px, area.br().y - 1}, kGridGrey, 1);
@@ -279,8 +277,12 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
              kTextGrey);
   }
   cv::rectangle(image, area, kBlack, 1);
+}
 
-  // Titles and axis labels.
+// The title and the axis labels.
+void DrawTitles(cv::Mat& image, const cv::Rect& area, int line_height, const PlotOptions& options) {
+  const double scale = options.font_scale;
+  const double title_scale = scale * 1.25;
   if (!options.title.empty()) {
     const cv::Size ts = TextSize(options.title, title_scale, 2);
     DrawText(image, options.title, {std::max(area.x + area.width / 2 - ts.width / 2, kMargin), kMargin}, title_scale,
@@ -292,45 +294,71 @@ RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& op
              scale, kBlack);
   }
   if (!options.y_label.empty())
-    DrawRotatedText(image, options.y_label, {kMargin + line_h / 2, area.y + area.height / 2}, scale);
+    DrawRotatedText(image, options.y_label, {kMargin + line_height / 2, area.y + area.height / 2}, scale);
+}
 
-  // Data: lines clipped to the axes, then markers of points inside them.
-  const cv::Rect clip(area.x, area.y, area.width, area.height);
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    const Series& s = series[k];
-    const LegendEntry& st = styles[k];
-    if (HasLine(s.style)) {
-      for (std::size_t i = 1; i < s.x.size(); ++i) {
-        if (!Finite(s.x[i - 1], s.y[i - 1]) || !Finite(s.x[i], s.y[i])) continue;  // gaps break the line
-        const cv::Point2d a = out.ToPixel(s.x[i - 1], s.y[i - 1]), b = out.ToPixel(s.x[i], s.y[i]);
-        // Far-out points (fixed limits) are clamped before the integer conversion.
-        auto clamp = [](double v) { return static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); };
-        cv::Point p{clamp(a.x), clamp(a.y)}, q{clamp(b.x), clamp(b.y)};
-        if (cv::clipLine(clip, p, q)) cv::line(image, p, q, st.colour, options.line_thickness, cv::LINE_AA);
-      }
-    }
-    for (std::size_t i = 0; i < s.x.size(); ++i) {
-      if (!Finite(s.x[i], s.y[i])) {
-        ++out.points_skipped;
-        continue;
-      }
-      const double tol_x = 1e-9 * (out.x_axis.upper - out.x_axis.lower);
-      const double tol_y = 1e-9 * (out.y_axis.upper - out.y_axis.lower);
-      if (s.x[i] < out.x_axis.lower - tol_x || s.x[i] > out.x_axis.upper + tol_x || s.y[i] < out.y_axis.lower - tol_y ||
-          s.y[i] > out.y_axis.upper + tol_y) {
-        ++out.points_clipped;
-        continue;
-      }
-      ++out.points_drawn;
-      if (!HasMarkers(s.style)) continue;
-      const cv::Point2d p = out.ToPixel(s.x[i], s.y[i]);
-      DrawMarker(image, {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))}, st.marker, st.colour,
-                 st.marker_size);
+// One series: its line clipped to the axes, then the markers of its points inside them (counted
+// in `out`: drawn, outside the axes, or not finite).
+void DrawSeries(RenderedPlot& out, const Series& s, const LegendEntry& st, const PlotOptions& options) {
+  const cv::Rect& clip = out.plot_area;
+  if (HasLine(s.style)) {
+    for (std::size_t i = 1; i < s.x.size(); ++i) {
+      if (!Finite(s.x[i - 1], s.y[i - 1]) || !Finite(s.x[i], s.y[i])) continue;  // gaps break the line
+      const cv::Point2d a = out.ToPixel(s.x[i - 1], s.y[i - 1]), b = out.ToPixel(s.x[i], s.y[i]);
+      // Far-out points (fixed limits) are clamped before the integer conversion.
+      auto clamp = [](double v) { return static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); };
+      cv::Point p{clamp(a.x), clamp(a.y)}, q{clamp(b.x), clamp(b.y)};
+      if (cv::clipLine(clip, p, q)) cv::line(out.image, p, q, st.colour, options.line_thickness, cv::LINE_AA);
     }
   }
+  const double tol_x = 1e-9 * (out.x_axis.upper - out.x_axis.lower);
+  const double tol_y = 1e-9 * (out.y_axis.upper - out.y_axis.lower);
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    if (!Finite(s.x[i], s.y[i])) {
+      ++out.points_skipped;
+      continue;
+    }
+    if (s.x[i] < out.x_axis.lower - tol_x || s.x[i] > out.x_axis.upper + tol_x || s.y[i] < out.y_axis.lower - tol_y ||
+        s.y[i] > out.y_axis.upper + tol_y) {
+      ++out.points_clipped;
+      continue;
+    }
+    ++out.points_drawn;
+    if (!HasMarkers(s.style)) continue;
+    const cv::Point2d p = out.ToPixel(s.x[i], s.y[i]);
+    DrawMarker(out.image, {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))}, st.marker,
+               st.colour, st.marker_size);
+  }
+}
 
+}  // namespace
+
+RenderedPlot RenderPlot(const std::vector<Series>& series, const PlotOptions& options) {
+  options.Validate();
+  for (const Series& s : series) {
+    SLAMTUNE_CHECK_MSG(s.x.size() == s.y.size(), "series '" + s.name + "' has x and y of different lengths");
+  }
+  RenderedPlot out;
+  out.x_axis = AxisFor(series, true, options.x_limits, options.target_ticks);
+  if (options.x_whole_numbers) out.x_axis = KeepWholeNumbers(std::move(out.x_axis));
+  out.y_axis = AxisFor(series, false, options.y_limits, options.target_ticks);
+
+  // Resolved styles of every series, and the legend's entries (the named series).
+  std::vector<LegendEntry> styles;
+  for (std::size_t i = 0; i < series.size(); ++i) styles.push_back(StyleOf(series[i], i, options));
+  const std::vector<LegendEntry> legend = LegendEntries(series, options);
+
+  const PlotLayout layout = LayOut(out, legend, options);
+  out.plot_area = layout.area;
+  out.image = cv::Mat(options.height, options.width, CV_8UC3, kWhite);
+  DrawAxes(out, options);
+  DrawTitles(out.image, out.plot_area, layout.line_height, options);
+  for (std::size_t k = 0; k < series.size(); ++k) DrawSeries(out, series[k], styles[k], options);
   // Legend, right of the axes.
-  if (legend_w > 0) DrawLegend(image, legend, {area.br().x + kGap + kMargin / 2, area.y}, area.br().y, options);
+  if (layout.legend_width > 0) {
+    DrawLegend(out.image, legend, {out.plot_area.br().x + kGap + kMargin / 2, out.plot_area.y}, out.plot_area.br().y,
+               options);
+  }
   return out;
 }
 

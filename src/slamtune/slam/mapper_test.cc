@@ -1,7 +1,7 @@
 // End-to-end tests of the mapper on a simulated corridor loop (sim/), driven through the
 // LogRunner step API: determinism, forking the engine state, changing loop-closure parameters
-// on a copy, the coarse gate's strictness, the "loop closed without an edge" quirk, and two
-// lasers (--beams per-geometry, docs/engine.md §3.5).
+// on a copy, the coarse gate's strictness and the "loop closed without an edge" quirk. Two
+// lasers: mapper_two_lasers_test.cc.
 #include "slamtune/slam/mapper.h"
 
 #include <gmock/gmock.h>
@@ -20,52 +20,10 @@
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/testing/beam_counts.h"
+#include "slamtune/slam/testing/engine_state.h"
 
 namespace slamtune::slam {
 namespace {
-
-// Fewer, sparser nodes than the defaults keep a whole run around a second.
-MapperParams FastParams() {
-  MapperParams p;
-  p.minimum_travel_distance = 0.4;
-  p.scan_buffer_size = 20;
-  p.loop_match_minimum_chain_size = 5;
-  return p;
-}
-
-// Everything the engine decided and computed; the count of near-chain matches skipped by
-// the response bound (fast_matching/response_bound.h) only when `same_skips`.
-void ExpectSameState(const LogRunner& a, const LogRunner& b, bool same_skips = true) {
-  const Mapper& ma = a.mapper();
-  const Mapper& mb = b.mapper();
-  ASSERT_EQ(ma.scans().size(), mb.scans().size());
-  for (std::size_t k = 0; k < ma.scans().size(); ++k) {
-    ASSERT_EQ(ma.scans()[k].corrected_pose(), mb.scans()[k].corrected_pose()) << "scan " << k;
-  }
-  EXPECT_TRUE(ma.graph() == mb.graph());
-  EXPECT_EQ(ma.reference_poses(), mb.reference_poses());
-  EXPECT_TRUE(ma.scans_by_laser() == mb.scans_by_laser());
-  for (int laser = 0; laser < ma.scans_by_laser().num_lasers(); ++laser) {
-    EXPECT_EQ(ma.running_buffer(laser), mb.running_buffer(laser)) << "laser " << laser;
-  }
-  MapperCounters ca = ma.counters(), cb = mb.counters();
-  if (!same_skips) ca.near_chain_matches_skipped = cb.near_chain_matches_skipped = 0;
-  EXPECT_EQ(ca, cb);
-  ASSERT_EQ(ma.loop_attempts().size(), mb.loop_attempts().size());
-  for (std::size_t k = 0; k < ma.loop_attempts().size(); ++k) {
-    const LoopAttempt& x = ma.loop_attempts()[k];
-    const LoopAttempt& y = mb.loop_attempts()[k];
-    EXPECT_EQ(x.scan, y.scan);
-    EXPECT_EQ(x.chain_first, y.chain_first);
-    EXPECT_EQ(x.coarse_response, y.coarse_response);
-    EXPECT_EQ(x.coarse_covariance, y.coarse_covariance);
-    EXPECT_EQ(x.fine_response, y.fine_response);
-    EXPECT_EQ(x.accepted, y.accepted);
-  }
-  const auto ta = a.Trajectory(), tb = b.Trajectory();
-  ASSERT_EQ(ta.size(), tb.size());
-  for (std::size_t k = 0; k < ta.size(); ++k) EXPECT_EQ(ta[k].pose, tb[k].pose) << k;
-}
 
 class MapperOnCorridor : public ::testing::Test {
  protected:
@@ -75,7 +33,7 @@ class MapperOnCorridor : public ::testing::Test {
     o.speed_mps = 1.0;
     o.seed = 3;
     log_ = std::make_shared<const io::LaserLog>(sim::Simulate(o).log);
-    full_ = std::make_unique<LogRunner>(log_, FastParams());
+    full_ = std::make_unique<LogRunner>(log_, testing::FastMapperParams());
     full_->RunToEnd();
     // The first accepted loop and a snapshot of the engine just before its scan.
     for (const LoopAttempt& a : full_->mapper().loop_attempts()) {
@@ -85,7 +43,7 @@ class MapperOnCorridor : public ::testing::Test {
       }
     }
     if (loop_.log_index < 0) return;
-    before_loop_ = std::make_unique<LogRunner>(log_, FastParams());
+    before_loop_ = std::make_unique<LogRunner>(log_, testing::FastMapperParams());
     while (before_loop_->next_index() < static_cast<std::size_t>(loop_.log_index)) before_loop_->Step();
   }
   static void TearDownTestSuite() {
@@ -136,8 +94,8 @@ TEST_F(MapperOnCorridor, ForkedStateContinuesBitForBit) {
   LogRunner b = *before_loop_;
   a.RunToEnd();
   b.RunToEnd();
-  ExpectSameState(a, b);
-  ExpectSameState(a, *full_);  // and equal to the run that was never forked (determinism)
+  testing::ExpectSameEngineState(a, b);
+  testing::ExpectSameEngineState(a, *full_);  // and equal to the run that was never forked (determinism)
 }
 
 // Skipping near-chain matches the bound proves unable to link changes nothing: same poses,
@@ -157,7 +115,7 @@ TEST(Mapper, SkippingUnlinkableNearChainsChangesNothingInTheOffice) {
   EXPECT_GT(c.near_chain_matches, c.near_chain_matches_skipped);
   EXPECT_EQ(all.mapper().counters().near_chain_matches_skipped, 0);
   EXPECT_GE(skipping.Summary().loop_closures.size(), 1u);
-  ExpectSameState(skipping, all, /*same_skips=*/false);
+  testing::ExpectSameEngineState(skipping, all, /*same_skips=*/false);
 }
 
 TEST(Mapper, SkippingUnlinkableNearChainsChangesNothingOnAnIntelSlice) {
@@ -173,19 +131,19 @@ TEST(Mapper, SkippingUnlinkableNearChainsChangesNothingOnAnIntelSlice) {
   all.RunToEnd();
   EXPECT_GT(skipping.mapper().counters().near_chain_matches_skipped, 50);
   EXPECT_GE(skipping.Summary().loop_closures.size(), 1u);
-  ExpectSameState(skipping, all, /*same_skips=*/false);
+  testing::ExpectSameEngineState(skipping, all, /*same_skips=*/false);
 }
 
 TEST_F(MapperOnCorridor, LoopParametersChangedOnACopyAffectOnlyLaterDecisions) {
   LogRunner same = *before_loop_;
-  same.SetParams(FastParams());  // identical parameters: nothing changes
+  same.SetParams(testing::FastMapperParams());  // identical parameters: nothing changes
   LogRunner strict = *before_loop_;
-  MapperParams p = FastParams();
+  MapperParams p = testing::FastMapperParams();
   p.loop_match_minimum_chain_size = 100000;
   strict.SetParams(p);
   same.RunToEnd();
   strict.RunToEnd();
-  ExpectSameState(same, *full_);
+  testing::ExpectSameEngineState(same, *full_);
   const int loops_before = before_loop_->mapper().counters().loops_closed;
   EXPECT_EQ(strict.mapper().counters().loops_closed, loops_before);
   EXPECT_GT(full_->mapper().counters().loops_closed, loops_before);
@@ -194,7 +152,7 @@ TEST_F(MapperOnCorridor, LoopParametersChangedOnACopyAffectOnlyLaterDecisions) {
 TEST_F(MapperOnCorridor, CoarseResponseGateIsStrict) {
   const double s1 = loop_.coarse_response;
   LogRunner at = *before_loop_;
-  MapperParams p = FastParams();
+  MapperParams p = testing::FastMapperParams();
   p.loop_match_minimum_response_coarse = s1;  // s1 > p fails when equal
   at.SetParams(p);
   at.Step();
@@ -216,7 +174,7 @@ TEST_F(MapperOnCorridor, CoarseResponseGateIsStrict) {
 
 TEST_F(MapperOnCorridor, CoarseVarianceGateUsesQSquared) {
   const double var = std::max(loop_.coarse_covariance(0, 0), loop_.coarse_covariance(1, 1));
-  MapperParams p = FastParams();
+  MapperParams p = testing::FastMapperParams();
   LogRunner tight = *before_loop_;
   p.loop_match_maximum_variance_coarse = std::sqrt(var) * (1.0 - 1e-9);
   tight.SetParams(p);
@@ -235,7 +193,7 @@ TEST_F(MapperOnCorridor, CoarseVarianceGateUsesQSquared) {
 
 TEST_F(MapperOnCorridor, FineGateAcceptsEquality) {
   LogRunner at = *before_loop_;
-  MapperParams p = FastParams();
+  MapperParams p = testing::FastMapperParams();
   p.loop_match_minimum_response_fine = loop_.fine_response;  // s2 >= threshold accepts
   at.SetParams(p);
   at.Step();
@@ -255,7 +213,7 @@ TEST_F(MapperOnCorridor, FineGateAcceptsEquality) {
 // no edge is added, and the solver still runs.
 TEST_F(MapperOnCorridor, LoopAcceptedWithoutEdgeStillSolves) {
   LogRunner r = *before_loop_;
-  MapperParams p = FastParams();
+  MapperParams p = testing::FastMapperParams();
   p.link_scan_maximum_distance = 0.001;
   r.SetParams(p);
   const int solves_before = static_cast<int>(r.mapper().solver_runs().size());
@@ -274,7 +232,7 @@ TEST_F(MapperOnCorridor, LoopAcceptedWithoutEdgeStillSolves) {
 // The slam_toolbox back-end closes the same loop from the same state (its own solve).
 TEST_F(MapperOnCorridor, CeresBackEndClosesTheSameLoop) {
   LogRunner r = *before_loop_;
-  MapperParams p = FastParams();
+  MapperParams p = testing::FastMapperParams();
   p.solver = SolverKind::kCeres;
   r.SetParams(p);
   const ProcessResult result = r.Step();
@@ -329,187 +287,14 @@ TEST(Mapper, RejectsScansWithAnotherReadingCountAndStaysPut) {
   EXPECT_EQ(mapper.counters().scans_not_moved, 1);
 }
 
-// A corridor drive whose laser thins every other scan to 91 of its 181 beams (2 degree steps,
-// exact angles): two beam geometries, run as two Karto lasers with --beams per-geometry (§3.5).
-class MapperWithTwoLasers : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    sim::SimulationOptions o;
-    o.world = "corridor";
-    o.speed_mps = 1.0;
-    o.seed = 3;
-    io::LaserLog log = testing::ThinEveryNthScan(sim::Simulate(o).log, 2, 2);
-    io::LaserLog node = log;
-    io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
-    io::HarmonizeBeams(io::BeamPolicy::kNode, &node);
-    log_ = std::make_shared<const io::LaserLog>(std::move(log));
-    node_log_ = std::make_shared<const io::LaserLog>(std::move(node));
-    full_ = std::make_unique<LogRunner>(log_, FastParams());
-    full_->RunToEnd();
-  }
-  static void TearDownTestSuite() {
-    full_.reset();
-    log_.reset();
-    node_log_.reset();
-  }
-
-  static std::shared_ptr<const io::LaserLog> log_;
-  static std::shared_ptr<const io::LaserLog> node_log_;
-  static std::unique_ptr<LogRunner> full_;
-};
-
-std::shared_ptr<const io::LaserLog> MapperWithTwoLasers::log_;
-std::shared_ptr<const io::LaserLog> MapperWithTwoLasers::node_log_;
-std::unique_ptr<LogRunner> MapperWithTwoLasers::full_;
-
-TEST_F(MapperWithTwoLasers, EveryScanReachesItsOwnLaser) {
-  ASSERT_EQ(full_->lasers().geometries.size(), 2u);
-  EXPECT_EQ(full_->lasers().geometries[0]->num_readings, 181);
-  EXPECT_EQ(full_->lasers().geometries[1]->num_readings, 91);
-  EXPECT_EQ(full_->lasers().names, (std::vector<std::string>{"laser_0", "laser_1"}));
-  const RunSummary s = full_->Summary();
-  EXPECT_EQ(s.scans_wrong_reading_count, 0);
-  EXPECT_EQ(s.nodes + s.scans_not_moved, s.scans_offered);
-  ASSERT_EQ(s.nodes_per_laser.size(), 2u);
-  EXPECT_GT(s.nodes_per_laser[0], 10);
-  EXPECT_GT(s.nodes_per_laser[1], 10);
-  EXPECT_EQ(s.nodes_per_laser[0] + s.nodes_per_laser[1], s.nodes);
-  // One sequential edge per scan after each laser's first.
-  EXPECT_EQ(s.edges[static_cast<int>(EdgeKind::kSequential)], s.nodes - 2);
-  EXPECT_EQ(s.edges[static_cast<int>(EdgeKind::kLaserLink)], 1);
-  for (const LaserScan& scan : full_->mapper().scans()) {
-    EXPECT_EQ(scan.laser, full_->lasers().LaserOf(static_cast<std::size_t>(scan.log_index)));
-    EXPECT_EQ(&scan.geometry(), full_->lasers().geometries[scan.laser].get());
-  }
-  // The node drops every thinned scan.
-  LogRunner node(node_log_, FastParams());
-  node.RunToEnd();
-  EXPECT_EQ(node.Summary().scans_wrong_reading_count, static_cast<int>(log_->scans.size() / 2));
-  EXPECT_EQ(node.lasers().geometries.size(), 1u);
-}
-
-TEST_F(MapperWithTwoLasers, LasersAreJoinedInTheGraph) {
-  const Mapper& m = full_->mapper();
-  const ScansByLaser& by_laser = m.scans_by_laser();
-  int across = 0;
-  for (const Edge& e : m.graph().edges()) {
-    const bool crosses = by_laser.laser_of(e.source) != by_laser.laser_of(e.target);
-    if (e.kind == EdgeKind::kLaserLink) {
-      // The second laser's first scan, linked from the first laser's first scan.
-      EXPECT_EQ(e.source, by_laser.scans_of(0).front());
-      EXPECT_EQ(e.target, by_laser.scans_of(1).front());
-    } else if (e.kind == EdgeKind::kSequential || e.kind == EdgeKind::kRunningBuffer) {
-      EXPECT_FALSE(crosses) << e.source << " -> " << e.target;
-    }
-    if (crosses) ++across;
-  }
-  EXPECT_GT(across, 10) << "near chains and loops should join the two lasers' scans";
-  // Each laser's running buffer holds only its own scans.
-  for (int laser = 0; laser < 2; ++laser) {
-    for (int id : m.running_buffer(laser)) EXPECT_EQ(by_laser.laser_of(id), laser);
-  }
-}
-
-TEST_F(MapperWithTwoLasers, RunsAreDeterministicAndCopiesContinueIdentically) {
-  LogRunner again(log_, FastParams());
-  again.RunToEnd();
-  ExpectSameState(again, *full_);
-  LogRunner half(log_, FastParams());
-  while (half.next_index() < log_->scans.size() / 2) half.Step();
-  LogRunner copy = half;
-  copy.RunToEnd();
-  half.RunToEnd();
-  ExpectSameState(copy, *full_);
-  ExpectSameState(half, *full_);
-}
-
-// The response bound (fast_matching/response_bound.h) also holds for chains of another laser.
-TEST_F(MapperWithTwoLasers, SkippingUnlinkableNearChainsChangesNothing) {
-  LogRunner all(log_, FastParams());
-  all.set_skip_unlinkable_near_chains(false);
-  all.RunToEnd();
-  EXPECT_GT(full_->mapper().counters().near_chain_matches_skipped, 0);
-  ExpectSameState(all, *full_, /*same_skips=*/false);
-}
-
-TEST_F(MapperWithTwoLasers, SharedWorkGivesTheSameResults) {
-  SharedWork shared{std::make_shared<MatchCache>(), std::make_shared<SolveCache>(),
-                    std::make_shared<BarycenterCache>()};
-  LogRunner first(log_, FastParams(), shared);
-  first.RunToEnd();
-  LogRunner second(log_, FastParams(), shared);  // served by the caches
-  second.RunToEnd();
-  ExpectSameState(first, *full_);
-  ExpectSameState(second, *full_);
-  EXPECT_GT(shared.match_cache->counters().hits, 0u);
-  EXPECT_EQ(shared.match_cache->counters().bypassed, 0u);  // matches across lasers are shared too
-}
-
-// The first 600 scans of intel with every other scan thinned to 90 of its 180 beams (2 degree
-// steps, exact angles): the node drops half the scans, per-geometry maps them all, joins the
-// two lasers and is deterministic.
-TEST(Mapper, TwoLasersOnAnIntelSlice) {
-  const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/intel.clf.gz";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "dataset not available: " << path;
-  io::LaserLog whole = io::ReadCarmenLog(path);
-  whole.scans.resize(std::min<std::size_t>(whole.scans.size(), 600));
-  io::LaserLog log = testing::ThinEveryNthScan(std::move(whole), 2, 2);
-  io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
-  const auto shared_log = std::make_shared<const io::LaserLog>(std::move(log));
-  LogRunner a(shared_log, MapperParams{});
-  while (a.next_index() < 300) a.Step();
-  LogRunner b = a;
-  a.RunToEnd();
-  b.RunToEnd();
-  ExpectSameState(a, b);
-  const RunSummary s = a.Summary();
-  EXPECT_EQ(s.scans_wrong_reading_count, 0);
-  ASSERT_EQ(s.nodes_per_laser.size(), 2u);
-  EXPECT_GT(s.nodes_per_laser[0], 20);
-  EXPECT_GT(s.nodes_per_laser[1], 20);
-  EXPECT_EQ(s.edges[static_cast<int>(EdgeKind::kLaserLink)], 1);
-  const ScansByLaser& by_laser = a.mapper().scans_by_laser();
-  int across = 0;
-  for (const Edge& e : a.mapper().graph().edges()) across += by_laser.laser_of(e.source) != by_laser.laser_of(e.target);
-  EXPECT_GT(across, 20);
-}
-
 // With one beam geometry per-geometry is the node's single laser, decision for decision.
 TEST_F(MapperOnCorridor, PerGeometryWithOneGeometryIsTheNode) {
   io::LaserLog log = *log_;
   io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
-  LogRunner per_geometry(std::make_shared<const io::LaserLog>(std::move(log)), FastParams());
+  LogRunner per_geometry(std::make_shared<const io::LaserLog>(std::move(log)), testing::FastMapperParams());
   per_geometry.RunToEnd();
   EXPECT_EQ(per_geometry.lasers().geometries.size(), 1u);
-  ExpectSameState(per_geometry, *full_);
-}
-
-TEST(Mapper, EachLaserChecksItsOwnReadingCount) {
-  MapperParams p;
-  p.use_scan_matching = false;
-  Mapper mapper(p);
-  auto three = std::make_shared<LaserGeometry>();
-  three->angular_resolution = 0.1;
-  three->num_readings = 3;
-  auto two = std::make_shared<LaserGeometry>(*three);
-  two->num_readings = 2;
-  const auto ranges3 = std::make_shared<const std::vector<double>>(std::vector<double>{1, 1, 1});
-  const auto ranges2 = std::make_shared<const std::vector<double>>(std::vector<double>{1, 1});
-  const auto scan = [](const auto& geometry, const auto& ranges, double x, int laser) {
-    LaserScan s(geometry, ranges, {x, 0, 0}, 0.0);
-    s.laser = laser;
-    return s;
-  };
-  EXPECT_EQ(mapper.Process(scan(three, ranges3, 0.0, 0)).outcome, ProcessResult::Outcome::kProcessed);
-  // Laser 1's first scan: its own count, and its own first scan (no movement test).
-  EXPECT_EQ(mapper.Process(scan(two, ranges2, 0.0, 1)).outcome, ProcessResult::Outcome::kProcessed);
-  EXPECT_EQ(mapper.Process(scan(two, ranges2, 1.0, 0)).outcome, ProcessResult::Outcome::kWrongReadingCount);
-  EXPECT_EQ(mapper.Process(scan(three, ranges3, 1.0, 1)).outcome, ProcessResult::Outcome::kWrongReadingCount);
-  EXPECT_EQ(mapper.Process(scan(two, ranges2, 0.05, 1)).outcome, ProcessResult::Outcome::kNotMoved);
-  EXPECT_EQ(mapper.Process(scan(three, ranges3, 1.0, 0)).outcome, ProcessResult::Outcome::kProcessed);
-  EXPECT_EQ(mapper.scans_by_laser().scans_of(0).size(), 2u);
-  EXPECT_EQ(mapper.scans_by_laser().scans_of(1).size(), 1u);
-  EXPECT_EQ(mapper.last_processed(), 2);
+  testing::ExpectSameEngineState(per_geometry, *full_);
 }
 
 TEST(Mapper, ConstructorValidatesParameters) {
