@@ -163,7 +163,7 @@ TEST(BeamGeometry, PolicyNamesParseAndUnknownIsAnInputError) {
     ParseBeamPolicy("nearest");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("--beams 'nearest'"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("--beams 'nearest'"));
   }
 }
 

@@ -11,8 +11,8 @@
 namespace slamtune::sim {
 namespace {
 
-using testing::HasSubstr;
-using testing::ThrowsMessage;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 OdometryFault Fault(OdometryFaultKind kind, double start, double length, double magnitude) {
   OdometryFault fault;

@@ -53,7 +53,7 @@ void ExpectSameScans(const io::LaserLog& bag, const io::LaserLog& carmen, std::s
   }
 }
 
-class RecordingRuns : public testing::TestWithParam<std::string> {};
+class RecordingRuns : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RecordingRuns, BagGivesTheCarmenLogsScansAndPoses) {
   const io::LaserLog bag = io::ReadLaserLog(kFixtures + GetParam());
@@ -97,8 +97,8 @@ TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, RecordingRuns,
-                         testing::Values("office_zstd.mcap", "office_db3", "office_lz4.bag", "office_bz2.bag"),
-                         [](const testing::TestParamInfo<std::string>& info) {
+                         ::testing::Values("office_zstd.mcap", "office_db3", "office_lz4.bag", "office_bz2.bag"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return name;
