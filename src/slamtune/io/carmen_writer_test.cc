@@ -17,7 +17,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-LaserScanRecord Flaser(std::size_t n, double time, const Pose2& pose) {
+LaserScanRecord FlaserRecord(std::size_t n, double time, const Pose2& pose) {
   LaserScanRecord scan;
   scan.kind = RecordKind::kFlaser;
   FlaserBeamGeometry(n, &scan.angle_min, &scan.angle_increment);
@@ -45,7 +45,7 @@ LaserLog SmallLog() {
   log.params = {{"laser_front_laser_max_range", "30"}, {"robot_frontlaser_offset", "0.0"}};
   log.odometry = {Odom(100.0, Pose2{0, 0, 0}), Odom(100.1, Pose2{0.05, 0.001, 0.002}),
                   Odom(100.2, Pose2{0.1, 0.002, -3.14159})};
-  log.scans = {Flaser(181, 100.0, Pose2{0, 0, 0}), Flaser(181, 100.2, Pose2{0.1, 0.002, -3.14159})};
+  log.scans = {FlaserRecord(181, 100.0, Pose2{0, 0, 0}), FlaserRecord(181, 100.2, Pose2{0.1, 0.002, -3.14159})};
   log.scans[1].ranges[5] = 30.0;  // a no-return
   return log;
 }
@@ -114,7 +114,7 @@ TEST(WriteCarmenLog, ReadsBackThroughTheReader) {
 
 TEST(WriteCarmenLog, OtherGeometriesBecomeRobotLaser1AndReadBackExactly) {
   LaserLog log;
-  LaserScanRecord scan = Flaser(240, 5.0, Pose2{1, 2, 0.5});
+  LaserScanRecord scan = FlaserRecord(240, 5.0, Pose2{1, 2, 0.5});
   scan.kind = RecordKind::kRobotLaser1;
   scan.angle_min = -DegToRad(120);
   scan.angle_increment = DegToRad(240) / 239;
@@ -181,7 +181,7 @@ TEST(WriteCarmenLog, UnwritablePathIsAnInputError) {
 TEST(PrepareForCarmen, MakesAnyLogWritableAndKeepsFlaserOnRequest) {
   LaserLog log = SmallLog();
   log.scans[0].laser_offset = Pose2{0.2, -0.1, 0.05};
-  LaserScanRecord ros = Flaser(181, 100.4, Pose2{0.2, 0.0, 0.0});
+  LaserScanRecord ros = FlaserRecord(181, 100.4, Pose2{0.2, 0.0, 0.0});
   ros.kind = RecordKind::kRosLaserScan;
   ros.max_range = std::numeric_limits<double>::infinity();
   ros.ranges[3] = std::numeric_limits<double>::infinity();

@@ -7,11 +7,12 @@
 #include <functional>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/fixtures.h"
 
 namespace slamtune::io {
 namespace {
 
-const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/recordings/";
+using slamtune::testing::FixturePath;
 
 // 200 scans at 5 Hz of a robot driving along x at 0.5 m/s, ODOM at 10 Hz with its speed;
 // readings up to 20 m of a 30 m laser.
@@ -128,14 +129,16 @@ TEST(LogCheck, ProblemsListTheirFirstScansAndTimes) {
 
 TEST(LogCheck, RecordingFaultsAreFoundInTheFixtureBags) {
   const CheckOptions options;
-  EXPECT_TRUE(CheckRecording(kFixtures + "office_zstd.mcap", {}, options).ok());
-  EXPECT_TRUE(CheckRecording(kFixtures + "fault_no_tf_static.mcap", {}, options).Has(ProblemKind::kNoLaserOffset));
-  const CheckReport gap = CheckRecording(kFixtures + "fault_tf_gap.mcap", {}, options);
+  EXPECT_TRUE(CheckRecording(FixturePath("recordings/office_zstd.mcap"), {}, options).ok());
+  EXPECT_TRUE(
+      CheckRecording(FixturePath("recordings/fault_no_tf_static.mcap"), {}, options).Has(ProblemKind::kNoLaserOffset));
+  const CheckReport gap = CheckRecording(FixturePath("recordings/fault_tf_gap.mcap"), {}, options);
   EXPECT_TRUE(gap.Has(ProblemKind::kTfMissing));
   EXPECT_TRUE(gap.Has(ProblemKind::kTfLate));
+  EXPECT_TRUE(CheckRecording(FixturePath("recordings/fault_two_scan_topics.mcap"), {}, options)
+                  .Has(ProblemKind::kSeveralScanTopics));
   EXPECT_TRUE(
-      CheckRecording(kFixtures + "fault_two_scan_topics.mcap", {}, options).Has(ProblemKind::kSeveralScanTopics));
-  EXPECT_TRUE(CheckRecording(kFixtures + "fault_inf_nan.mcap", {}, options).Has(ProblemKind::kRangeMaxTooLow));
+      CheckRecording(FixturePath("recordings/fault_inf_nan.mcap"), {}, options).Has(ProblemKind::kRangeMaxTooLow));
 }
 
 // A robot driving along x at 0.5 m/s, tf at 20 Hz, a laser at the base and scans at 5 Hz.

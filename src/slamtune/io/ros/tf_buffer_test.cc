@@ -5,17 +5,14 @@
 
 #include <cmath>
 
+#include "slamtune/io/testing/planar_transform.h"
+
 namespace slamtune::io {
 namespace {
 
-constexpr std::int64_t kSecond = 1000000000;
+using testing::Planar;
 
-RigidTransform3 Planar(double x, double y, double yaw, double z = 0.0) {
-  RigidTransform3 t;
-  t.translation = {x, y, z};
-  t.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-  return t;
-}
+constexpr std::int64_t kSecond = 1000000000;
 
 void ExpectPose(const Pose2& p, double x, double y, double theta, double tol = 1e-12) {
   EXPECT_NEAR(p.x, x, tol);
