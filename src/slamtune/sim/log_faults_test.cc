@@ -7,9 +7,12 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/sim/testing/odometry_faults.h"
 
 namespace slamtune::sim {
 namespace {
+
+using testing::Fault;
 
 constexpr double kStep = 0.05;  // m between consecutive robot poses
 
@@ -43,15 +46,6 @@ io::LaserLog SyntheticLog(std::size_t poses, double curvature = 0.0, const Pose2
     pose = Compose(pose, Pose2{kStep, 0.0, turn});
   }
   return log;
-}
-
-OdometryFault Fault(OdometryFaultKind kind, double start_m, double length_m, double magnitude = 0.0) {
-  OdometryFault fault;
-  fault.kind = kind;
-  fault.start_m = start_m;
-  fault.length_m = length_m;
-  fault.magnitude = magnitude;
-  return fault;
 }
 
 // Robot poses of the log in file order (ODOM and scans alternate).
