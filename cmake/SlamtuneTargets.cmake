@@ -13,6 +13,14 @@ function(slamtune_set_compile_options target)
   endif()
 endfunction()
 
+# With SLAMTUNE_UNITY, `target` compiles as unity sources of SLAMTUNE_UNITY_BATCH_SIZE files each. The
+# file-local names (anonymous namespaces, static functions) of one target's sources must then differ.
+function(slamtune_set_unity target)
+  if(SLAMTUNE_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${SLAMTUNE_UNITY_BATCH_SIZE})
+  endif()
+endfunction()
+
 # slamtune_folder(name [DEPENDS folders...] [TEST_DEPENDS folders...] [EXTERNAL packages...])
 #   DEPENDS       the folders the library's own code includes (declared before it, so layers go one way);
 #   TEST_DEPENDS  further folders that only its tests and testing/ helpers include;
@@ -48,6 +56,7 @@ function(slamtune_folder name)
   if(srcs)
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
     slamtune_set_compile_options(${target})
+    slamtune_set_unity(${target})
   endif()
   # The folder and every folder it uses, directly or through another.
   set(closure ${name})
@@ -100,6 +109,7 @@ function(slamtune_folder_tests name)
     SLAMTUNE_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
     SLAMTUNE_DATASETS_DIR="${CMAKE_SOURCE_DIR}/../shared/datasets")
   slamtune_set_compile_options(${name}_tests)
+  slamtune_set_unity(${name}_tests)
   gtest_discover_tests(${name}_tests
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
     DISCOVERY_TIMEOUT 60

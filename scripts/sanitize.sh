@@ -18,10 +18,11 @@ regex="${1:-}"
 start=$(date +%s)
 
 # -O1, as the sanitizers' documentation advises: it compiles about a third faster than -O2 and
-# keeps the stack traces exact; the line tables come from SLAMTUNE_SANITIZE (-g1).
+# keeps the stack traces exact; the line tables come from SLAMTUNE_SANITIZE (-g1). Unity sources
+# (SLAMTUNE_UNITY), as in build/: the suites compile in far less time.
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
   nice cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
-    -DSLAMTUNE_SANITIZE=ON \
+    -DSLAMTUNE_SANITIZE=ON -DSLAMTUNE_UNITY=ON \
     -DSLAMTUNE_BUILD_BENCH=OFF -DSLAMTUNE_WITH_MPI=OFF >/dev/null
 fi
 if [[ -z "$regex" ]]; then

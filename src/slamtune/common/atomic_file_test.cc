@@ -38,7 +38,7 @@ TEST(AtomicFile, UnwritablePlaceIsAnInputErrorNamingThePath) {
     WriteFileAtomically("/nonexistent-folder/out.yaml", "x");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("/nonexistent-folder/out.yaml: cannot write"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("/nonexistent-folder/out.yaml: cannot write"));
   }
   const fs::path dir = fs::temp_directory_path() / ("slamtune_atomic_dir_" + std::to_string(getpid()));
   fs::create_directories(dir / "a_folder");

@@ -12,7 +12,7 @@ TEST(SignalNoticeDeathTest, SigintPrintsTheLineAndEndsBySigint) {
         SignalNotice notice("continue with: slamtune optimize --resume out");
         raise(SIGINT);
       },
-      testing::KilledBySignal(SIGINT),
+      ::testing::KilledBySignal(SIGINT),
       "^slamtune: stopped by SIGINT; continue with: slamtune optimize --resume out\n$");
 }
 
@@ -22,7 +22,7 @@ TEST(SignalNoticeDeathTest, SigtermPrintsTheLineAndEndsBySigterm) {
         SignalNotice notice("go on");
         raise(SIGTERM);
       },
-      testing::KilledBySignal(SIGTERM), "^slamtune: stopped by SIGTERM; go on\n$");
+      ::testing::KilledBySignal(SIGTERM), "^slamtune: stopped by SIGTERM; go on\n$");
 }
 
 TEST(SignalNoticeDeathTest, PreviousHandlersReturnAfterwards) {
@@ -31,7 +31,7 @@ TEST(SignalNoticeDeathTest, PreviousHandlersReturnAfterwards) {
         { SignalNotice notice("not shown"); }
         raise(SIGTERM);
       },
-      testing::KilledBySignal(SIGTERM), "^$");
+      ::testing::KilledBySignal(SIGTERM), "^$");
 }
 
 }  // namespace

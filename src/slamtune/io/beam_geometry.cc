@@ -11,13 +11,6 @@
 namespace slamtune::io {
 namespace {
 
-bool IsNoReturn(double r, double max_range) { return !std::isfinite(r) || r < 0.0 || r >= max_range; }
-
-std::size_t CountNoReturns(const LaserScanRecord& scan) {
-  return static_cast<std::size_t>(
-      std::count_if(scan.ranges.begin(), scan.ranges.end(), [&](double r) { return IsNoReturn(r, scan.max_range); }));
-}
-
 // Distinct geometries of the log, most scans first (stable: first seen wins a tie).
 std::vector<BeamReport::Seen> DistinctGeometries(const LaserLog& log) {
   std::vector<BeamReport::Seen> seen;

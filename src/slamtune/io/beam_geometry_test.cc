@@ -15,7 +15,7 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 // A scan whose reading i is 1000 * beam angle in degrees + 100 (so each reading names its
 // angle), max range 80.
-LaserScanRecord Scan(std::size_t n, double first_deg, double step_deg) {
+LaserScanRecord ScanRecord(std::size_t n, double first_deg, double step_deg) {
   LaserScanRecord s;
   s.angle_min = first_deg * kDeg;
   s.angle_increment = step_deg * kDeg;
@@ -32,7 +32,7 @@ LaserLog LogOf(std::vector<LaserScanRecord> scans) {
 }
 
 TEST(BeamGeometry, OneGeometryLeavesTheLogUntouched) {
-  LaserLog log = LogOf({Scan(181, -90, 1), Scan(181, -90, 1)});
+  LaserLog log = LogOf({ScanRecord(181, -90, 1), ScanRecord(181, -90, 1)});
   const LaserLog before = log;
   HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   EXPECT_EQ(log.scans[1].ranges, before.scans[1].ranges);
@@ -48,12 +48,12 @@ TEST(BeamGeometry, AlternatingCountsAndStartAnglesAreResampledOntoTheMostCommon)
   std::vector<LaserScanRecord> scans;
   for (int k = 0; k < 12; ++k) {
     if (k % 2 == 0) {
-      scans.push_back(Scan(181, -90, 1));
+      scans.push_back(ScanRecord(181, -90, 1));
     } else {
-      scans.push_back(Scan(180, k % 4 == 1 ? -90 : -89.5, 1));
+      scans.push_back(ScanRecord(180, k % 4 == 1 ? -90 : -89.5, 1));
     }
   }
-  scans.push_back(Scan(181, -90, 1));  // 7 of 13 are the reference geometry
+  scans.push_back(ScanRecord(181, -90, 1));  // 7 of 13 are the reference geometry
   LaserLog log = LogOf(scans);
   HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   ASSERT_EQ(log.beams.geometries.size(), 3u);
@@ -82,7 +82,8 @@ TEST(BeamGeometry, AlternatingCountsAndStartAnglesAreResampledOntoTheMostCommon)
 }
 
 TEST(BeamGeometry, NodeKeepsEveryScanAsRecordedAndCountsWhatTheNodeDrops) {
-  LaserLog log = LogOf({Scan(181, -90, 1), Scan(180, -90, 1), Scan(181, -90, 1), Scan(182, -90, 1)});
+  LaserLog log =
+      LogOf({ScanRecord(181, -90, 1), ScanRecord(180, -90, 1), ScanRecord(181, -90, 1), ScanRecord(182, -90, 1)});
   HarmonizeBeams(BeamPolicy::kNode, &log);
   EXPECT_EQ(log.scans[1].ranges.size(), 180u);
   EXPECT_EQ(log.beams.policy, "node");
@@ -120,7 +121,7 @@ TEST(BeamGeometry, ExpectedReadingsFollowEachNodesRule) {
   EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamKarto, half), 181u);
   EXPECT_EQ(ExpectedReadings(KartoLaserRule::kSlamToolbox, half), 181u);
   // Whole logs: slam_karto drops every scan of the 360 laser, slam_toolbox none.
-  LaserLog log = LogOf({Scan(181, -90, 1)});
+  LaserLog log = LogOf({ScanRecord(181, -90, 1)});
   scan.ranges.assign(360, 1.0);
   log.scans = {scan, scan, scan};
   HarmonizeBeams(BeamPolicy::kNode, &log);
@@ -130,9 +131,9 @@ TEST(BeamGeometry, ExpectedReadingsFollowEachNodesRule) {
 }
 
 TEST(BeamGeometry, SameCountOtherAnglesAreResampledFloatNoiseIsNot) {
-  LaserScanRecord noisy = Scan(181, -90, 1);
+  LaserScanRecord noisy = ScanRecord(181, -90, 1);
   noisy.angle_min = static_cast<double>(static_cast<float>(noisy.angle_min));  // float32 rounding
-  LaserLog log = LogOf({Scan(181, -90, 1), Scan(181, -90, 1), noisy, Scan(181, -80, 1)});
+  LaserLog log = LogOf({ScanRecord(181, -90, 1), ScanRecord(181, -90, 1), noisy, ScanRecord(181, -80, 1)});
   HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   EXPECT_EQ(log.beams.geometries.size(), 2u);
   EXPECT_EQ(log.beams.scans_resampled, 1u);
@@ -144,7 +145,7 @@ TEST(BeamGeometry, SameCountOtherAnglesAreResampledFloatNoiseIsNot) {
 }
 
 TEST(BeamGeometry, HarmonizeIsIdempotent) {
-  LaserLog log = LogOf({Scan(181, -90, 1), Scan(180, -90, 1), Scan(181, -90, 1)});
+  LaserLog log = LogOf({ScanRecord(181, -90, 1), ScanRecord(180, -90, 1), ScanRecord(181, -90, 1)});
   HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
   const LaserLog once = log;
   HarmonizeBeams(BeamPolicy::kNearestBeam, &log);
@@ -163,7 +164,7 @@ TEST(BeamGeometry, PolicyNamesParseAndUnknownIsAnInputError) {
     ParseBeamPolicy("nearest");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("--beams 'nearest'"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("--beams 'nearest'"));
   }
 }
 

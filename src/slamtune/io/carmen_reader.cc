@@ -20,15 +20,10 @@ constexpr std::size_t kMaxSkippedReasons = 10;  // reasons kept under --lenient
 constexpr double kClusterMinFraction = 0.0005;  // rule 4: >= 0.05 % of the FLASER readings ...
 constexpr double kClusterBand = 0.01;           // ... within 1 % below the largest reading
 
-bool StartsWith(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
-bool EndsWith(std::string_view s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
-}
-
 // Rule 2 of the no-return precedence (carmen_reader.h).
 bool IsLaserMaxRangeParam(std::string_view name) {
   if (name.find("rear") != std::string_view::npos) return false;
-  return EndsWith(name, "laser_max_range") || name == "robot_front_laser_max";
+  return name.ends_with("laser_max_range") || name == "robot_front_laser_max";
 }
 
 // Mounting-offset PARAM prefix of RAWLASER1..4 (carmen_reader.h).
@@ -53,7 +48,7 @@ bool IsOffsetParam(std::string_view name) {
 }
 
 bool IsRawLaser(std::string_view type) {
-  return type.size() == 9 && StartsWith(type, "RAWLASER") && type[8] >= '1' && type[8] <= '4';
+  return type.size() == 9 && type.starts_with("RAWLASER") && type[8] >= '1' && type[8] <= '4';
 }
 
 // State carried through one read.
@@ -241,7 +236,8 @@ void ApplyNoReturnRule(const LogReadOptions& options, ReadState* st) {
   }
 }
 
-LaserLog Read(LineReader& reader, const LogReadOptions& options) {
+// The log of every line of `reader`, by the rules of carmen_reader.h.
+LaserLog ReadLines(LineReader& reader, const LogReadOptions& options) {
   ReadState st;
   LaserLog& log = st.log;
   log.path = reader.name();
@@ -305,14 +301,14 @@ LaserLog Read(LineReader& reader, const LogReadOptions& options) {
 LaserLog ReadCarmenLog(const std::string& path, const LogReadOptions& options) {
   options.Validate();
   LineReader reader(path);
-  return Read(reader, options);
+  return ReadLines(reader, options);
 }
 
 LaserLog ReadCarmenLog(std::istream& in, const std::string& name, const LogReadOptions& options) {
   options.Validate();
   if (!in.good()) throw InputError(name, 0, "cannot read the stream");
   LineReader reader(&in, name);
-  return Read(reader, options);
+  return ReadLines(reader, options);
 }
 
 }  // namespace slamtune::io

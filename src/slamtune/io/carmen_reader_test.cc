@@ -2,7 +2,6 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -12,12 +11,14 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
+#include "slamtune/common/testing/temp_dir.h"
 #include "slamtune/io/carmen_records.h"
 
 namespace slamtune::io {
 namespace {
 
 using slamtune::testing::ErrorMessageOf;
+using slamtune::testing::TempFilePath;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
@@ -40,17 +41,12 @@ LaserLog ReadText(const std::string& text, const LogReadOptions& options = {}) {
 }
 
 // The message of the InputError reading `text` as a log throws.
-std::string ErrorOf(const std::string& text, const LogReadOptions& options = {}) {
+std::string ReadError(const std::string& text, const LogReadOptions& options = {}) {
   return ErrorMessageOf([&] { ReadText(text, options); });
 }
 
-std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("slamtune_carmen_test_" + std::to_string(::getpid()) + "_" + name))
-      .string();
-}
-
 std::string WriteGzip(const std::string& name, const std::string& text) {
-  const std::string path = TempPath(name);
+  const std::string path = TempFilePath("carmen_test", name);
   gzFile gz = gzopen(path.c_str(), "wb9");
   EXPECT_NE(gz, nullptr);
   EXPECT_EQ(gzwrite(gz, text.data(), static_cast<unsigned>(text.size())), static_cast<int>(text.size()));
@@ -163,7 +159,7 @@ TEST(CarmenReaderTest, RawLaserHeadingInterpolatesAcrossPi) {
 }
 
 TEST(CarmenReaderTest, RawLaserWithoutOdometryIsAnError) {
-  EXPECT_EQ(ErrorOf("RAWLASER1 0 -1.5 1.0 1.0 20.0 0.01 0 2 1 2 0 10.5 nohost 10.5\n"),
+  EXPECT_EQ(ReadError("RAWLASER1 0 -1.5 1.0 1.0 20.0 0.01 0 2 1 2 0 10.5 nohost 10.5\n"),
             "mem.clf: RAWLASER scans carry no pose and the log has no ODOM record to interpolate one from");
 }
 
@@ -182,7 +178,7 @@ TEST(CarmenReaderTest, RawLaserScansOutsideTheOdometrySpanAreCountedNotClamped) 
 
 TEST(CarmenReaderTest, NoRawLaserScanWithinTheOdometrySpanIsAnError) {
   const std::string raw = "RAWLASER1 0 -1.5 3.0 1.0 20.0 0.01 0 4 1 2 3 4 0 ";
-  EXPECT_EQ(ErrorOf("ODOM 0 0 0 0 0 0 10.0 h 10\n" + raw + "12 h 12\n" + raw + "13 h 13\n"),
+  EXPECT_EQ(ReadError("ODOM 0 0 0 0 0 0 10.0 h 10\n" + raw + "12 h 12\n" + raw + "13 h 13\n"),
             "mem.clf: none of the 2 RAWLASER scans lies within the time span of the ODOM records, so none can be "
             "posed (first: line 2 at 12 s; ODOM 10 .. 10 s)");
 }
@@ -202,19 +198,19 @@ std::string RobotLaser181(const std::string& start, const std::string& fov, cons
 }
 
 TEST(CarmenReaderTest, RobotLaserAnglesInDegreesAreRefusedNamingTheField) {
-  EXPECT_EQ(ErrorOf(RobotLaser181("-90", "180", "1")),
+  EXPECT_EQ(ReadError(RobotLaser181("-90", "180", "1")),
             "mem.clf:1: ROBOTLASER1 start_angle (field 3) -90 is beyond +-2pi: angles must be radians (written in "
             "degrees?)");
-  EXPECT_EQ(ErrorOf("# header\n" + RobotLaser181("-1.570796", "100", "0.017453")),
+  EXPECT_EQ(ReadError("# header\n" + RobotLaser181("-1.570796", "100", "0.017453")),
             "mem.clf:2: ROBOTLASER1 fov (field 4) 100 (5730 deg) is more than a full turn: angles must be radians "
             "(written in degrees?)");
-  EXPECT_EQ(ErrorOf(RobotLaser181("-1.570796", "3.141593", "1")),
+  EXPECT_EQ(ReadError(RobotLaser181("-1.570796", "3.141593", "1")),
             "mem.clf:1: ROBOTLASER1 angular_res (field 5): 181 beams 1 rad apart span 180 rad (10313 deg), more "
             "than a full turn: angles must be radians (written in degrees?)");
 }
 
 TEST(CarmenReaderTest, RobotLaserFovThatContradictsTheStepsIsRefused) {
-  EXPECT_EQ(ErrorOf(RobotLaser181("-1.570796", "3.141593", "0.008727")),
+  EXPECT_EQ(ReadError(RobotLaser181("-1.570796", "3.141593", "0.008727")),
             "mem.clf:1: ROBOTLASER1 fov (field 4) 3.141593 rad contradicts 181 readings at angular_res 0.008727 rad "
             "(they span 1.570860 rad)");
   // (n - 1) and n steps both match a fov of pi: 181 and 180 readings at 1 degree.
@@ -327,46 +323,46 @@ TEST(CarmenReaderTest, NoReturnPrecedence) {
   EXPECT_EQ(forced.no_return_rule, "--no-return");
   EXPECT_EQ(forced.total_no_returns, 3600u);  // 1.0 >= 1.0
   options.no_return_value = -1;
-  EXPECT_EQ(ErrorOf(text, options),
+  EXPECT_EQ(ReadError(text, options),
             "no_return_value = -1: must be 0 (detect from the log) or a positive finite range in metres");
 }
 
 TEST(CarmenReaderTest, WrongReadingCountMessage) {
   std::string bad = Flaser(2.0);
   bad.replace(bad.find(" 2.5"), 4, "");  // drop one reading
-  EXPECT_EQ(ErrorOf(Flaser(1.0) + "# c\n" + bad),
+  EXPECT_EQ(ReadError(Flaser(1.0) + "# c\n" + bad),
             "mem.clf:3: FLASER declares 180 readings but has 179 numbers before the pose");
-  EXPECT_EQ(ErrorOf("FLASER 3 1 2 0 0 0 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError("FLASER 3 1 2 0 0 0 0 0 0 1 h 1\n"),
             "mem.clf:1: FLASER declares 3 readings but has 2 numbers before the pose");
-  EXPECT_EQ(ErrorOf("FLASER 3 1 2 3 0 0 0\n"),
+  EXPECT_EQ(ReadError("FLASER 3 1 2 3 0 0 0\n"),
             "mem.clf:1: FLASER declares 3 readings but the line has only 6 fields after the count (12 needed)");
-  EXPECT_EQ(ErrorOf("FLASER 0 0 0 0 0 0 0 1 h 1\n"), "mem.clf:1: FLASER declares 0 readings");
-  EXPECT_EQ(ErrorOf("FLASER x\n"), "mem.clf:1: FLASER num_readings (field 2) is not a count: 'x'");
+  EXPECT_EQ(ReadError("FLASER 0 0 0 0 0 0 0 1 h 1\n"), "mem.clf:1: FLASER declares 0 readings");
+  EXPECT_EQ(ReadError("FLASER x\n"), "mem.clf:1: FLASER num_readings (field 2) is not a count: 'x'");
 }
 
 TEST(CarmenReaderTest, NonNumberAndNonFiniteFields) {
-  EXPECT_EQ(ErrorOf("FLASER 2 1.0 abc 0 0 0 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError("FLASER 2 1.0 abc 0 0 0 0 0 0 1 h 1\n"),
             "mem.clf:1: FLASER reading 2 (field 4) is not a number: 'abc'");
-  EXPECT_EQ(ErrorOf("FLASER 2 1.0 2.0 0 nan 0 0 0 0 1 h 1\n"), "mem.clf:1: FLASER y (field 6) is not finite: nan");
-  EXPECT_EQ(ErrorOf("FLASER 2 1.0 2.0 0 0 0 0 0 0 inf h 1\n"),
+  EXPECT_EQ(ReadError("FLASER 2 1.0 2.0 0 nan 0 0 0 0 1 h 1\n"), "mem.clf:1: FLASER y (field 6) is not finite: nan");
+  EXPECT_EQ(ReadError("FLASER 2 1.0 2.0 0 0 0 0 0 0 inf h 1\n"),
             "mem.clf:1: FLASER ipc_timestamp (field 11) is not finite: inf");
-  EXPECT_EQ(ErrorOf("ODOM 1 2 3 0 0 0 1 h\n"),
+  EXPECT_EQ(ReadError("ODOM 1 2 3 0 0 0 1 h\n"),
             "mem.clf:1: ODOM has 9 fields, expects 10 (ODOM x y theta tv rv accel ipc_timestamp ipc_hostname "
             "logger_timestamp)");
-  EXPECT_EQ(ErrorOf("ODOM 1 2 x 0 0 0 1 h 1\n"), "mem.clf:1: ODOM theta (field 4) is not a number: 'x'");
-  EXPECT_EQ(ErrorOf("ODOM 1 2 8.8e125 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError("ODOM 1 2 x 0 0 0 1 h 1\n"), "mem.clf:1: ODOM theta (field 4) is not a number: 'x'");
+  EXPECT_EQ(ReadError("ODOM 1 2 8.8e125 0 0 0 1 h 1\n"),
             "mem.clf:1: ODOM theta (field 4) is not a heading in radians: 8.8e125 (|theta| must be <= 1e6)");
-  EXPECT_EQ(ErrorOf("FLASER 2 1.0 2.0 0 0 -2e6 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError("FLASER 2 1.0 2.0 0 0 -2e6 0 0 0 1 h 1\n"),
             "mem.clf:1: FLASER theta (field 7) is not a heading in radians: -2e6 (|theta| must be <= 1e6)");
-  EXPECT_EQ(ErrorOf("PARAM a b\n"),
+  EXPECT_EQ(ReadError("PARAM a b\n"),
             "mem.clf:1: PARAM has 3 fields, expects at least 5 (PARAM name value ipc_hostname timestamp)");
-  EXPECT_EQ(ErrorOf("PARAM laser_max_range big h 0\n" + Flaser(1)),
+  EXPECT_EQ(ReadError("PARAM laser_max_range big h 0\n" + Flaser(1)),
             "mem.clf:1: PARAM laser_max_range value 'big' is not a finite number");
-  EXPECT_EQ(ErrorOf("ROBOTLASER1 0 -1.5 3.0 1.0 30.0 0.01 0 4 1.0 2.0 3.0 4.0 0 0 0 0 0 0 0 0 0 0 0 0 1 h 1 9\n"),
+  EXPECT_EQ(ReadError("ROBOTLASER1 0 -1.5 3.0 1.0 30.0 0.01 0 4 1.0 2.0 3.0 4.0 0 0 0 0 0 0 0 0 0 0 0 0 1 h 1 9\n"),
             "mem.clf:1: ROBOTLASER1 declares 4 readings and 0 remissions, so expects 28 fields, but has 29");
-  EXPECT_EQ(ErrorOf("ROBOTLASER1 0 -1.5 3.0 1.0 30.0 0.01 0 4 1.0 2.0 3.0 2 0.5 0 0 0 0 0 0 0 0 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError("ROBOTLASER1 0 -1.5 3.0 1.0 30.0 0.01 0 4 1.0 2.0 3.0 2 0.5 0 0 0 0 0 0 0 0 0 0 0 1 h 1\n"),
             "mem.clf:1: ROBOTLASER1 declares 4 readings but field 14 after them is not a remission count: '0.5'");
-  EXPECT_EQ(ErrorOf("ROBOTLASER1 0 -1.5 3.0 1.0 -3 0.01 0 1 1.0 0 0 0 0 0 0 0 0 0 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError("ROBOTLASER1 0 -1.5 3.0 1.0 -3 0.01 0 1 1.0 0 0 0 0 0 0 0 0 0 0 0 0 1 h 1\n"),
             "mem.clf:1: ROBOTLASER1 max_range (field 6) must be positive: -3");
 }
 
@@ -396,13 +392,13 @@ TEST(CarmenReaderTest, LenientSkipsAndCountsMalformedRecords) {
 }
 
 TEST(CarmenReaderTest, EmptyOrScanlessInputIsAnError) {
-  EXPECT_EQ(ErrorOf(""), "mem.clf: empty file (no records)");
-  EXPECT_EQ(ErrorOf("\n\n"), "mem.clf: empty file (no records)");
-  EXPECT_EQ(ErrorOf("# only\nODOM 0 0 0 0 0 0 1 h 1\n"),
+  EXPECT_EQ(ReadError(""), "mem.clf: empty file (no records)");
+  EXPECT_EQ(ReadError("\n\n"), "mem.clf: empty file (no records)");
+  EXPECT_EQ(ReadError("# only\nODOM 0 0 0 0 0 0 1 h 1\n"),
             "mem.clf: no laser scans (FLASER, ROBOTLASER1 or RAWLASER1..4) in 2 lines");
   LogReadOptions lenient;
   lenient.lenient = true;
-  EXPECT_EQ(ErrorOf("FLASER 1 x 0 0 0 0 0 0 1 h 1\n", lenient),
+  EXPECT_EQ(ReadError("FLASER 1 x 0 0 0 0 0 0 1 h 1\n", lenient),
             "mem.clf: no laser scans (FLASER, ROBOTLASER1 or RAWLASER1..4) in 1 lines (1 skipped as malformed)");
   EXPECT_THAT([] { ReadText("x"); }, ThrowsMessage<InputError>(HasSubstr("no laser scans")));
 }
@@ -421,7 +417,7 @@ TEST(CarmenReaderTest, GzipAndPlainGiveIdenticalScans) {
   std::string text = "PARAM robot_frontlaser_offset 0.0 nohost 0\nODOM 0 0 0 0 0 0 0.5 h 0.5\n";
   for (int i = 0; i < 3000; ++i)
     text += Flaser(180, 1.0 + 0.001 * i, {0.01 * i, 0, 0.001 * i}, {0.01 * i, 0, 0.001 * i}, i);
-  const std::string plain = TempPath("plain.clf.gz");  // names do not decide the format
+  const std::string plain = TempFilePath("carmen_test", "plain.clf.gz");  // names do not decide the format
   std::ofstream(plain) << text;
   const std::string gz = WriteGzip("compressed.clf", text);
   const LaserLog a = ReadCarmenLog(plain);
@@ -438,7 +434,7 @@ TEST(CarmenReaderTest, GzipAndPlainGiveIdenticalScans) {
   }
   EXPECT_EQ(a.record_counts, b.record_counts);
   // Concatenated gzip members read as one stream.
-  const std::string two = TempPath("two_members.gz");
+  const std::string two = TempFilePath("carmen_test", "two_members.gz");
   std::ofstream(two, std::ios::binary) << ReadBytes(WriteGzip("m1.gz", Flaser(1.0)))
                                        << ReadBytes(WriteGzip("m2.gz", Flaser(2.0)));
   EXPECT_EQ(ReadCarmenLog(two).scans.size(), 2u);
@@ -448,7 +444,7 @@ TEST(CarmenReaderTest, TruncatedAndCorruptGzipAreErrors) {
   std::string text;
   for (int i = 0; i < 2000; ++i) text += Flaser(180, 1.0 + 0.37 * (i % 13), {}, {}, i);
   const std::string bytes = ReadBytes(WriteGzip("full.gz", text));
-  const std::string truncated = TempPath("truncated.gz");
+  const std::string truncated = TempFilePath("carmen_test", "truncated.gz");
   std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   try {
     ReadCarmenLog(truncated);
@@ -460,7 +456,7 @@ TEST(CarmenReaderTest, TruncatedAndCorruptGzipAreErrors) {
   }
   std::string damaged = bytes;
   damaged[damaged.size() - 8] = static_cast<char>(damaged[damaged.size() - 8] ^ 0x55);  // CRC-32 of the trailer
-  const std::string corrupt = TempPath("corrupt.gz");
+  const std::string corrupt = TempFilePath("carmen_test", "corrupt.gz");
   std::ofstream(corrupt, std::ios::binary) << damaged;
   EXPECT_THROW(
       {
@@ -472,7 +468,7 @@ TEST(CarmenReaderTest, TruncatedAndCorruptGzipAreErrors) {
         }
       },
       InputError);
-  const std::string trailing = TempPath("trailing.gz");
+  const std::string trailing = TempFilePath("carmen_test", "trailing.gz");
   std::ofstream(trailing, std::ios::binary) << bytes << "garbage";
   EXPECT_THAT([&] { ReadCarmenLog(trailing); },
               ThrowsMessage<InputError>(HasSubstr("unexpected data after the end of the gzip stream")));

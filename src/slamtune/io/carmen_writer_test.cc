@@ -15,9 +15,9 @@
 namespace slamtune::io {
 namespace {
 
-using testing::HasSubstr;
+using ::testing::HasSubstr;
 
-LaserScanRecord Flaser(std::size_t n, double time, const Pose2& pose) {
+LaserScanRecord FlaserRecord(std::size_t n, double time, const Pose2& pose) {
   LaserScanRecord scan;
   scan.kind = RecordKind::kFlaser;
   FlaserBeamGeometry(n, &scan.angle_min, &scan.angle_increment);
@@ -45,7 +45,7 @@ LaserLog SmallLog() {
   log.params = {{"laser_front_laser_max_range", "30"}, {"robot_frontlaser_offset", "0.0"}};
   log.odometry = {Odom(100.0, Pose2{0, 0, 0}), Odom(100.1, Pose2{0.05, 0.001, 0.002}),
                   Odom(100.2, Pose2{0.1, 0.002, -3.14159})};
-  log.scans = {Flaser(181, 100.0, Pose2{0, 0, 0}), Flaser(181, 100.2, Pose2{0.1, 0.002, -3.14159})};
+  log.scans = {FlaserRecord(181, 100.0, Pose2{0, 0, 0}), FlaserRecord(181, 100.2, Pose2{0.1, 0.002, -3.14159})};
   log.scans[1].ranges[5] = 30.0;  // a no-return
   return log;
 }
@@ -76,12 +76,13 @@ TEST(WriteCarmenLog, WritesHeaderParamsAndRecordsInTimeOrder) {
   // ODOM before FLASER at equal time, then by time.
   EXPECT_EQ(lines[first_record + 2],
             "ODOM 0.000000 0.000000 0.000000 0.500000 -0.250000 0.000000 100.000000 slamtune 0.000000");
-  EXPECT_THAT(lines[first_record + 3], testing::StartsWith("FLASER 181 1.000 1.037 1.074 "));
-  EXPECT_THAT(lines[first_record + 3],
-              testing::EndsWith(" 0.000000 0.000000 0.000000 0.000000 0.000000 0.000000 100.000000 slamtune 0.000000"));
-  EXPECT_THAT(lines[first_record + 4], testing::StartsWith("ODOM 0.050000 0.001000 0.002000 "));
-  EXPECT_THAT(lines[first_record + 5], testing::StartsWith("ODOM "));
-  EXPECT_THAT(lines[first_record + 6], testing::StartsWith("FLASER 181 "));
+  EXPECT_THAT(lines[first_record + 3], ::testing::StartsWith("FLASER 181 1.000 1.037 1.074 "));
+  EXPECT_THAT(
+      lines[first_record + 3],
+      ::testing::EndsWith(" 0.000000 0.000000 0.000000 0.000000 0.000000 0.000000 100.000000 slamtune 0.000000"));
+  EXPECT_THAT(lines[first_record + 4], ::testing::StartsWith("ODOM 0.050000 0.001000 0.002000 "));
+  EXPECT_THAT(lines[first_record + 5], ::testing::StartsWith("ODOM "));
+  EXPECT_THAT(lines[first_record + 6], ::testing::StartsWith("FLASER 181 "));
   EXPECT_EQ(lines.size(), first_record + 7);
 }
 
@@ -113,7 +114,7 @@ TEST(WriteCarmenLog, ReadsBackThroughTheReader) {
 
 TEST(WriteCarmenLog, OtherGeometriesBecomeRobotLaser1AndReadBackExactly) {
   LaserLog log;
-  LaserScanRecord scan = Flaser(240, 5.0, Pose2{1, 2, 0.5});
+  LaserScanRecord scan = FlaserRecord(240, 5.0, Pose2{1, 2, 0.5});
   scan.kind = RecordKind::kRobotLaser1;
   scan.angle_min = -DegToRad(120);
   scan.angle_increment = DegToRad(240) / 239;
@@ -140,21 +141,21 @@ TEST(WriteCarmenLog, RefusesWhatCarmenCannotCarryAndWritesNothing) {
   log.scans[1].ranges[3] = std::nan("");
   std::ostringstream out;
   EXPECT_THAT([&] { WriteCarmenLog(out, log); },
-              testing::ThrowsMessage<InputError>(HasSubstr("laser scan 1: reading 3 is nan")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("laser scan 1: reading 3 is nan")));
   EXPECT_TRUE(out.str().empty());
 
   log = SmallLog();
   log.scans[0].angle_increment = DegToRad(0.5);  // not the FLASER rule for 181 readings
   EXPECT_THAT([&] { WriteCarmenLog(out, log); },
-              testing::ThrowsMessage<InputError>(HasSubstr("cannot write laser scan 0 as FLASER")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("cannot write laser scan 0 as FLASER")));
 
   log = SmallLog();
   log.params["bad name"] = "1";
-  EXPECT_THAT([&] { WriteCarmenLog(out, log); }, testing::ThrowsMessage<InputError>(HasSubstr("PARAM 'bad name'")));
+  EXPECT_THAT([&] { WriteCarmenLog(out, log); }, ::testing::ThrowsMessage<InputError>(HasSubstr("PARAM 'bad name'")));
 
   log = SmallLog();
   log.odometry[2].pose.x = INFINITY;
-  EXPECT_THAT([&] { WriteCarmenLog(out, log); }, testing::ThrowsMessage<InputError>(HasSubstr("ODOM record 2")));
+  EXPECT_THAT([&] { WriteCarmenLog(out, log); }, ::testing::ThrowsMessage<InputError>(HasSubstr("ODOM record 2")));
   EXPECT_TRUE(out.str().empty());
 }
 
@@ -162,16 +163,16 @@ TEST(CarmenWriteOptions, ValidateNamesFieldValueAndRule) {
   CarmenWriteOptions options;
   options.hostname = "two words";
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(HasSubstr("hostname = 'two words': must be one non-empty word")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("hostname = 'two words': must be one non-empty word")));
   options = CarmenWriteOptions();
   options.range_decimals = 12;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(HasSubstr("range_decimals = 12: must be in [0, 9]")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("range_decimals = 12: must be in [0, 9]")));
 }
 
 TEST(WriteCarmenLog, UnwritablePathIsAnInputError) {
   EXPECT_THAT([&] { WriteCarmenLog("/nonexistent-folder/x.clf", SmallLog()); },
-              testing::ThrowsMessage<InputError>(HasSubstr("/nonexistent-folder/x.clf: cannot write")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("/nonexistent-folder/x.clf: cannot write")));
 }
 
 // Convert makes every scan ROBOTLASER1; fault keeps FLASER scans. Either way non-finite readings
@@ -180,7 +181,7 @@ TEST(WriteCarmenLog, UnwritablePathIsAnInputError) {
 TEST(PrepareForCarmen, MakesAnyLogWritableAndKeepsFlaserOnRequest) {
   LaserLog log = SmallLog();
   log.scans[0].laser_offset = Pose2{0.2, -0.1, 0.05};
-  LaserScanRecord ros = Flaser(181, 100.4, Pose2{0.2, 0.0, 0.0});
+  LaserScanRecord ros = FlaserRecord(181, 100.4, Pose2{0.2, 0.0, 0.0});
   ros.kind = RecordKind::kRosLaserScan;
   ros.max_range = std::numeric_limits<double>::infinity();
   ros.ranges[3] = std::numeric_limits<double>::infinity();

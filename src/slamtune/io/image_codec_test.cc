@@ -17,7 +17,7 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 // Error text of decoding `bytes`, and what was printed on stderr meanwhile.
-std::string ErrorOf(const std::string& bytes, std::string* printed = nullptr) {
+std::string DecodeError(const std::string& bytes, std::string* printed = nullptr) {
   ::testing::internal::CaptureStderr();
   const std::string what = ErrorMessageOf([&] { DecodeGreyImage(bytes, "m.img", ""); });
   const std::string err = ::testing::internal::GetCapturedStderr();
@@ -44,17 +44,17 @@ TEST(ImageCodec, PgmCommentsTextFormAndASmallerMaxvalAreRead) {
 
 TEST(ImageCodec, TruncatedOrHugePgmIsOneErrorAndNothingPrinted) {
   std::string printed;
-  EXPECT_EQ(ErrorOf(EncodePgm(3, 2, kPixels).substr(0, 14), &printed),
+  EXPECT_EQ(DecodeError(EncodePgm(3, 2, kPixels).substr(0, 14), &printed),
             "m.img: truncated: the header declares 3 x 2 = 6 pixels, the file holds 3");
   EXPECT_EQ(printed, "");
-  EXPECT_EQ(ErrorOf("P5\n100000 100000\n255\n\x01\x02", &printed),
+  EXPECT_EQ(DecodeError("P5\n100000 100000\n255\n\x01\x02", &printed),
             "m.img: declares 100000 x 100000 pixels, more than the 1073741824 an image may have");
   EXPECT_EQ(printed, "");
-  EXPECT_EQ(ErrorOf("P5\n3 2\n65535\n"),
+  EXPECT_EQ(DecodeError("P5\n3 2\n65535\n"),
             "m.img: is a 1-channel 16-bit image; maps must be 8-bit greyscale with one "
             "channel (convert it first, e.g. `convert IN -colorspace Gray -depth 8 "
             "OUT.pgm`)");
-  EXPECT_EQ(ErrorOf("P5\n3"),
+  EXPECT_EQ(DecodeError("P5\n3"),
             "m.img: cannot decode the image: the PGM header (width, height, maxval) is truncated or "
             "not numbers");
 }
@@ -62,18 +62,18 @@ TEST(ImageCodec, TruncatedOrHugePgmIsOneErrorAndNothingPrinted) {
 TEST(ImageCodec, TruncatedOrHugePngIsOneErrorAndNothingPrinted) {
   const std::string png = EncodeGreyPng(3, 2, kPixels);
   std::string printed;
-  EXPECT_THAT(ErrorOf(png.substr(0, png.size() - 20), &printed),
+  EXPECT_THAT(DecodeError(png.substr(0, png.size() - 20), &printed),
               HasSubstr("m.img: cannot decode the image: truncated or corrupt PNG ("));
   EXPECT_EQ(printed, "");
   std::string huge = png;  // IHDR width and height 0x00ffffff: 2.8e14 pixels
   huge.replace(16, 8, std::string("\x00\xff\xff\xff\x00\xff\xff\xff", 8));
-  EXPECT_EQ(ErrorOf(huge, &printed),
+  EXPECT_EQ(DecodeError(huge, &printed),
             "m.img: declares 16777215 x 16777215 pixels, more than the 1073741824 an image "
             "may have");
   EXPECT_EQ(printed, "");
   std::string corrupt = png;  // a flipped byte inside the IDAT data: CRC mismatch
   corrupt[corrupt.size() - 16] ^= 0x55;
-  EXPECT_THAT(ErrorOf(corrupt, &printed), HasSubstr("truncated or corrupt PNG"));
+  EXPECT_THAT(DecodeError(corrupt, &printed), HasSubstr("truncated or corrupt PNG"));
   EXPECT_EQ(printed, "");
 }
 
@@ -96,15 +96,15 @@ TEST(ImageCodec, SizeBeyondWhatTheFileCanHoldIsRefusedBeforeAllocating) {
       "\x08\x00\x02\x00\x00\xd0\x00\x00M`\x86",
       35);
   std::string printed;
-  EXPECT_EQ(ErrorOf(png, &printed),
+  EXPECT_EQ(DecodeError(png, &printed),
             "m.img: truncated: the header declares 1 x 268435457 pixels (536870914 bytes of "
             "image data), more than the file's 35 bytes can hold compressed");
   EXPECT_EQ(printed, "");
   // Bit depth 0, which would make the data bound 0 bytes per row.
   std::string depth0 = png;
   depth0[24] = 0;
-  EXPECT_EQ(ErrorOf(depth0), "m.img: not a valid PNG: grey bit depth 0 (the PNG spec allows 1, 2, 4, 8, 16)");
-  EXPECT_EQ(ErrorOf("P2\n30000 30000\n255\n0 1 2\n"),
+  EXPECT_EQ(DecodeError(depth0), "m.img: not a valid PNG: grey bit depth 0 (the PNG spec allows 1, 2, 4, 8, 16)");
+  EXPECT_EQ(DecodeError("P2\n30000 30000\n255\n0 1 2\n"),
             "m.img: truncated: the header declares 30000 x 30000 = 900000000 pixels, the 6 bytes of text hold at "
             "most 3");
   // A blank map compresses near deflate's limit and still reads.
@@ -113,7 +113,7 @@ TEST(ImageCodec, SizeBeyondWhatTheFileCanHoldIsRefusedBeforeAllocating) {
 }
 
 TEST(ImageCodec, OtherFormatsAreNamed) {
-  EXPECT_EQ(ErrorOf("hello"), "m.img: not an image: no known image format signature (PGM or PNG expected)");
+  EXPECT_EQ(DecodeError("hello"), "m.img: not an image: no known image format signature (PGM or PNG expected)");
   EXPECT_THAT([] { DecodeGreyImage("P6\n1 1\n255\nabc", "m.img", ""); },
               ThrowsMessage<InputError>(HasSubstr("m.img: is a 3-channel 8-bit image (PPM); maps must be")));
 }

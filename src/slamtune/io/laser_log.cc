@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "slamtune/common/error.h"
@@ -36,6 +37,12 @@ std::string BeamGeometry::ToString() const {
 
 BeamGeometry GeometryOf(const LaserScanRecord& scan) {
   return {scan.ranges.size(), scan.angle_min, scan.angle_increment};
+}
+
+std::size_t CountNoReturns(const LaserScanRecord& scan) {
+  return static_cast<std::size_t>(std::count_if(scan.ranges.begin(), scan.ranges.end(), [&](double r) {
+    return !std::isfinite(r) || r < 0.0 || r >= scan.max_range;
+  }));
 }
 
 std::size_t CountRanges(const LaserLog& log) {

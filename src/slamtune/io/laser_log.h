@@ -73,6 +73,9 @@ BeamGeometry GeometryOf(const LaserScanRecord& scan);
 // record's ipc_timestamp rounded to the nanosecond (what a bag made from the log would carry).
 std::int64_t StampNs(const LaserScanRecord& scan);
 
+// The scan's no-returns as LaserScanRecord::no_returns counts them, against its max_range.
+std::size_t CountNoReturns(const LaserScanRecord& scan);
+
 // Readings of the log that are ranges: finite, above the scan's range_min and below its
 // max_range (not no-returns).
 struct LaserLog;

@@ -7,11 +7,12 @@
 #include <functional>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/fixtures.h"
 
 namespace slamtune::io {
 namespace {
 
-const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/recordings/";
+using slamtune::testing::FixturePath;
 
 // 200 scans at 5 Hz of a robot driving along x at 0.5 m/s, ODOM at 10 Hz with its speed;
 // readings up to 20 m of a 30 m laser.
@@ -49,7 +50,7 @@ std::vector<std::string> Kinds(const CheckReport& report) {
 TEST(LogCheck, CleanLogHasNoProblem) {
   const CheckReport report = CheckLog(CleanLog());
   EXPECT_TRUE(report.ok()) << FormatCheckReport(report);
-  EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("verdict: no problem found"));
+  EXPECT_THAT(FormatCheckReport(report), ::testing::HasSubstr("verdict: no problem found"));
 }
 
 struct Planted {
@@ -58,18 +59,18 @@ struct Planted {
   std::function<void(LaserLog*)> plant;
 };
 
-class LogCheckFinds : public testing::TestWithParam<Planted> {};
+class LogCheckFinds : public ::testing::TestWithParam<Planted> {};
 
 TEST_P(LogCheckFinds, ThePlantedFaultAndNothingElse) {
   LaserLog log = CleanLog();
   GetParam().plant(&log);
   const CheckReport report = CheckLog(log);
-  EXPECT_THAT(Kinds(report), testing::ElementsAre(ProblemKindName(GetParam().kind))) << FormatCheckReport(report);
+  EXPECT_THAT(Kinds(report), ::testing::ElementsAre(ProblemKindName(GetParam().kind))) << FormatCheckReport(report);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Faults, LogCheckFinds,
-    testing::Values(
+    ::testing::Values(
         Planted{"ScanGap", ProblemKind::kScanGap,
                 [](LaserLog* log) { log->scans.erase(log->scans.begin() + 50, log->scans.begin() + 60); }},
         Planted{"StampBackward", ProblemKind::kScanStampBackward,
@@ -113,7 +114,7 @@ INSTANTIATE_TEST_SUITE_P(
                   // Reversing for 10 s, written by a logger that integrated |tv|: poses move forward.
                   for (std::size_t k = 100; k < 200; ++k) log->odometry[k].tv = -0.5;
                 }}),
-    [](const testing::TestParamInfo<Planted>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<Planted>& info) { return std::string(info.param.name); });
 
 TEST(LogCheck, ProblemsListTheirFirstScansAndTimes) {
   LaserLog log = CleanLog();
@@ -123,19 +124,21 @@ TEST(LogCheck, ProblemsListTheirFirstScansAndTimes) {
   EXPECT_EQ(report.problems[0].count, 1u);
   EXPECT_EQ(report.problems[0].scans, (std::vector<std::size_t>{50}));
   EXPECT_DOUBLE_EQ(report.problems[0].times_s[0], 100.0 + 0.2 * 60);
-  EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("at scan 50 (112.000 s)"));
+  EXPECT_THAT(FormatCheckReport(report), ::testing::HasSubstr("at scan 50 (112.000 s)"));
 }
 
 TEST(LogCheck, RecordingFaultsAreFoundInTheFixtureBags) {
   const CheckOptions options;
-  EXPECT_TRUE(CheckRecording(kFixtures + "office_zstd.mcap", {}, options).ok());
-  EXPECT_TRUE(CheckRecording(kFixtures + "fault_no_tf_static.mcap", {}, options).Has(ProblemKind::kNoLaserOffset));
-  const CheckReport gap = CheckRecording(kFixtures + "fault_tf_gap.mcap", {}, options);
+  EXPECT_TRUE(CheckRecording(FixturePath("recordings/office_zstd.mcap"), {}, options).ok());
+  EXPECT_TRUE(
+      CheckRecording(FixturePath("recordings/fault_no_tf_static.mcap"), {}, options).Has(ProblemKind::kNoLaserOffset));
+  const CheckReport gap = CheckRecording(FixturePath("recordings/fault_tf_gap.mcap"), {}, options);
   EXPECT_TRUE(gap.Has(ProblemKind::kTfMissing));
   EXPECT_TRUE(gap.Has(ProblemKind::kTfLate));
+  EXPECT_TRUE(CheckRecording(FixturePath("recordings/fault_two_scan_topics.mcap"), {}, options)
+                  .Has(ProblemKind::kSeveralScanTopics));
   EXPECT_TRUE(
-      CheckRecording(kFixtures + "fault_two_scan_topics.mcap", {}, options).Has(ProblemKind::kSeveralScanTopics));
-  EXPECT_TRUE(CheckRecording(kFixtures + "fault_inf_nan.mcap", {}, options).Has(ProblemKind::kRangeMaxTooLow));
+      CheckRecording(FixturePath("recordings/fault_inf_nan.mcap"), {}, options).Has(ProblemKind::kRangeMaxTooLow));
 }
 
 // A robot driving along x at 0.5 m/s, tf at 20 Hz, a laser at the base and scans at 5 Hz.
@@ -172,10 +175,11 @@ TEST(LogCheck, ATfLoopIsAProblemNamingItsFrames) {
   loop.tf.Add("laser", "odom", 0, RigidTransform3{}, true);
   const CheckReport report = CheckRecordingContents(loop, {});
   EXPECT_EQ(Kinds(report), std::vector<std::string>{"tf_loop"});
-  EXPECT_THAT(report.problems[0].what, testing::HasSubstr("the tf tree has a loop, odom -> base_link -> laser -> odom: "
-                                                          "odom is its own ancestor"));
-  EXPECT_THAT(report.facts, testing::Contains("topic: /scan (sensor_msgs/LaserScan), 0 messages"));
-  EXPECT_THAT(FormatCheckReport(report), testing::HasSubstr("verdict: 1 problem: tf_loop"));
+  EXPECT_THAT(report.problems[0].what,
+              ::testing::HasSubstr("the tf tree has a loop, odom -> base_link -> laser -> odom: "
+                                   "odom is its own ancestor"));
+  EXPECT_THAT(report.facts, ::testing::Contains("topic: /scan (sensor_msgs/LaserScan), 0 messages"));
+  EXPECT_THAT(FormatCheckReport(report), ::testing::HasSubstr("verdict: 1 problem: tf_loop"));
 
   EXPECT_TRUE(CheckRecordingContents(DriveContents(), {}).ok())
       << FormatCheckReport(CheckRecordingContents(DriveContents(), {}));
@@ -184,7 +188,7 @@ TEST(LogCheck, ATfLoopIsAProblemNamingItsFrames) {
   elsewhere.tf.Add("arm", "camera", 0, RigidTransform3{}, true);
   const CheckReport beside = CheckRecordingContents(elsewhere, {});
   EXPECT_EQ(Kinds(beside), std::vector<std::string>{"tf_loop"});
-  EXPECT_THAT(beside.problems[0].what, testing::HasSubstr("arm -> camera -> arm (not on the frames used here)"));
+  EXPECT_THAT(beside.problems[0].what, ::testing::HasSubstr("arm -> camera -> arm (not on the frames used here)"));
 }
 
 TEST(LogCheck, OptionsAreValidated) {

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class LogReaderTest : public testing::Test {
+class LogReaderTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("slamtune_log_reader_" + std::to_string(getpid()));
@@ -53,8 +53,8 @@ TEST_F(LogReaderTest, CarmenScansOfVaryingCountsAreKeptAsRecordedAndTheNodesDrop
   EXPECT_EQ(log.beams.scans_resampled, 0u);
   EXPECT_EQ(log.beams.slam_karto.dropped, 3u);
   EXPECT_THAT(DescribeLogInput(log),
-              testing::Contains("beams: the node (slam_karto and slam_toolbox alike) drops 3 of 7 scans: their beam "
-                                "count differs from the first scan's (181); make the driver publish a fixed count"));
+              ::testing::Contains("beams: the node (slam_karto and slam_toolbox alike) drops 3 of 7 scans: their beam "
+                                  "count differs from the first scan's (181); make the driver publish a fixed count"));
 
   LogReadOptions nearest;
   nearest.beams = BeamPolicy::kNearestBeam;
@@ -65,8 +65,9 @@ TEST_F(LogReaderTest, CarmenScansOfVaryingCountsAreKeptAsRecordedAndTheNodesDrop
   // 180 readings cover -90 .. +89 at 1 deg: the same angles as the first 180 of 181.
   EXPECT_DOUBLE_EQ(resampled.scans[1].ranges[179], 2.0 + 0.01 * 179);
   EXPECT_TRUE(std::isinf(resampled.scans[1].ranges[180]));
-  EXPECT_THAT(DescribeLogInput(resampled),
-              testing::Contains(testing::HasSubstr("beams: --beams nearest-beam: 3 scans resampled onto 181 beams")));
+  EXPECT_THAT(
+      DescribeLogInput(resampled),
+      ::testing::Contains(::testing::HasSubstr("beams: --beams nearest-beam: 3 scans resampled onto 181 beams")));
 }
 
 TEST_F(LogReaderTest, RecordingsAreToldByContentNotName) {

@@ -12,9 +12,10 @@ namespace {
 
 using ::testing::HasSubstr;
 
-LaserLog ReadText(const std::string& text) {
+// The summary of `text` read as a CARMEN log.
+LogSummary SummaryOfText(const std::string& text) {
   std::istringstream in(text);
-  return ReadCarmenLog(in, "mem.clf");
+  return SummarizeLog(ReadCarmenLog(in, "mem.clf"));
 }
 
 TEST(LogSummaryTest, CountsSpansAndOdometry) {
@@ -25,7 +26,7 @@ TEST(LogSummaryTest, CountsSpansAndOdometry) {
       "FLASER 4 1 2 3 50 3 4 1.5707963267948966 3 4 1.5707963267948966 10.5 h 10.5\n"
       "FLASER 4 1 50 0.5 50 3 4 -1.5707963267948966 3 4 -1.5707963267948966 10.25 h 10.25\n"
       "SYNC x 1 h 1\n";
-  const LogSummary s = SummarizeLog(ReadText(text));
+  const LogSummary s = SummaryOfText(text);
   EXPECT_EQ(s.scans, 3u);
   EXPECT_EQ(s.odometry_records, 1u);
   EXPECT_EQ(s.params, 1u);
@@ -59,7 +60,7 @@ TEST(LogSummaryTest, CountsSpansAndOdometry) {
 
 TEST(LogSummaryTest, VaryingBeamCountsAreFlaggedAndFormatted) {
   const std::string text = "FLASER 3 1 2 3 0 0 0 0 0 0 1 h 1\nFLASER 5 1 2 3 4 5 0 0 0 0 0 0 2 h 2\n";
-  const LogSummary s = SummarizeLog(ReadText(text));
+  const LogSummary s = SummaryOfText(text);
   EXPECT_TRUE(s.readings_per_scan_varies);
   EXPECT_TRUE(s.geometry_varies);
   EXPECT_EQ(s.readings_per_scan_min, 3u);

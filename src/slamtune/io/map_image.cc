@@ -40,7 +40,7 @@ cv::Mat PixelView(const MapImage& map) {
 }
 
 // Shortest text that reads back as the same double (fmt's round-trip formatting).
-std::string Number(double v) { return fmt::format("{}", v); }
+std::string NumberText(double v) { return fmt::format("{}", v); }
 
 // Checks the file is there, is a regular file and can be opened, so that the errors below
 // can say "not an image" rather than a vague decode failure.
@@ -96,7 +96,7 @@ double AsNumber(const YAML::Node& node, const std::string& key, const std::strin
   } catch (const YAML::Exception&) {
     throw InputError(path, line, "key '" + key + "' must be a number");
   }
-  if (!std::isfinite(v)) throw InputError(path, line, "key '" + key + "' must be finite, got " + Number(v));
+  if (!std::isfinite(v)) throw InputError(path, line, "key '" + key + "' must be finite, got " + NumberText(v));
   return v;
 }
 
@@ -189,18 +189,18 @@ void ValidateMapImage(const MapImage& map, const std::string& what) {
                                  map.height, expected));
   }
   if (!std::isfinite(map.resolution) || map.resolution <= 0.0) {
-    throw InputError(what, 0, "resolution = " + Number(map.resolution) + " m/cell; must be finite and > 0");
+    throw InputError(what, 0, "resolution = " + NumberText(map.resolution) + " m/cell; must be finite and > 0");
   }
   for (const auto& [name, value] :
        {std::pair{"occupied_thresh", map.occupied_thresh}, std::pair{"free_thresh", map.free_thresh}}) {
     if (!(value >= 0.0 && value <= 1.0)) {
-      throw InputError(what, 0, std::string(name) + " = " + Number(value) + "; must be in [0, 1]");
+      throw InputError(what, 0, std::string(name) + " = " + NumberText(value) + "; must be in [0, 1]");
     }
   }
   if (map.free_thresh > map.occupied_thresh) {
     throw InputError(what, 0,
-                     "free_thresh = " + Number(map.free_thresh) + " > occupied_thresh = " +
-                         Number(map.occupied_thresh) + "; free_thresh must not exceed occupied_thresh");
+                     "free_thresh = " + NumberText(map.free_thresh) + " > occupied_thresh = " +
+                         NumberText(map.occupied_thresh) + "; free_thresh must not exceed occupied_thresh");
   }
 }
 
@@ -214,12 +214,12 @@ void WriteMapServer(const MapImage& map, const std::string& yaml_path) {
   YAML::Emitter out;
   out << YAML::BeginMap;
   out << YAML::Key << "image" << YAML::Value << pgm_path.filename().string();
-  out << YAML::Key << "resolution" << YAML::Value << Number(map.resolution);
-  out << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << Number(map.origin.x)
-      << Number(map.origin.y) << Number(map.origin.theta) << YAML::EndSeq;
+  out << YAML::Key << "resolution" << YAML::Value << NumberText(map.resolution);
+  out << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << NumberText(map.origin.x)
+      << NumberText(map.origin.y) << NumberText(map.origin.theta) << YAML::EndSeq;
   out << YAML::Key << "negate" << YAML::Value << (map.negate ? 1 : 0);
-  out << YAML::Key << "occupied_thresh" << YAML::Value << Number(map.occupied_thresh);
-  out << YAML::Key << "free_thresh" << YAML::Value << Number(map.free_thresh);
+  out << YAML::Key << "occupied_thresh" << YAML::Value << NumberText(map.occupied_thresh);
+  out << YAML::Key << "free_thresh" << YAML::Value << NumberText(map.free_thresh);
   out << YAML::EndMap;
   SLAMTUNE_CHECK_MSG(out.good(), out.GetLastError());
 

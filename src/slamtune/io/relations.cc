@@ -11,8 +11,8 @@ namespace slamtune::io {
 namespace {
 
 // Column names of the Freiburg relations format (Kümmerle et al. 2009, §"Benchmark data").
-constexpr const char* kColumns[] = {"t1", "t2", "x", "y", "z", "roll", "pitch", "yaw"};
-constexpr std::size_t kNumColumns = 8;
+constexpr const char* kRelationColumns[] = {"t1", "t2", "x", "y", "z", "roll", "pitch", "yaw"};
+constexpr std::size_t kNumRelationColumns = 8;
 
 }  // namespace
 
@@ -24,13 +24,14 @@ std::vector<Relation> ReadRelations(const std::string& path) {
   while (reader.Next(&line)) {
     if (IsBlankOrComment(line)) continue;
     SplitFields(line, &fields);
-    if (fields.size() != kNumColumns) {
+    if (fields.size() != kNumRelationColumns) {
       throw InputError(path, reader.line_number(),
                        "expected 8 columns (t1 t2 x y z roll pitch yaw), found " + std::to_string(fields.size()) +
                            (reader.unterminated() ? " (truncated last line?)" : ""));
     }
-    double v[kNumColumns];
-    for (std::size_t i = 0; i < kNumColumns; ++i) v[i] = RequireFinite(reader, fields[i], i + 1, kColumns[i]);
+    double v[kNumRelationColumns];
+    for (std::size_t i = 0; i < kNumRelationColumns; ++i)
+      v[i] = RequireFinite(reader, fields[i], i + 1, kRelationColumns[i]);
     Relation relation;
     relation.t1 = v[0];
     relation.t2 = v[1];

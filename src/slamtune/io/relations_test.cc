@@ -2,37 +2,31 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
 #include <fstream>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
+#include "slamtune/common/testing/temp_dir.h"
 
 namespace slamtune::io {
 namespace {
 
 using slamtune::testing::ErrorMessageOf;
+using slamtune::testing::TempFilePath;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() /
-          ("slamtune_relations_test_" + std::to_string(::getpid()) + "_" + name))
-      .string();
-}
-
-std::string WriteText(const std::string& name, const std::string& text) {
-  const std::string path = TempPath(name);
+std::string TempRelationsFile(const std::string& name, const std::string& text) {
+  const std::string path = TempFilePath("relations_test", name);
   std::ofstream(path) << text;
   return path;
 }
 
 TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
-  const std::string path = WriteText("ok",
-                                     "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
-                                     "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
+  const std::string path = TempRelationsFile("ok",
+                                             "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
+                                             "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
   const auto relations = ReadRelations(path);
   ASSERT_EQ(relations.size(), 2u);
   EXPECT_DOUBLE_EQ(relations[0].t1, 976052896.784509);
@@ -44,9 +38,9 @@ TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
 }
 
 TEST(RelationsTest, ByteOrderMarkDoesNotHideTheFirstRelation) {
-  const auto relations = ReadRelations(WriteText("bom",
-                                                 "\xEF\xBB\xBF"
-                                                 "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
+  const auto relations = ReadRelations(TempRelationsFile("bom",
+                                                         "\xEF\xBB\xBF"
+                                                         "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
   ASSERT_EQ(relations.size(), 2u);
   EXPECT_EQ(relations[0].delta.x, 0.5);
   EXPECT_EQ(relations[0].line, 1u);
@@ -55,7 +49,7 @@ TEST(RelationsTest, ByteOrderMarkDoesNotHideTheFirstRelation) {
 TEST(RelationsTest, RoundTripIsExact) {
   std::vector<Relation> relations = {{1134864643.12418, 1134864650.5, {0.1 + 0.2, -1.0 / 3.0, 2.0 / 7.0}, 0},
                                      {5.0, 6.0, {1e-17, 123456.789, -kPi}, 0}};
-  const std::string path = TempPath("roundtrip");
+  const std::string path = TempFilePath("relations_test", "roundtrip");
   WriteRelations(path, relations);
   const auto back = ReadRelations(path);
   ASSERT_EQ(back.size(), relations.size());
@@ -67,28 +61,28 @@ TEST(RelationsTest, RoundTripIsExact) {
   }
 }
 
-TEST(RelationsTest, EmptyFileGivesEmptyList) { EXPECT_TRUE(ReadRelations(WriteText("empty", "")).empty()); }
+TEST(RelationsTest, EmptyFileGivesEmptyList) { EXPECT_TRUE(ReadRelations(TempRelationsFile("empty", "")).empty()); }
 
 TEST(RelationsTest, WrongColumnCountNamesFileAndLine) {
-  const std::string path = WriteText("cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
+  const std::string path = TempRelationsFile("cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }),
             path + ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
 }
 
 TEST(RelationsTest, NonNumberIsRejected) {
-  const std::string path = WriteText("nonnum", "1 2 abc 0 0 0 0 0\n");
+  const std::string path = TempRelationsFile("nonnum", "1 2 abc 0 0 0 0 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }), path + ":1: column 3 (x) is not a number: 'abc'");
 }
 
 TEST(RelationsTest, NanAndInfAreRejected) {
-  const std::string nan_path = WriteText("nan", "1 2 0 0 0 0 0 nan\n");
+  const std::string nan_path = TempRelationsFile("nan", "1 2 0 0 0 0 0 nan\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(nan_path); }), nan_path + ":1: column 8 (yaw) is not finite: nan");
-  const std::string inf_path = WriteText("inf", "# c\ninf 2 0 0 0 0 0 0\n");
+  const std::string inf_path = TempRelationsFile("inf", "# c\ninf 2 0 0 0 0 0 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(inf_path); }), inf_path + ":2: column 1 (t1) is not finite: inf");
 }
 
 TEST(RelationsTest, TruncatedLastLineIsReported) {
-  const std::string path = WriteText("trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
+  const std::string path = TempRelationsFile("trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
   const std::string error = ErrorMessageOf([&] { ReadRelations(path); });
   EXPECT_THAT(error, HasSubstr(":2: expected 8 columns"));
   EXPECT_THAT(error, HasSubstr("truncated last line"));

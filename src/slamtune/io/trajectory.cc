@@ -12,8 +12,8 @@
 namespace slamtune::io {
 namespace {
 
-constexpr const char* kColumns[] = {"timestamp", "x", "y", "theta"};
-constexpr std::size_t kNumColumns = 4;
+constexpr const char* kTrajectoryColumns[] = {"timestamp", "x", "y", "theta"};
+constexpr std::size_t kNumTrajectoryColumns = 4;
 
 }  // namespace
 
@@ -26,13 +26,14 @@ std::vector<TimedPose> ReadTrajectory(const std::string& path) {
   while (reader.Next(&line)) {
     if (IsBlankOrComment(line)) continue;
     SplitFields(line, &fields);
-    if (fields.size() != kNumColumns) {
+    if (fields.size() != kNumTrajectoryColumns) {
       throw InputError(path, reader.line_number(),
                        "expected 4 columns (timestamp x y theta), found " + std::to_string(fields.size()) +
                            (reader.unterminated() ? " (truncated last line?)" : ""));
     }
-    double v[kNumColumns];
-    for (std::size_t i = 0; i < kNumColumns; ++i) v[i] = RequireFinite(reader, fields[i], i + 1, kColumns[i]);
+    double v[kNumTrajectoryColumns];
+    for (std::size_t i = 0; i < kNumTrajectoryColumns; ++i)
+      v[i] = RequireFinite(reader, fields[i], i + 1, kTrajectoryColumns[i]);
     const TimedPose pose{v[0], Pose2{v[1], v[2], v[3]}};
     const auto [it, first] = first_at_time.try_emplace(pose.time, poses.size(), reader.line_number());
     if (!first) {

@@ -141,10 +141,11 @@ TEST(NormalizationOptions, RejectsInvalidValuesNamingTheField) {
   NormalizationOptions o;
   o.asf_off_axis_weight = 0.0;
   EXPECT_THAT([&] { o.Validate(); },
-              testing::ThrowsMessage<InputError>(HasSubstr("normalization.asf_off_axis_weight = 0")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("normalization.asf_off_axis_weight = 0")));
   o = NormalizationOptions{};
   o.min_intercept = -1.0;
-  EXPECT_THAT([&] { o.Validate(); }, testing::ThrowsMessage<InputError>(HasSubstr("normalization.min_intercept = -1")));
+  EXPECT_THAT([&] { o.Validate(); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("normalization.min_intercept = -1")));
 }
 
 }  // namespace

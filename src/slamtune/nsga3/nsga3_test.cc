@@ -96,20 +96,20 @@ constexpr unsigned kDtlz2Generations = 150;
 TEST(Nsga3Options, InvalidOptionsAreRejectedNamingTheField) {
   Nsga3Options o;
   o.population_size = 3;
-  EXPECT_THAT([&] { Nsga3 a(o); }, testing::ThrowsMessage<InputError>(HasSubstr("nsga3.population_size = 3")));
+  EXPECT_THAT([&] { Nsga3 a(o); }, ::testing::ThrowsMessage<InputError>(HasSubstr("nsga3.population_size = 3")));
   o = Nsga3Options{};
   o.divisions = 0;
-  EXPECT_THAT([&] { Nsga3 a(o); }, testing::ThrowsMessage<InputError>(HasSubstr("nsga3.divisions = 0")));
+  EXPECT_THAT([&] { Nsga3 a(o); }, ::testing::ThrowsMessage<InputError>(HasSubstr("nsga3.divisions = 0")));
   o = Nsga3Options{};
   o.reference_points = {{1, 0}, {0.5, -0.5}};
   EXPECT_THAT([&] { Nsga3 a(o); },
-              testing::ThrowsMessage<InputError>(HasSubstr("nsga3.reference_points[1] has component -0.5")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("nsga3.reference_points[1] has component -0.5")));
   o = Nsga3Options{};
   o.variation.crossover_eta = 200;
-  EXPECT_THAT([&] { Nsga3 a(o); }, testing::ThrowsMessage<InputError>(HasSubstr("variation.crossover_eta = 200")));
+  EXPECT_THAT([&] { Nsga3 a(o); }, ::testing::ThrowsMessage<InputError>(HasSubstr("variation.crossover_eta = 200")));
   o = Nsga3Options{};
   o.normalization.min_intercept = -1;
-  EXPECT_THAT([&] { Nsga3 a(o); }, testing::ThrowsMessage<InputError>(HasSubstr("normalization.min_intercept")));
+  EXPECT_THAT([&] { Nsga3 a(o); }, ::testing::ThrowsMessage<InputError>(HasSubstr("normalization.min_intercept")));
 }
 
 TEST(Nsga3Options, PopulationSizeFollowsThePapersRule) {
@@ -127,20 +127,20 @@ TEST(Nsga3Options, PopulationSizeFollowsThePapersRule) {
 TEST(Nsga3Evolve, RejectsUnsuitableProblemsAndPopulations) {
   const Nsga3 nsga3(Generations(1), 1);
   EXPECT_THAT([&] { nsga3.evolve(pagmo::population(Dtlz2(), 10, 1)); },
-              testing::ThrowsMessage<InputError>(HasSubstr("has 10 members but NSGA-III is configured for N = 92")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("has 10 members but NSGA-III is configured for N = 92")));
   EXPECT_THAT([&] { nsga3.evolve(pagmo::population(pagmo::problem(SingleObjectiveProblem{}), 92, 1)); },
-              testing::ThrowsMessage<InputError>(HasSubstr("needs >= 2 objectives")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("needs >= 2 objectives")));
   EXPECT_THAT([&] { nsga3.evolve(pagmo::population(pagmo::problem(ConstrainedProblem{}), 92, 1)); },
-              testing::ThrowsMessage<InputError>(HasSubstr("1 constraints")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("1 constraints")));
   Nsga3Options two_d = Generations(1);
   two_d.reference_points = {{1, 0}, {0, 1}};
   EXPECT_THAT([&] { Nsga3(two_d, 1).evolve(pagmo::population(Dtlz2(), 4, 1)); },
-              testing::ThrowsMessage<InputError>(HasSubstr("nsga3.reference_points[0] has 2 components")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("nsga3.reference_points[0] has 2 components")));
   pagmo::population half_integer(pagmo::problem(MixedIntegerProblem{}));
   for (int k = 0; k < 91; ++k) half_integer.push_back({0.5, 0.5, 2.0});
   half_integer.push_back({0.5, 0.5, 2.5});
   EXPECT_THAT([&] { nsga3.evolve(half_integer); },
-              testing::ThrowsMessage<InputError>(HasSubstr("member 91 has integer gene 2 = 2.5")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("member 91 has integer gene 2 = 2.5")));
 }
 
 TEST(Nsga3Evolve, ReachesTheDtlz2FrontWithSpread) {
@@ -352,7 +352,7 @@ TEST(Nsga3State, RoundTripsAndRejectsMalformedText) {
   EXPECT_THROW(other.RestoreRngState("not a state"), InputError);
   const std::string generator_only = state.substr(0, state.find("\nideal"));
   EXPECT_THAT([&] { other.RestoreRngState(generator_only); },
-              testing::ThrowsMessage<InputError>(HasSubstr("saved run state is malformed")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("saved run state is malformed")));
   EXPECT_EQ(other.RngState(), state) << "a failed restore must leave the state unchanged";
 }
 

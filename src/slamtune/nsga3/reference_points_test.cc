@@ -25,9 +25,9 @@ TEST(DasDennisCount, MatchesBinomialForSeveralSizes) {
 }
 
 TEST(DasDennisCount, RejectsInvalidSizes) {
-  EXPECT_THAT([] { DasDennisCount(1, 4); }, testing::ThrowsMessage<InputError>(HasSubstr("objectives = 1")));
-  EXPECT_THAT([] { DasDennisCount(3, 0); }, testing::ThrowsMessage<InputError>(HasSubstr("divisions = 0")));
-  EXPECT_THAT([] { DasDennisCount(20, 40); }, testing::ThrowsMessage<InputError>(HasSubstr("more than")));
+  EXPECT_THAT([] { DasDennisCount(1, 4); }, ::testing::ThrowsMessage<InputError>(HasSubstr("objectives = 1")));
+  EXPECT_THAT([] { DasDennisCount(3, 0); }, ::testing::ThrowsMessage<InputError>(HasSubstr("divisions = 0")));
+  EXPECT_THAT([] { DasDennisCount(20, 40); }, ::testing::ThrowsMessage<InputError>(HasSubstr("more than")));
 }
 
 TEST(DasDennisPoints, AreTheDistinctGridPointsOfTheSimplex) {
@@ -78,27 +78,27 @@ TEST(ValidateReferencePoints, AcceptsDirectionsOffTheSimplex) {
 
 TEST(ValidateReferencePoints, RejectsBadPointsNamingFieldAndIndex) {
   EXPECT_THAT([] { ValidateReferencePoints({}, 2, "refs"); },
-              testing::ThrowsMessage<InputError>(HasSubstr("refs: no reference points")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("refs: no reference points")));
   EXPECT_THAT(
       [] {
         ValidateReferencePoints({{1.0, 0.0}, {1.0, 0.0, 0.0}}, 2, "refs");
       },
-      testing::ThrowsMessage<InputError>(HasSubstr("refs[1] has 3 components, the problem has 2")));
+      ::testing::ThrowsMessage<InputError>(HasSubstr("refs[1] has 3 components, the problem has 2")));
   EXPECT_THAT(
       [] {
         ValidateReferencePoints({{1.0, -0.5}}, 2, "refs");
       },
-      testing::ThrowsMessage<InputError>(HasSubstr("refs[0] has component -0.5")));
+      ::testing::ThrowsMessage<InputError>(HasSubstr("refs[0] has component -0.5")));
   EXPECT_THAT(
       [] {
         ValidateReferencePoints({{1.0, NAN}}, 2, "refs");
       },
-      testing::ThrowsMessage<InputError>(HasSubstr("must be finite")));
+      ::testing::ThrowsMessage<InputError>(HasSubstr("must be finite")));
   EXPECT_THAT(
       [] {
         ValidateReferencePoints({{0.0, 0.0}}, 2, "refs");
       },
-      testing::ThrowsMessage<InputError>(HasSubstr("refs[0] is the zero vector")));
+      ::testing::ThrowsMessage<InputError>(HasSubstr("refs[0] is the zero vector")));
 }
 
 }  // namespace

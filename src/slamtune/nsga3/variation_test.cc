@@ -27,17 +27,17 @@ TEST(VariationOptions, RejectsInvalidValuesNamingTheField) {
   VariationOptions o;
   o.crossover_probability = 1.5;
   EXPECT_THAT([&] { o.Validate(); },
-              testing::ThrowsMessage<InputError>(HasSubstr("variation.crossover_probability = 1.5")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("variation.crossover_probability = 1.5")));
   o = VariationOptions{};
   o.crossover_eta = 0.5;
-  EXPECT_THAT([&] { o.Validate(); }, testing::ThrowsMessage<InputError>(HasSubstr("variation.crossover_eta = 0.5")));
+  EXPECT_THAT([&] { o.Validate(); }, ::testing::ThrowsMessage<InputError>(HasSubstr("variation.crossover_eta = 0.5")));
   o = VariationOptions{};
   o.mutation_probability = -0.1;
   EXPECT_THAT([&] { o.Validate(); },
-              testing::ThrowsMessage<InputError>(HasSubstr("variation.mutation_probability = -0.1")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("variation.mutation_probability = -0.1")));
   o = VariationOptions{};
   o.mutation_eta = NAN;
-  EXPECT_THAT([&] { o.Validate(); }, testing::ThrowsMessage<InputError>(HasSubstr("variation.mutation_eta = nan")));
+  EXPECT_THAT([&] { o.Validate(); }, ::testing::ThrowsMessage<InputError>(HasSubstr("variation.mutation_eta = nan")));
 }
 
 TEST(RepairIntegers, RoundsHalfAwayFromZeroAndClampsOnlyTheIntegerGenes) {

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "slamtune/optim/testing/objective_sets.h"
+
 namespace slamtune::optim {
 namespace {
+
+using testing::kPaper;
 
 EvaluationRecord R(const std::string& key, double eta, double nc, double ne, int loops = 1) {
   EvaluationRecord r;
@@ -14,8 +18,6 @@ EvaluationRecord R(const std::string& key, double eta, double nc, double ne, int
   r.loop_closures = loops;
   return r;
 }
-
-const ObjectiveSet kPaper{ObjectiveSetKind::kPaper};
 
 VerdictSummary PaperVerdict(const EvaluationRecord& a, const EvaluationRecord& b) {
   VerdictOptions options;

@@ -10,7 +10,7 @@
 namespace slamtune::optim {
 namespace {
 
-std::string Value(double v, bool integer) {
+std::string ParameterValueText(double v, bool integer) {
   if (integer) return fmt::format("{:.0f}", v);
   return fmt::format("{:.4g}", v);
 }
@@ -29,8 +29,9 @@ std::string EquivalentRegion::Describe() const {
   std::string out;
   for (const ParameterRange& r : ranges) {
     out += (out.empty() ? "" : ", ") + r.name;
-    out += r.lower == r.upper ? " = " + Value(r.lower, r.integer)
-                              : " in [" + Value(r.lower, r.integer) + ", " + Value(r.upper, r.integer) + "]";
+    out += r.lower == r.upper
+               ? " = " + ParameterValueText(r.lower, r.integer)
+               : " in [" + ParameterValueText(r.lower, r.integer) + ", " + ParameterValueText(r.upper, r.integer) + "]";
   }
   if (out.empty()) out = "the recommended parameter set";
   return out + fmt::format(" give{} an equivalent map ({} of {} evaluated parameter set{})",

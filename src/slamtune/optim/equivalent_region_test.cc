@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "slamtune/optim/testing/objective_sets.h"
+
 namespace slamtune::optim {
 namespace {
 
-const ObjectiveSet kPaper(ObjectiveSetKind::kPaper);
+using testing::kPaper;
 
 SearchSpace Space() {
   SearchSpace space;

@@ -59,6 +59,9 @@ struct EvaluationRecord {
   double trans_mean_m = 0.0, trans_std_m = 0.0, rot_mean_deg = 0.0, rot_std_deg = 0.0;
   int relations_used = 0;
 
+  // Whether the run gave a map to score (status kOk).
+  bool ok() const { return status == RunStatus::kOk; }
+
   static EvaluationRecord Failed(const std::string& key, const std::map<std::string, double>& params,
                                  const std::string& reason);
 };

@@ -64,7 +64,7 @@ bool Holds(const SlamEvaluationContext& context, const Assignment& assignment, i
   return true;
 }
 
-std::string Value(const std::string& name, double v) {
+std::string SettingText(const std::string& name, double v) {
   return name == kHeadingRange ? fmt::format("the heading range {:.2f} rad", v) : fmt::format("the window {:.2f} m", v);
 }
 
@@ -133,7 +133,7 @@ FrontEndRepair RepairFrontEnd(const SlamEvaluationContext& context, const std::v
       repair.lower_bounds[name] = std::max(repair.lower_bounds[name], base);
       if (tried.count(name)) current[name] = tried.at(name);
       const double kept = current.count(name) ? current.at(name) : base;
-      line += fmt::format(": {} broke, {:.2f} {}", Value(name, repair.lower_bounds.at(name)), kept,
+      line += fmt::format(": {} broke, {:.2f} {}", SettingText(name, repair.lower_bounds.at(name)), kept,
                           held ? "held" : "(the widest) did not hold either");
     }
     if (held) held_past = b.log_index;

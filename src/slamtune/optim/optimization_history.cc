@@ -5,20 +5,9 @@
 #include <limits>
 #include <pagmo/utils/hypervolume.hpp>
 
+#include "slamtune/optim/candidate_selection.h"
+
 namespace slamtune::optim {
-namespace {
-
-// a dominates b (minimisation): no worse anywhere, better somewhere.
-bool Dominates(const std::vector<double>& a, const std::vector<double>& b) {
-  bool better = false;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (a[k] > b[k]) return false;
-    if (a[k] < b[k]) better = true;
-  }
-  return better;
-}
-
-}  // namespace
 
 double Hypervolume(const std::vector<std::vector<double>>& points, double reference) {
   std::vector<std::vector<double>> inside;

@@ -4,10 +4,12 @@
 
 #include <cmath>
 
+#include "slamtune/optim/testing/objective_sets.h"
+
 namespace slamtune::optim {
 namespace {
 
-const ObjectiveSet kPaper(ObjectiveSetKind::kPaper);
+using testing::kPaper;
 
 TEST(Hypervolume, IsTheDominatedVolumeUpToTheReference) {
   EXPECT_DOUBLE_EQ(Hypervolume({}, 1.1), 0.0);

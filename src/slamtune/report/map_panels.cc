@@ -8,16 +8,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "slamtune/common/error.h"
+#include "slamtune/report/figure_style.h"
 #include "slamtune/report/plot.h"
 
 namespace slamtune::report {
 namespace {
 
 constexpr int kPad = 6;  // px around text and map
-
-void Require(bool ok, const std::string& field, double value, const std::string& rule) {
-  if (!ok) throw InputError(fmt::format("{} = {}: {}", field, value, rule));
-}
 
 struct Scaled {
   cv::Mat bgr;
@@ -122,11 +119,11 @@ std::string MetresText(double m) {
 }  // namespace
 
 void MapPanelOptions::Validate() const {
-  Require(height >= 32 && height <= 4000, "MapPanelOptions.height", height, "must be in [32, 4000] px");
-  Require(max_width >= 32, "MapPanelOptions.max_width", max_width, "must be >= 32 px");
-  Require(crop_margin >= 0 && crop_margin <= 1000, "MapPanelOptions.crop_margin", crop_margin,
-          "must be in [0, 1000] cells");
-  Require(font_scale > 0.0 && font_scale <= 4.0, "MapPanelOptions.font_scale", font_scale, "must be in (0, 4]");
+  RequireOption(height >= 32 && height <= 4000, "MapPanelOptions.height", height, "must be in [32, 4000] px");
+  RequireOption(max_width >= 32, "MapPanelOptions.max_width", max_width, "must be >= 32 px");
+  RequireOption(crop_margin >= 0 && crop_margin <= 1000, "MapPanelOptions.crop_margin", crop_margin,
+                "must be in [0, 1000] cells");
+  RequireOption(font_scale > 0.0 && font_scale <= 4.0, "MapPanelOptions.font_scale", font_scale, "must be in (0, 4]");
 }
 
 bool HasMap(const io::MapImage& map) {

@@ -27,7 +27,8 @@ TEST(KnownBounds, BoxesTheKnownCellsWithMargin) {
   EXPECT_EQ(KnownBounds(UnknownMap(8, 4), 2), cv::Rect(0, 0, 8, 4));
 }
 
-int CountColour(const cv::Mat& bgr, std::uint8_t v) {
+// Pixels of the grey level `v`.
+int CountGrey(const cv::Mat& bgr, std::uint8_t v) {
   cv::Mat mask;
   cv::inRange(bgr, cv::Scalar(v, v, v), cv::Scalar(v, v, v), mask);
   return cv::countNonZero(mask);
@@ -47,8 +48,8 @@ TEST(RenderMapPanel, CropsScalesAndShowsWalls) {
   EXPECT_EQ(panel.type(), CV_8UC3);
   EXPECT_EQ(panel.size(), plain.size());
   // Cropped to 100 x 20 cells and doubled: 200 x 40 px of map, the wall 200 x 2 px of black.
-  EXPECT_EQ(CountColour(panel, io::kMapOccupied) - CountColour(plain, io::kMapOccupied), 200 * 2);
-  EXPECT_EQ(CountColour(plain, io::kMapFree), 200 * 40);
+  EXPECT_EQ(CountGrey(panel, io::kMapOccupied) - CountGrey(plain, io::kMapOccupied), 200 * 2);
+  EXPECT_EQ(CountGrey(plain, io::kMapFree), 200 * 40);
   EXPECT_EQ(plain.cols, 200 + 2 + 2 * 6);  // map, frame and padding: the unknown border was cropped away
 }
 

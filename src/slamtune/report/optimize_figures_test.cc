@@ -173,7 +173,7 @@ TEST(ScatterGridCandidates, EveryCandidateMarkedAndADefaultOutsideDrawnAtTheBord
 }
 
 // Pixels of exactly `colour` in a rectangle of `image`.
-int CountColour(const cv::Mat& image, const cv::Rect& area, const cv::Scalar& colour) {
+int CountColourIn(const cv::Mat& image, const cv::Rect& area, const cv::Scalar& colour) {
   cv::Mat mask;
   cv::inRange(image(area), colour, colour, mask);
   return cv::countNonZero(mask);
@@ -195,15 +195,15 @@ TEST(ParameterSpaceFigure, TwoParametersAPanelPerColouringWithTheCandidatesInEac
                     f.panel_height);
   };
   // The recommended star (vermillion) in the data area (left half) of every scatter panel.
-  for (int i = 0; i < 4; ++i) EXPECT_GT(CountColour(grid, cell(i, f.panel_width / 2), PaletteColour(1)), 10) << i;
-  EXPECT_GT(CountColour(grid, cell(4, f.panel_width), PaletteColour(1)), 0);  // and in the legend
+  for (int i = 0; i < 4; ++i) EXPECT_GT(CountColourIn(grid, cell(i, f.panel_width / 2), PaletteColour(1)), 10) << i;
+  EXPECT_GT(CountColourIn(grid, cell(4, f.panel_width), PaletteColour(1)), 0);  // and in the legend
   r.candidates.clear();
   const cv::Mat bare = ParameterSpaceFigure(r, f);
-  EXPECT_EQ(CountColour(bare, cell(0, f.panel_width / 2), PaletteColour(1)), 0);
+  EXPECT_EQ(CountColourIn(bare, cell(0, f.panel_width / 2), PaletteColour(1)), 0);
   // With ground truth, a fifth scatter panel fills the grid.
   const cv::Mat gt = ParameterSpaceFigure(testing::FakeOptimizeResult(true), f);
   EXPECT_EQ(gt.size(), grid.size());
-  EXPECT_GT(CountColour(gt, cell(4, f.panel_width / 2), PaletteColour(1)), 10);
+  EXPECT_GT(CountColourIn(gt, cell(4, f.panel_width / 2), PaletteColour(1)), 10);
 }
 
 TEST(ParameterSpaceFigure, ParallelCoordinatesForThreeParametersWithTheRecommendationDrawnThick) {
@@ -214,10 +214,10 @@ TEST(ParameterSpaceFigure, ParallelCoordinatesForThreeParametersWithTheRecommend
   EXPECT_EQ(figure.cols, 3 * f.panel_width + 4 * GridOptions{}.padding);
   EXPECT_EQ(figure.rows, f.panel_height + f.panel_height / 2);
   const cv::Rect all(0, 0, figure.cols, figure.rows);
-  const int with = CountColour(figure, all, PaletteColour(1));
+  const int with = CountColourIn(figure, all, PaletteColour(1));
   EXPECT_GT(with, 1000);  // a 4 px line across the figure
   r.candidates.clear();
-  EXPECT_LT(CountColour(ParameterSpaceFigure(r, f), all, PaletteColour(1)), with / 4);
+  EXPECT_LT(CountColourIn(ParameterSpaceFigure(r, f), all, PaletteColour(1)), with / 4);
   // Not the slices of the first objective any more.
   const cv::Mat slices = ObjectiveAgainstParameters(WithThreeParameters(), 0, f);
   EXPECT_NE(figure.size(), slices.size());

@@ -28,8 +28,6 @@ const char* const kObjectivesCaveat =
 
 namespace {
 
-bool Ok(const optim::EvaluationRecord& r) { return r.status == optim::RunStatus::kOk; }
-
 std::string Short(double v) { return Readable(v, 4); }
 
 std::string Seconds(double s) {
@@ -123,13 +121,13 @@ void EvaluationsSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt)
       const auto it = e.params.find(d.name);
       row.push_back(it == e.params.end() ? "" : FormatParam(it->second));
     }
-    for (double v : r.objectives.Values(e)) row.push_back(Ok(e) ? Short(v) : "");
-    row.push_back(Ok(e) ? std::to_string(e.loop_closures) : "");
+    for (double v : r.objectives.Values(e)) row.push_back(e.ok() ? Short(v) : "");
+    row.push_back(e.ok() ? std::to_string(e.loop_closures) : "");
     if (gt) {
       row.push_back(e.has_gt ? Metres(e.trans_mean_m) : "");
       row.push_back(e.has_gt ? Readable(e.rot_mean_deg, 3) : "");
     }
-    row.push_back(Ok(e) ? "ok" : "failed: " + e.reason);
+    row.push_back(e.ok() ? "ok" : "failed: " + e.reason);
     rows.push_back(std::move(row));
   }
   const bool long_table = rows.size() > 20;
@@ -269,9 +267,9 @@ void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) 
   for (const auto* c : CandidatesInReportOrder(r)) {
     const auto& e = c->record;
     std::vector<std::string> row = {c->label, c->description, ParamSummary(e.params, r.space),
-                                    Ok(e) ? "ok" : "failed: " + e.reason};
-    for (double v : r.objectives.Values(e)) row.push_back(Ok(e) ? Short(v) : "");
-    row.push_back(Ok(e) ? std::to_string(e.loop_closures) : "");
+                                    e.ok() ? "ok" : "failed: " + e.reason};
+    for (double v : r.objectives.Values(e)) row.push_back(e.ok() ? Short(v) : "");
+    row.push_back(e.ok() ? std::to_string(e.loop_closures) : "");
     if (gt) {
       if (e.has_gt) {
         row.insert(row.end(), {FormatMeanStd(e.trans_mean_m, e.trans_std_m),

@@ -7,10 +7,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <sstream>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/report/front_end_map.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
@@ -21,13 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
-
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // A new, empty folder of its own for each call: concurrent test runs never share one.
 fs::path FreshDir(const std::string& name) { return slamtune::testing::UniqueTempDir("report_" + name); }
@@ -89,7 +82,7 @@ TEST(WriteOptimizeReport, WritesEveryFileWithGroundTruth) {
 TEST(WriteOptimizeReport, ResultsJsonHasTheStableKeysAndValues) {
   const fs::path dir = FreshDir("json");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
-  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  const auto j = nlohmann::json::parse(ReadWholeFile(dir / "results.json"));
   for (const char* key : {"recommended", "knee", "worst", "default", "evaluations", "cache_hits", "wall_s", "verdict",
                           "recommended_share", "lowest_error", "settings", "search_space"}) {
     EXPECT_TRUE(j.contains(key)) << key;
@@ -150,7 +143,7 @@ TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
   const cv::Mat expected = RenderFrontEndMap(fe.map, fe.trajectory, fe.steps, fe.evidence);
   ASSERT_EQ(where.size(), expected.size());
   EXPECT_EQ(cv::norm(where, expected, cv::NORM_INF), 0.0);
-  const std::string html = Slurp(dir / "report.html");
+  const std::string html = ReadWholeFile(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("Front end of the base configuration"));
   EXPECT_THAT(html, HasSubstr("front_end_map.png"));
   // On the first screen, beside the recommended map, before any section; and in its own section.
@@ -158,7 +151,7 @@ TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
   EXPECT_LT(html.find("Front end of the base configuration"),
             html.find("front_end_map.png", html.find("Front end of the base configuration")));
   EXPECT_THAT(html, HasSubstr("60-60"));  // the break's log scans
-  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  const auto j = nlohmann::json::parse(ReadWholeFile(dir / "results.json"));
   EXPECT_EQ(j["base_front_end"]["breaks"].get<int>(), 1);
   EXPECT_EQ(j["base_front_end"]["stretches"][0]["first_log_index"].get<int>(), 60);
   // Without a base run (a --space given, or a resumed run) there is no such section.
@@ -166,7 +159,7 @@ TEST(WriteOptimizeReport, ShowsWhereTheBaseConfigurationsFrontEndBroke) {
   WriteOptimizeReport(testing::FakeOptimizeResult(false), plain.string());
   EXPECT_FALSE(fs::exists(plain / "front_end.png"));
   EXPECT_FALSE(fs::exists(plain / "front_end_map.png"));
-  EXPECT_THAT(Slurp(plain / "report.html"), Not(HasSubstr("Front end of the base configuration")));
+  EXPECT_THAT(ReadWholeFile(plain / "report.html"), Not(HasSubstr("Front end of the base configuration")));
   // A base run that failed before it built a map: the plot, no map.
   fe.map = io::MapImage{};
   result.base_front_end = fe;
@@ -181,7 +174,7 @@ TEST(WriteOptimizeReport, HistoryEquivalentRegionAndEveryEvaluation) {
   const optim::OptimizeResult result = testing::FakeOptimizeResult(true);
   WriteOptimizeReport(result, dir.string());
   // results.json: one history entry per generation, 0..5, and the equivalent region.
-  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  const auto j = nlohmann::json::parse(ReadWholeFile(dir / "results.json"));
   ASSERT_EQ(j["history"]["generations"].size(), 6u);
   EXPECT_DOUBLE_EQ(j["history"]["reference"].get<double>(), 1.1);
   const auto& g0 = j["history"]["generations"][0];
@@ -202,7 +195,7 @@ TEST(WriteOptimizeReport, HistoryEquivalentRegionAndEveryEvaluation) {
   EXPECT_GT(history.cols, 2 * 520);
   EXPECT_GT(history.rows, 2 * 420);
 
-  const std::string html = Slurp(dir / "report.html");
+  const std::string html = ReadWholeFile(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("How the search progressed"));
   EXPECT_THAT(html, HasSubstr("<a href=\"slices_corner_pixels.png\"><img"));
   EXPECT_THAT(html, HasSubstr("How sure: the parameter sets with an equivalent map"));
@@ -225,7 +218,7 @@ TEST(WriteOptimizeReport, HistoryEquivalentRegionAndEveryEvaluation) {
   for (int i = 0; i < 10; ++i) many.evaluations.push_back(result.evaluations[i]);
   const fs::path long_dir = FreshDir("history_long");
   WriteOptimizeReport(many, long_dir.string());
-  EXPECT_THAT(Slurp(long_dir / "report.html"), HasSubstr("<details><summary>All 24 evaluations"));
+  EXPECT_THAT(ReadWholeFile(long_dir / "report.html"), HasSubstr("<details><summary>All 24 evaluations"));
   // Without generations or a region, neither section.
   optim::OptimizeResult bare = result;
   bare.history = {};
@@ -233,10 +226,10 @@ TEST(WriteOptimizeReport, HistoryEquivalentRegionAndEveryEvaluation) {
   const fs::path bare_dir = FreshDir("history_bare");
   const auto summary = WriteOptimizeReport(bare, bare_dir.string());
   EXPECT_THAT(summary.files, Not(::testing::Contains(std::string("history.png"))));
-  const std::string bare_html = Slurp(bare_dir / "report.html");
+  const std::string bare_html = ReadWholeFile(bare_dir / "report.html");
   EXPECT_THAT(bare_html, Not(HasSubstr("How the search progressed")));
   EXPECT_THAT(bare_html, Not(HasSubstr("How sure")));
-  EXPECT_TRUE(nlohmann::json::parse(Slurp(bare_dir / "results.json"))["equivalent_region"].is_null());
+  EXPECT_TRUE(nlohmann::json::parse(ReadWholeFile(bare_dir / "results.json"))["equivalent_region"].is_null());
 }
 
 TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
@@ -245,17 +238,17 @@ TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
   EXPECT_FALSE(fs::exists(dir / "table9_10_errors.csv"));
   EXPECT_FALSE(fs::exists(dir / "objective_vs_error.png"));
   EXPECT_FALSE(summary.correlation.has_value());
-  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  const auto j = nlohmann::json::parse(ReadWholeFile(dir / "results.json"));
   EXPECT_FALSE(j["recommended"].contains("gt_error"));
   EXPECT_TRUE(j["lowest_error"].is_null());
   EXPECT_FALSE(j.contains("error_correlation"));
-  EXPECT_THAT(Slurp(dir / "report.html"), Not(HasSubstr("Spearman")));
+  EXPECT_THAT(ReadWholeFile(dir / "report.html"), Not(HasSubstr("Spearman")));
 }
 
 TEST(WriteOptimizeReport, ParameterSpaceCaptionSaysHowToReadItsView) {
   const fs::path two = FreshDir("space_two");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), two.string());
-  const std::string grid = Slurp(two / "report.html");
+  const std::string grid = ReadWholeFile(two / "report.html");
   EXPECT_THAT(grid, HasSubstr("drawn once per panel"));
   EXPECT_THAT(grid, HasSubstr("by the quarter of its true translational error"));
   EXPECT_THAT(grid, Not(HasSubstr("parallel coordinates")));
@@ -263,7 +256,7 @@ TEST(WriteOptimizeReport, ParameterSpaceCaptionSaysHowToReadItsView) {
   three.space.dimensions.push_back({"loop_match_minimum_response_coarse", 0.5, 0.9, false});
   const fs::path dir = FreshDir("space_three");
   WriteOptimizeReport(three, dir.string());
-  const std::string parallel = Slurp(dir / "report.html");
+  const std::string parallel = ReadWholeFile(dir / "report.html");
   EXPECT_THAT(parallel, HasSubstr("in parallel coordinates"));
   EXPECT_THAT(parallel, HasSubstr("a last axis for eta"));
   EXPECT_THAT(parallel, Not(HasSubstr("drawn once per panel")));
@@ -275,21 +268,21 @@ TEST(WriteOptimizeReport, ParameterSpaceCaptionSaysHowToReadItsView) {
 TEST(WriteOptimizeReport, TablesMirrorThePapers) {
   const fs::path dir = FreshDir("tables");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
-  const std::string t3 = Slurp(dir / "table3_best_worst_params.csv");
+  const std::string t3 = ReadWholeFile(dir / "table3_best_worst_params.csv");
   EXPECT_EQ(t3.substr(0, t3.find('\n')), "label,loop_search_maximum_distance,loop_match_minimum_chain_size");
   EXPECT_THAT(t3, HasSubstr("\nrecommended,3,12\n"));
   EXPECT_THAT(t3, HasSubstr("\ndefault,4,10\n"));
-  const std::string t4 = Slurp(dir / "table4_6_objectives.csv");
+  const std::string t4 = ReadWholeFile(dir / "table4_6_objectives.csv");
   EXPECT_EQ(t4.substr(0, t4.find('\n')),
             "label,eta,eta_known,corner_pixels,corners,enclosed_areas,contours,unbacked_hits");
   // Listed recommended, knee, default, worst.
   EXPECT_LT(t4.find("\nrecommended,"), t4.find("\nknee,"));
   EXPECT_LT(t4.find("\nknee,"), t4.find("\ndefault,"));
   EXPECT_LT(t4.find("\ndefault,"), t4.find("\nworst,"));
-  EXPECT_THAT(Slurp(dir / "table7_loop_closures.csv"), HasSubstr("\nrecommended,11\n"));
-  EXPECT_THAT(Slurp(dir / "table8_loop_scans.csv"), HasSubstr("\nworst,100 137 174 211\n"));
-  EXPECT_THAT(Slurp(dir / "table9_10_errors.csv"), HasSubstr("\nknee,0.035,0.015,0.6,0.35,250\n"));
-  const std::string ev = Slurp(dir / "evaluations.csv");
+  EXPECT_THAT(ReadWholeFile(dir / "table7_loop_closures.csv"), HasSubstr("\nrecommended,11\n"));
+  EXPECT_THAT(ReadWholeFile(dir / "table8_loop_scans.csv"), HasSubstr("\nworst,100 137 174 211\n"));
+  EXPECT_THAT(ReadWholeFile(dir / "table9_10_errors.csv"), HasSubstr("\nknee,0.035,0.015,0.6,0.35,250\n"));
+  const std::string ev = ReadWholeFile(dir / "evaluations.csv");
   EXPECT_EQ(std::count(ev.begin(), ev.end(), '\n'), 1 + 14);
   // The failed run's reason is quoted; its metric cells are empty.
   EXPECT_THAT(ev, HasSubstr("failed,\"scan matcher threw: bad, \"\"quoted\"\" reason\",,,,,,,,,"));
@@ -298,7 +291,7 @@ TEST(WriteOptimizeReport, TablesMirrorThePapers) {
 TEST(WriteOptimizeReport, HtmlIsSelfContainedEscapedAndStatesTheVerdict) {
   const fs::path dir = FreshDir("html");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), dir.string());
-  const std::string html = Slurp(dir / "report.html");
+  const std::string html = ReadWholeFile(dir / "report.html");
   EXPECT_THAT(html, HasSubstr("The recommendation &lt;r=3, g=12&gt; beats the defaults &amp; closes more loops."));
   EXPECT_THAT(html, Not(HasSubstr("<r=3")));
   // The first screen's two maps (base, recommended), four maps, three generations, evolution,
@@ -328,7 +321,7 @@ TEST(WriteOptimizeReport, HtmlReadsAtAGlance) {
   r.settings["engine"] = {{"base", {{"resolution", 0.05}, {"scan_buffer_size", 70}}}, {"log", "office"}};
   r.settings["default"] = {{"loop_search_maximum_distance", 4.0}};
   WriteOptimizeReport(r, dir.string());
-  const std::string html = Slurp(dir / "report.html");
+  const std::string html = ReadWholeFile(dir / "report.html");
   // Settings as key/value rows: nested keys joined, no JSON and no float noise.
   EXPECT_THAT(html, HasSubstr("<th>tolerance</th><td>0.4</td>"));
   EXPECT_THAT(html, HasSubstr("<th>default.loop_search_maximum_distance</th><td>4</td>"));
@@ -355,7 +348,7 @@ TEST(WriteOptimizeReport, MergesTheSameSetAndWarnsOnABound) {
   const auto summary = WriteOptimizeReport(r, dir.string());
   EXPECT_THAT(summary.files, ::testing::Contains(std::string("map_recommended_knee.png")));
   EXPECT_FALSE(fs::exists(dir / "map_knee.png"));
-  const std::string html = Slurp(dir / "report.html");
+  const std::string html = ReadWholeFile(dir / "report.html");
   EXPECT_EQ(Count(html, "alt=\"map of "), 3);
   EXPECT_THAT(html, HasSubstr("alt=\"map of recommended = knee\""));
   EXPECT_THAT(html, HasSubstr("falls back to the tie-break"));
@@ -370,7 +363,7 @@ TEST(WriteOptimizeReport, IsDeterministic) {
   WriteOptimizeReport(testing::FakeOptimizeResult(true), b.string());
   int compared = 0;
   for (const auto& entry : fs::directory_iterator(a)) {
-    EXPECT_EQ(Slurp(entry.path()), Slurp(b / entry.path().filename())) << entry.path().filename();
+    EXPECT_EQ(ReadWholeFile(entry.path()), ReadWholeFile(b / entry.path().filename())) << entry.path().filename();
     ++compared;
   }
   EXPECT_EQ(compared, 29);
@@ -384,7 +377,7 @@ TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {
   EXPECT_TRUE(fs::exists(dir / "report.html"));
   EXPECT_TRUE(fs::exists(dir / "results.json"));
   EXPECT_FALSE(fs::exists(dir / "maps_side_by_side.png"));
-  const auto j = nlohmann::json::parse(Slurp(dir / "results.json"));
+  const auto j = nlohmann::json::parse(ReadWholeFile(dir / "results.json"));
   EXPECT_TRUE(j["recommended"].is_null());
   // A population made only of failed individuals, and a single candidate without a map.
   optim::OptimizeResult failed = testing::FakeOptimizeResult(false);

@@ -9,11 +9,6 @@
 namespace slamtune::report {
 namespace {
 
-bool Ok(const optim::EvaluationRecord& r) { return r.status == optim::RunStatus::kOk; }
-
-// A metric cell: empty for a failed run.
-std::string Metric(const optim::EvaluationRecord& r, double value) { return Ok(r) ? FormatNumber(value) : ""; }
-
 std::string Param(const std::map<std::string, double>& params, const std::string& name) {
   const auto it = params.find(name);
   return it == params.end() ? "" : FormatNumber(it->second);
@@ -26,6 +21,10 @@ std::vector<std::string> ErrorCells(const optim::EvaluationRecord& r) {
 }
 
 }  // namespace
+
+std::string FigureCell(const optim::EvaluationRecord& record, double value) {
+  return record.ok() ? FormatNumber(value) : "";
+}
 
 std::string JoinScans(const std::vector<int>& scans) {
   std::string out;
@@ -75,9 +74,9 @@ CsvTable ObjectivesTable(const optim::OptimizeResult& result) {
   t.header = {"label", "eta", "eta_known", "corner_pixels", "corners", "enclosed_areas", "contours", "unbacked_hits"};
   for (const auto* c : CandidatesInReportOrder(result)) {
     const auto& r = c->record;
-    t.AddRow({c->label, Metric(r, r.occupied_ratio), Metric(r, r.occupied_ratio_known), Metric(r, r.corner_pixels),
-              Metric(r, r.corners), Metric(r, r.enclosed_areas), Metric(r, r.contours),
-              Metric(r, optim::ValueOf(r, optim::Objective::kUnbackedHits))});
+    t.AddRow({c->label, FigureCell(r, r.occupied_ratio), FigureCell(r, r.occupied_ratio_known),
+              FigureCell(r, r.corner_pixels), FigureCell(r, r.corners), FigureCell(r, r.enclosed_areas),
+              FigureCell(r, r.contours), FigureCell(r, optim::ValueOf(r, optim::Objective::kUnbackedHits))});
   }
   return t;
 }
@@ -86,7 +85,7 @@ CsvTable LoopClosuresTable(const optim::OptimizeResult& result) {
   CsvTable t;
   t.header = {"label", "loop_closures"};
   for (const auto* c : CandidatesInReportOrder(result)) {
-    t.AddRow({c->label, Ok(c->record) ? std::to_string(c->record.loop_closures) : ""});
+    t.AddRow({c->label, c->record.ok() ? std::to_string(c->record.loop_closures) : ""});
   }
   return t;
 }
@@ -124,8 +123,8 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
     for (const auto& p : params) row.push_back(Param(r.params, p));
     row.insert(row.end(), {NameOf(r.status), r.reason});
     for (const optim::RecordFigure& figure : optim::RecordFigures())
-      row.push_back(Metric(r, optim::FigureValue(figure, r)));
-    row.insert(row.end(), {Ok(r) ? std::to_string(r.nodes) : "", Ok(r) ? std::to_string(r.loop_closures) : "",
+      row.push_back(FigureCell(r, optim::FigureValue(figure, r)));
+    row.insert(row.end(), {r.ok() ? std::to_string(r.nodes) : "", r.ok() ? std::to_string(r.loop_closures) : "",
                            FormatNumber(r.wall_s)});
     for (auto& cell : ErrorCells(r)) row.push_back(std::move(cell));
     t.AddRow(std::move(row));

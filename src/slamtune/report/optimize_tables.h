@@ -38,6 +38,9 @@ CsvTable EvaluationsTable(const std::vector<optim::EvaluationRecord>& evaluation
 std::vector<std::string> ParameterColumns(const std::vector<optim::EvaluationRecord>& records,
                                           const optim::SearchSpace& space);
 
+// A table cell of one of `record`'s figures: FormatNumber(value), empty for a failed run.
+std::string FigureCell(const optim::EvaluationRecord& record, double value);
+
 // "12 57 130" (empty for none).
 std::string JoinScans(const std::vector<int>& scans);
 

@@ -8,23 +8,14 @@
 #include <opencv2/imgproc.hpp>
 
 #include "slamtune/common/error.h"
+#include "slamtune/report/figure_style.h"
 #include "slamtune/report/report_text.h"
 
 namespace slamtune::report {
 namespace {
 
-const cv::Scalar kWhite(255, 255, 255);
-const cv::Scalar kBlack(0, 0, 0);
-const cv::Scalar kTextGrey(60, 60, 60);
-constexpr int kMargin = 10;         // px around everything
-constexpr int kTickLength = 5;      // px, left of an axis
-constexpr int kGap = 6;             // px between a label and what it labels
 constexpr int kLegendSample = 30;   // px, the line sample of a legend entry
 constexpr int kLegendSpacing = 24;  // px between legend entries in a row
-
-void Require(bool ok, const std::string& field, double value, const std::string& rule) {
-  if (!ok) throw InputError(fmt::format("{} = {}: {}", field, value, rule));
-}
 
 // The legend's entries placed in rows of at most `width` px; returns each entry's top-left
 // corner relative to the legend's origin and the legend's height.
@@ -63,8 +54,8 @@ void DrawEndTriangle(cv::Mat& image, cv::Point end, bool up, int size, const cv:
   cv::fillConvexPoly(image, tri, 3, colour, cv::LINE_AA);
 }
 
-void DrawLegend(cv::Mat& image, const std::vector<ParallelLegendEntry>& legend, const std::vector<cv::Point>& at,
-                cv::Point origin, double scale) {
+void DrawParallelLegend(cv::Mat& image, const std::vector<ParallelLegendEntry>& legend,
+                        const std::vector<cv::Point>& at, cv::Point origin, double scale) {
   const int line_h = TextSize("Ag", scale).height;
   for (std::size_t i = 0; i < legend.size(); ++i) {
     const cv::Point p = origin + at[i];
@@ -82,13 +73,13 @@ void DrawLegend(cv::Mat& image, const std::vector<ParallelLegendEntry>& legend, 
 }  // namespace
 
 void ParallelCoordinatesOptions::Validate() const {
-  Require(width >= 160, "ParallelCoordinatesOptions.width", width, "must be >= 160 px");
-  Require(height >= 160, "ParallelCoordinatesOptions.height", height, "must be >= 160 px");
-  Require(font_scale > 0.0 && font_scale <= 4.0, "ParallelCoordinatesOptions.font_scale", font_scale,
-          "must be in (0, 4]");
-  Require(target_ticks >= 2, "ParallelCoordinatesOptions.target_ticks", target_ticks, "must be >= 2");
-  Require(marker_size >= 4 && marker_size <= 100, "ParallelCoordinatesOptions.marker_size", marker_size,
-          "must be in [4, 100] px");
+  RequireOption(width >= 160, "ParallelCoordinatesOptions.width", width, "must be >= 160 px");
+  RequireOption(height >= 160, "ParallelCoordinatesOptions.height", height, "must be >= 160 px");
+  RequireOption(font_scale > 0.0 && font_scale <= 4.0, "ParallelCoordinatesOptions.font_scale", font_scale,
+                "must be in (0, 4]");
+  RequireOption(target_ticks >= 2, "ParallelCoordinatesOptions.target_ticks", target_ticks, "must be >= 2");
+  RequireOption(marker_size >= 4 && marker_size <= 100, "ParallelCoordinatesOptions.marker_size", marker_size,
+                "must be in [4, 100] px");
 }
 
 AxisPlacement PlaceOnAxis(double value, const AxisLimits& limits) {
@@ -137,9 +128,9 @@ RenderedParallel RenderParallelCoordinates(const std::vector<ParallelAxis>& axes
   SLAMTUNE_CHECK_MSG(axes.size() >= 2, "a parallel-coordinates plot needs at least two axes");
   for (std::size_t a = 0; a < axes.size(); ++a) {
     const AxisLimits& l = axes[a].limits;
-    Require(std::isfinite(l.lower), fmt::format("ParallelAxis[{}].limits.lower", a), l.lower, "must be finite");
-    Require(std::isfinite(l.upper) && l.upper > l.lower, fmt::format("ParallelAxis[{}].limits.upper", a), l.upper,
-            "must be finite and > lower");
+    RequireOption(std::isfinite(l.lower), fmt::format("ParallelAxis[{}].limits.lower", a), l.lower, "must be finite");
+    RequireOption(std::isfinite(l.upper) && l.upper > l.lower, fmt::format("ParallelAxis[{}].limits.upper", a), l.upper,
+                  "must be finite and > lower");
   }
   for (const ParallelLine& line : lines) {
     SLAMTUNE_CHECK_MSG(line.values.size() == axes.size(), "a parallel-coordinates line needs one value per axis");
@@ -251,7 +242,7 @@ RenderedParallel RenderParallelCoordinates(const std::vector<ParallelAxis>& axes
         up ? end.y - kGap / 2 - options.marker_size - 2 - ts.height : end.y + kGap / 2 + options.marker_size + 2;
     DrawText(image, text, {end.x - ts.width / 2, ty}, scale, m.colour);
   }
-  DrawLegend(image, legend, legend_at, {kMargin, legend_y}, scale);
+  DrawParallelLegend(image, legend, legend_at, {kMargin, legend_y}, scale);
   return out;
 }
 

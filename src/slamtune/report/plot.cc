@@ -10,22 +10,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "slamtune/common/error.h"
+#include "slamtune/report/figure_style.h"
 
 namespace slamtune::report {
 namespace {
 
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
-const cv::Scalar kWhite(255, 255, 255);
-const cv::Scalar kBlack(0, 0, 0);
 const cv::Scalar kGridGrey(225, 225, 225);
-const cv::Scalar kTextGrey(60, 60, 60);
-constexpr int kMargin = 10;     // px around everything
-constexpr int kTickLength = 5;  // px, outward
-constexpr int kGap = 6;         // px between a label and what it labels
-
-void Require(bool ok, const std::string& field, double value, const std::string& rule) {
-  if (!ok) throw InputError(fmt::format("{} = {}: {}", field, value, rule));
-}
 
 bool Finite(double x, double y) { return std::isfinite(x) && std::isfinite(y); }
 
@@ -150,25 +141,27 @@ void DrawLegend(cv::Mat& image, const std::vector<LegendEntry>& legend, cv::Poin
 }  // namespace
 
 void PlotOptions::Validate() const {
-  Require(width >= 160, "PlotOptions.width", width, "must be >= 160 px");
-  Require(height >= 120, "PlotOptions.height", height, "must be >= 120 px");
-  Require(font_scale > 0.0 && font_scale <= 4.0, "PlotOptions.font_scale", font_scale, "must be in (0, 4]");
-  Require(target_ticks >= 2, "PlotOptions.target_ticks", target_ticks, "must be >= 2");
-  Require(marker_size >= 1 && marker_size <= 100, "PlotOptions.marker_size", marker_size, "must be in [1, 100] px");
-  Require(line_thickness >= 1 && line_thickness <= 20, "PlotOptions.line_thickness", line_thickness,
-          "must be in [1, 20] px");
+  RequireOption(width >= 160, "PlotOptions.width", width, "must be >= 160 px");
+  RequireOption(height >= 120, "PlotOptions.height", height, "must be >= 120 px");
+  RequireOption(font_scale > 0.0 && font_scale <= 4.0, "PlotOptions.font_scale", font_scale, "must be in (0, 4]");
+  RequireOption(target_ticks >= 2, "PlotOptions.target_ticks", target_ticks, "must be >= 2");
+  RequireOption(marker_size >= 1 && marker_size <= 100, "PlotOptions.marker_size", marker_size,
+                "must be in [1, 100] px");
+  RequireOption(line_thickness >= 1 && line_thickness <= 20, "PlotOptions.line_thickness", line_thickness,
+                "must be in [1, 20] px");
   for (const auto& [name, limits] : {std::pair{"x_limits", x_limits}, std::pair{"y_limits", y_limits}}) {
     if (!limits) continue;
-    Require(std::isfinite(limits->lower), fmt::format("PlotOptions.{}.lower", name), limits->lower, "must be finite");
-    Require(std::isfinite(limits->upper) && limits->upper > limits->lower, fmt::format("PlotOptions.{}.upper", name),
-            limits->upper, "must be finite and > lower");
+    RequireOption(std::isfinite(limits->lower), fmt::format("PlotOptions.{}.lower", name), limits->lower,
+                  "must be finite");
+    RequireOption(std::isfinite(limits->upper) && limits->upper > limits->lower,
+                  fmt::format("PlotOptions.{}.upper", name), limits->upper, "must be finite and > lower");
   }
 }
 
 void GridOptions::Validate() const {
-  Require(columns >= 1, "GridOptions.columns", columns, "must be >= 1");
-  Require(padding >= 0 && padding <= 200, "GridOptions.padding", padding, "must be in [0, 200] px");
-  Require(font_scale > 0.0 && font_scale <= 4.0, "GridOptions.font_scale", font_scale, "must be in (0, 4]");
+  RequireOption(columns >= 1, "GridOptions.columns", columns, "must be >= 1");
+  RequireOption(padding >= 0 && padding <= 200, "GridOptions.padding", padding, "must be in [0, 200] px");
+  RequireOption(font_scale > 0.0 && font_scale <= 4.0, "GridOptions.font_scale", font_scale, "must be in (0, 4]");
 }
 
 Series MakeSeries(std::string name, std::vector<double> x, std::vector<double> y, SeriesStyle style) {

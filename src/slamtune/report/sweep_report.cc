@@ -23,10 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool Ok(const optim::EvaluationRecord& r) { return r.status == optim::RunStatus::kOk; }
-
-std::string Metric(const optim::EvaluationRecord& r, double v) { return Ok(r) ? FormatNumber(v) : ""; }
-
 std::string Title(optim::Objective objective) { return optim::InfoOf(objective).title; }
 
 double Unbacked(const optim::EvaluationRecord& r) { return optim::ValueOf(r, optim::Objective::kUnbackedHits); }
@@ -42,12 +38,12 @@ CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>&
   for (const auto& p : points) {
     const auto& r = p.record;
     std::vector<std::string> row = {parameter, FormatNumber(p.value), NameOf(r.status), r.reason,
-                                    Ok(r) ? std::to_string(r.loop_closures) : ""};
+                                    r.ok() ? std::to_string(r.loop_closures) : ""};
     for (const optim::RecordFigure& figure : optim::RecordFigures())
-      row.push_back(Metric(r, optim::FigureValue(figure, r)));
-    row.insert(row.end(), {Ok(r) ? std::to_string(r.nodes) : "", FormatNumber(r.wall_s)});
+      row.push_back(FigureCell(r, optim::FigureValue(figure, r)));
+    row.insert(row.end(), {r.ok() ? std::to_string(r.nodes) : "", FormatNumber(r.wall_s)});
     if (gt) {
-      const bool has = Ok(r) && r.has_gt;
+      const bool has = r.ok() && r.has_gt;
       row.insert(row.end(), {has ? FormatNumber(r.trans_mean_m) : "", has ? FormatNumber(r.trans_std_m) : "",
                              has ? FormatNumber(r.rot_mean_deg) : "", has ? FormatNumber(r.rot_std_deg) : "",
                              has ? std::to_string(r.relations_used) : ""});
@@ -89,7 +85,7 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
     Series s = MakeSeries("", {}, {}, SeriesStyle::kLineAndMarkers);
     s.colour = PaletteColour(k == 0 ? 1 : 0);
     for (const auto& p : points) {
-      if (!Ok(p.record) || (q.needs_gt && !p.record.has_gt)) continue;
+      if (!p.record.ok() || (q.needs_gt && !p.record.has_gt)) continue;
       s.x.push_back(p.value);
       s.y.push_back(q.get(p.record));
     }
@@ -106,7 +102,7 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
   GridOptions g;
   g.columns = 3;
   const int failed =
-      static_cast<int>(std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return !Ok(p.record); }));
+      static_cast<int>(std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return !p.record.ok(); }));
   g.title = fmt::format("Sweep of {}{}", parameter,
                         failed ? fmt::format(" ({} failed run{} not shown)", failed, failed == 1 ? "" : "s") : "");
   return ComposeGrid(panels, g);
@@ -142,8 +138,8 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
   std::vector<std::vector<std::string>> rows;
   for (const auto& p : points) {
     const auto& r = p.record;
-    std::vector<std::string> row = {FormatParam(p.value), Ok(r) ? "ok" : "failed: " + r.reason};
-    if (Ok(r)) {
+    std::vector<std::string> row = {FormatParam(p.value), r.ok() ? "ok" : "failed: " + r.reason};
+    if (r.ok()) {
       row.insert(row.end(), {std::to_string(r.loop_closures), fmt::format("{:.4g}", Unbacked(r)),
                              fmt::format("{:.5g}", r.occupied_ratio), fmt::format("{:.5g}", r.corner_pixels),
                              fmt::format("{:.5g}", r.enclosed_areas)});
@@ -151,7 +147,7 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
       row.insert(row.end(), {"", "", "", "", ""});
     }
     if (gt) {
-      const bool has = Ok(r) && r.has_gt;
+      const bool has = r.ok() && r.has_gt;
       row.push_back(has ? FormatMeanStd(r.trans_mean_m, r.trans_std_m) : "");
       row.push_back(has ? FormatMeanStd(r.rot_mean_deg, r.rot_std_deg) : "");
     }
@@ -195,7 +191,7 @@ SweepReportSummary WriteSweepReport(const std::string& parameter, const std::vec
   summary.dir = dir;
   summary.points = static_cast<int>(sorted.size());
   for (const auto& p : sorted) {
-    summary.failed += Ok(p.record) ? 0 : 1;
+    summary.failed += p.record.ok() ? 0 : 1;
     summary.with_ground_truth = summary.with_ground_truth || p.record.has_gt;
   }
   std::error_code ec;

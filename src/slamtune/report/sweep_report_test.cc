@@ -4,13 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
-#include <sstream>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/common/text_file.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
 
 namespace slamtune::report {
@@ -18,13 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
-
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<SweepPoint> Points(bool gt) {
   std::vector<SweepPoint> points;
@@ -44,7 +36,7 @@ TEST(WriteSweepReport, WritesCsvFigureAndPage) {
   EXPECT_EQ(summary.points, 9);
   EXPECT_EQ(summary.failed, 1);
   EXPECT_TRUE(summary.with_ground_truth);
-  const std::string csv = Slurp(dir / "sweep.csv");
+  const std::string csv = ReadWholeFile(dir / "sweep.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "parameter,value,status,reason,loop_closures,occupied_ratio,corner_pixels,enclosed_areas,"
             "occupied_ratio_known,corners,contours,occupied_cells,hits,hits_in_free_cells,hits_in_unknown_cells,"
@@ -63,7 +55,7 @@ TEST(WriteSweepReport, WritesCsvFigureAndPage) {
   ASSERT_FALSE(png.empty());
   EXPECT_GE(png.cols, 3 * 460);  // 2 x 3 panels with ground truth
   EXPECT_GE(png.rows, 2 * 340);
-  const std::string html = Slurp(dir / "sweep.html");
+  const std::string html = ReadWholeFile(dir / "sweep.html");
   EXPECT_THAT(html, HasSubstr("data:image/png;base64,iVBORw0KGgo"));
   EXPECT_THAT(html, HasSubstr("intel.clf.gz"));
   EXPECT_THAT(html, HasSubstr("failed: matcher threw"));
@@ -73,7 +65,7 @@ TEST(WriteSweepReport, WithoutGroundTruthHasNoErrorColumns) {
   const fs::path dir = slamtune::testing::UniqueTempDir("sweep_nogt");
   const auto summary = WriteSweepReport("loop_match_minimum_chain_size", Points(false), dir.string());
   EXPECT_FALSE(summary.with_ground_truth);
-  EXPECT_THAT(Slurp(dir / "sweep.csv"), ::testing::Not(HasSubstr("trans_mean_m")));
+  EXPECT_THAT(ReadWholeFile(dir / "sweep.csv"), ::testing::Not(HasSubstr("trans_mean_m")));
   const cv::Mat png = cv::imread((dir / "sweep.png").string());
   EXPECT_LT(png.rows, 3 * 340);  // loop closures and four map figures: 2 rows of 3 panels
 }

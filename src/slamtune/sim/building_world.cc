@@ -27,7 +27,7 @@ namespace {
 using V = Eigen::Vector2d;
 using Opening = WallBuilder::Opening;
 
-constexpr double kDoor = 1.2;  // doorway width (m)
+constexpr double kBuildingDoor = 1.2;  // doorway width (m)
 
 // A room's frame: the doorway's centre `door` on the wall the room is entered through, `inward`
 // into the room and `along` the wall. Box(u0, d0, u1, d1) is the rectangle u0..u1 along the wall
@@ -42,7 +42,7 @@ struct RoomFrame {
 
 // Furniture of the 6 m deep band rooms, one of five arrangements (0-4), none in the room's middle, where
 // the route goes round. `left` and `right` are the room's extent either side of the doorway (m).
-void FurnishBandRoom(WallBuilder& walls, const RoomFrame& room, double left, double right, int variant) {
+void FurnishBuildingBandRoom(WallBuilder& walls, const RoomFrame& room, double left, double right, int variant) {
   const double l = -left + 0.2, r = right - 0.2;  // 0.2 m off the side walls
   switch (variant) {
     case 0:
@@ -79,7 +79,7 @@ void FurnishBandRoom(WallBuilder& walls, const RoomFrame& room, double left, dou
 void BandOfRooms(WallBuilder& walls, double y_wall, double y_outer, const std::vector<double>& partitions,
                  const std::vector<double>& doors, const std::vector<int>& variants) {
   std::vector<Opening> openings;
-  for (double x : doors) openings.push_back({x, kDoor, 0.0});
+  for (double x : doors) openings.push_back({x, kBuildingDoor, 0.0});
   walls.WallWithOpenings(V(0, y_wall), V(60, y_wall), openings);
   const double sign = y_outer > y_wall ? 1.0 : -1.0;
   for (double x : partitions) walls.Wall(V(x, y_wall), V(x, y_outer));
@@ -88,7 +88,7 @@ void BandOfRooms(WallBuilder& walls, double y_wall, double y_outer, const std::v
   edges.push_back(60.0);
   for (std::size_t i = 0; i < doors.size(); ++i) {
     const RoomFrame room{V(doors[i], y_wall), V(0, sign), V(1, 0)};
-    FurnishBandRoom(walls, room, doors[i] - edges[i], edges[i + 1] - doors[i], variants[i]);
+    FurnishBuildingBandRoom(walls, room, doors[i] - edges[i], edges[i + 1] - doors[i], variants[i]);
   }
 }
 
@@ -101,13 +101,13 @@ void BlockWall(WallBuilder& walls, const V& a, const V& b, double side, double f
   std::vector<Opening> openings;
   std::size_t next_door = 0;
   for (double at = first; at + 0.6 < length; at += spacing) {
-    while (next_door < doors.size() && doors[next_door] + kDoor / 2 < at - 0.6 - 0.3) {
-      openings.push_back({doors[next_door++], kDoor, 0.0});
+    while (next_door < doors.size() && doors[next_door] + kBuildingDoor / 2 < at - 0.6 - 0.3) {
+      openings.push_back({doors[next_door++], kBuildingDoor, 0.0});
     }
-    if (next_door < doors.size() && std::abs(doors[next_door] - at) < kDoor / 2 + 0.6 + 0.3) continue;
+    if (next_door < doors.size() && std::abs(doors[next_door] - at) < kBuildingDoor / 2 + 0.6 + 0.3) continue;
     openings.push_back({at, 1.2, 0.4 * side});
   }
-  while (next_door < doors.size()) openings.push_back({doors[next_door++], kDoor, 0.0});
+  while (next_door < doors.size()) openings.push_back({doors[next_door++], kBuildingDoor, 0.0});
   walls.WallWithOpenings(a, b, openings);
 }
 

@@ -32,19 +32,21 @@ TEST(LaserOptions, ValidateNamesFieldValueAndRule) {
   LaserOptions laser;
   laser.beams = 1;
   EXPECT_THAT([&] { laser.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("laser beams = 1: must be in [2, 100000]")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("laser beams = 1: must be in [2, 100000]")));
   laser = LaserOptions();
   laser.fov_deg = 400;
-  EXPECT_THAT([&] { laser.Validate(); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("fov_deg = 400")));
+  EXPECT_THAT([&] { laser.Validate(); }, ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("fov_deg = 400")));
   laser = LaserOptions();
   laser.max_range_m = -1;
-  EXPECT_THAT([&] { laser.Validate(); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("max_range_m = -1")));
+  EXPECT_THAT([&] { laser.Validate(); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("max_range_m = -1")));
   laser = LaserOptions();
   laser.range_noise_m = -0.1;
-  EXPECT_THAT([&] { laser.Validate(); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("range_noise_m")));
+  EXPECT_THAT([&] { laser.Validate(); }, ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("range_noise_m")));
   laser = LaserOptions();
   laser.range_resolution_m = 0.003;  // 1/0.003 is not whole
-  EXPECT_THAT([&] { laser.Validate(); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("range_resolution_m")));
+  EXPECT_THAT([&] { laser.Validate(); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("range_resolution_m")));
 }
 
 TEST(SimulateScan, NoiselessReadingsAreExactDistances) {

@@ -7,9 +7,12 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/sim/testing/odometry_faults.h"
 
 namespace slamtune::sim {
 namespace {
+
+using testing::Fault;
 
 constexpr double kStep = 0.05;  // m between consecutive robot poses
 
@@ -43,15 +46,6 @@ io::LaserLog SyntheticLog(std::size_t poses, double curvature = 0.0, const Pose2
     pose = Compose(pose, Pose2{kStep, 0.0, turn});
   }
   return log;
-}
-
-OdometryFault Fault(OdometryFaultKind kind, double start_m, double length_m, double magnitude = 0.0) {
-  OdometryFault fault;
-  fault.kind = kind;
-  fault.start_m = start_m;
-  fault.length_m = length_m;
-  fault.magnitude = magnitude;
-  return fault;
 }
 
 // Robot poses of the log in file order (ODOM and scans alternate).
@@ -100,8 +94,8 @@ TEST(PlantLogFaults, JumpMovesEverythingAfterTheStretchOnByItsMagnitude) {
   EXPECT_EQ(*planted.first_scan, 20u);
   EXPECT_EQ(planted.first_time, plain.scans[20].ipc_time - plain.scans[0].ipc_time);
   EXPECT_EQ(planted.scans_within, 5u);
-  EXPECT_THAT(planted.Describe(), testing::HasSubstr("jump at 2.01 m over 0.5 m"));
-  EXPECT_THAT(planted.Describe(), testing::HasSubstr("from scan 20"));
+  EXPECT_THAT(planted.Describe(), ::testing::HasSubstr("jump at 2.01 m over 0.5 m"));
+  EXPECT_THAT(planted.Describe(), ::testing::HasSubstr("from scan 20"));
 }
 
 // Readings, timestamps, lines, velocities and everything but the odometric poses stay as they were.
@@ -213,8 +207,8 @@ TEST(PlantLogFaults, RefusesAStretchBeyondTheTravelAndLogsWithoutAPath) {
     PlantLogFaults(log, {Fault(OdometryFaultKind::kJump, 1.0, 0.1, 1.0), Fault(OdometryFaultKind::kReverse, 4.0, 1.0)});
     FAIL() << "no exception";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("fault 2 (reverse at 4 m over 1 m"));
-    EXPECT_THAT(e.what(), testing::HasSubstr("ends at 5 m, beyond the log's odometric travel of 4.95 m"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("fault 2 (reverse at 4 m over 1 m"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("ends at 5 m, beyond the log's odometric travel of 4.95 m"));
   }
   EXPECT_EQ(RobotPoses(log), RobotPoses(plain)) << "nothing changed";
   EXPECT_THROW(PlantLogFaults(log, {Fault(OdometryFaultKind::kSpin, 1.0, 0.0, 1.0)}), InputError);
@@ -223,7 +217,7 @@ TEST(PlantLogFaults, RefusesAStretchBeyondTheTravelAndLogsWithoutAPath) {
     PlantLogFaults(single, {Fault(OdometryFaultKind::kJump, 0.0, 0.1, 1.0)});
     FAIL() << "no exception";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("1 robot poses"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("1 robot poses"));
   }
 }
 

@@ -7,21 +7,14 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
+#include "slamtune/sim/testing/odometry_faults.h"
 
 namespace slamtune::sim {
 namespace {
 
-using testing::HasSubstr;
-using testing::ThrowsMessage;
-
-OdometryFault Fault(OdometryFaultKind kind, double start, double length, double magnitude) {
-  OdometryFault fault;
-  fault.kind = kind;
-  fault.start_m = start;
-  fault.length_m = length;
-  fault.magnitude = magnitude;
-  return fault;
-}
+using testing::Fault;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 TEST(OdometryFault, KindNamesRoundTrip) {
   for (OdometryFaultKind kind : {OdometryFaultKind::kSpin, OdometryFaultKind::kJump, OdometryFaultKind::kReverse}) {

@@ -68,16 +68,16 @@ TEST(OdometryNoiseOptions, ValidateNamesFieldValueAndRule) {
   OdometryNoiseOptions options;
   EXPECT_NO_THROW(options.Validate());
   options.translation_noise = -1;
-  EXPECT_THAT([&] { options.Validate(); }, testing::ThrowsMessage<InputError>(testing::HasSubstr(
+  EXPECT_THAT([&] { options.Validate(); }, ::testing::ThrowsMessage<InputError>(::testing::HasSubstr(
                                                "odometry translation_noise = -1: must be finite and >= 0")));
   options = OdometryNoiseOptions();
   options.rotation_scale_bias = 0.7;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("rotation_scale_bias = 0.7")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("rotation_scale_bias = 0.7")));
   options = OdometryNoiseOptions();
   options.heading_drift_per_m = 1.0;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("heading_drift_per_m = 1")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("heading_drift_per_m = 1")));
 }
 
 // A spin fault turns the odometry by its magnitude within its stretch and nowhere else, and

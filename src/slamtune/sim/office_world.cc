@@ -19,12 +19,12 @@ namespace {
 using V = Eigen::Vector2d;
 using Opening = WallBuilder::Opening;
 
-constexpr double kDoor = 1.0;  // doorway width (m)
+constexpr double kOfficeDoor = 1.0;  // doorway width (m)
 constexpr double kDoorsX[] = {3.5, 10.5, 17.5, 24.5};
 
 // Furniture of the 7 x 4 m band rooms, different in each room so that rooms do not look alike.
 // `x0` is the room's west wall, `y_wall` its corridor wall, `sign` +1 when the room lies north.
-void FurnishBandRoom(WallBuilder& walls, double x0, double y_wall, double sign, int variant) {
+void FurnishOfficeBandRoom(WallBuilder& walls, double x0, double y_wall, double sign, int variant) {
   const auto box = [&](double xa, double da, double xb, double db) {
     // (xa, da)-(xb, db): x from the room's west wall, d metres from the corridor wall.
     const double ya = y_wall + sign * da, yb = y_wall + sign * db;
@@ -58,7 +58,7 @@ World MakeOfficeWorld() {
   walls.Box(V(0, 0), V(28, 20));  // outline
   // Room bands: corridor walls with doors, and partitions between rooms.
   std::vector<Opening> band_doors;
-  for (double x : kDoorsX) band_doors.push_back({x, kDoor, 0.0});
+  for (double x : kDoorsX) band_doors.push_back({x, kOfficeDoor, 0.0});
   walls.WallWithOpenings(V(0, 4), V(28, 4), band_doors);
   walls.WallWithOpenings(V(0, 16), V(28, 16), band_doors);
   for (double x : {7.0, 14.0, 21.0}) {
@@ -66,12 +66,12 @@ World MakeOfficeWorld() {
     walls.Wall(V(x, 16), V(x, 20));
   }
   for (int room = 0; room < 4; ++room) {
-    FurnishBandRoom(walls, 7.0 * room, 4.0, -1.0, room);
-    FurnishBandRoom(walls, 7.0 * room, 16.0, 1.0, room + 2);
+    FurnishOfficeBandRoom(walls, 7.0 * room, 4.0, -1.0, room);
+    FurnishOfficeBandRoom(walls, 7.0 * room, 16.0, 1.0, room + 2);
   }
   // Lab (x 2..13, y 6..14): doors to the south corridor (x = 7) and the middle corridor (y = 10).
-  walls.WallWithOpenings(V(2, 6), V(13, 6), {{5.0, kDoor, 0.0}});
-  walls.WallWithOpenings(V(13, 6), V(13, 14), {{4.0, kDoor, 0.0}});
+  walls.WallWithOpenings(V(2, 6), V(13, 6), {{5.0, kOfficeDoor, 0.0}});
+  walls.WallWithOpenings(V(13, 6), V(13, 14), {{4.0, kOfficeDoor, 0.0}});
   walls.WallWithOpenings(V(13, 14), V(2, 14), {{3.0, 1.2, 0.4}, {8.0, 1.2, 0.4}});  // niches into the lab
   walls.Wall(V(2, 14), V(2, 6));
   walls.Box(V(3.0, 7.0), V(5.0, 8.2));  // desks
@@ -80,8 +80,8 @@ World MakeOfficeWorld() {
   walls.Box(V(9.0, 11.6), V(11.0, 12.8));
   walls.Box(V(4.5, 9.6), V(5.1, 10.2));  // pillar
   // East block (x 15..26, y 6..14): two rooms split at y = 10, doors to the south and north corridors.
-  walls.WallWithOpenings(V(15, 6), V(26, 6), {{5.5, kDoor, 0.0}});
-  walls.WallWithOpenings(V(15, 14), V(26, 14), {{5.5, kDoor, 0.0}});
+  walls.WallWithOpenings(V(15, 6), V(26, 6), {{5.5, kOfficeDoor, 0.0}});
+  walls.WallWithOpenings(V(15, 14), V(26, 14), {{5.5, kOfficeDoor, 0.0}});
   walls.WallWithOpenings(V(15, 6), V(15, 14), {{2.0, 1.2, -0.4}, {6.0, 1.2, -0.4}});  // niches off the middle corridor
   walls.Wall(V(26, 6), V(26, 14));
   walls.Wall(V(15, 10), V(26, 10));

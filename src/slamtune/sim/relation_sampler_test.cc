@@ -64,11 +64,11 @@ TEST(RelationSamplingOptions, ValidateNamesFieldValueAndRule) {
   RelationSamplingOptions options;
   options.stride = 0;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("relations stride = 0: must be >= 1")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("relations stride = 0: must be >= 1")));
   options = RelationSamplingOptions();
   options.revisit_radius_m = 0;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("revisit_radius_m = 0")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("revisit_radius_m = 0")));
 }
 
 }  // namespace

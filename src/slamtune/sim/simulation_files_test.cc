@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class SimulationFilesTest : public testing::Test {
+class SimulationFilesTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("slamtune_sim_files_" + std::to_string(getpid()));
@@ -95,8 +95,8 @@ TEST_F(SimulationFilesTest, WritesThreeFilesThatReadBackAsSimulated) {
 
   // The header says what was simulated and names the no-return PARAM.
   const std::string text = Slurp(files.log);
-  EXPECT_THAT(text, testing::HasSubstr("# simulated by slamtune: world office (seed 1)"));
-  EXPECT_THAT(text, testing::HasSubstr("\nPARAM laser_front_laser_max_range 30 slamtune 0\n"));
+  EXPECT_THAT(text, ::testing::HasSubstr("# simulated by slamtune: world office (seed 1)"));
+  EXPECT_THAT(text, ::testing::HasSubstr("\nPARAM laser_front_laser_max_range 30 slamtune 0\n"));
 }
 
 TEST_F(SimulationFilesTest, SameSeedSameBytes) {

@@ -218,7 +218,7 @@ TEST(Simulate, PlantedFaultActsWhereAndOnlyWhereConfigured) {
   EXPECT_TRUE(plain.odometry.faults.empty());
   EXPECT_TRUE(plain.summary.odometry_faults.empty());
   ASSERT_EQ(faulty.summary.odometry_faults.size(), 1u);
-  EXPECT_THAT(faulty.summary.Report(), testing::HasSubstr("planted odometry fault: jump at 20 m over 0.1 m"));
+  EXPECT_THAT(faulty.summary.Report(), ::testing::HasSubstr("planted odometry fault: jump at 20 m over 0.1 m"));
 }
 
 // The healthy twin of a fault world: the world's own faults left out, the user's kept.
@@ -291,23 +291,25 @@ TEST(SimulationOptions, ValidateNamesFieldValueAndRule) {
   SimulationOptions options;
   EXPECT_NO_THROW(options.Validate());
   options.world = "moon";
-  EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("world = 'moon': must be one of office, hall")));
+  EXPECT_THAT([&] { options.Validate(); }, ::testing::ThrowsMessage<InputError>(
+                                               ::testing::HasSubstr("world = 'moon': must be one of office, hall")));
   options = SimulationOptions();
   options.scan_rate_hz = 0;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("scan_rate_hz = 0: must be in (0, 100]")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("scan_rate_hz = 0: must be in (0, 100]")));
   options = SimulationOptions();
   options.laser.beams = 0;
-  EXPECT_THAT([&] { Simulate(options); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("laser beams = 0")));
+  EXPECT_THAT([&] { Simulate(options); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("laser beams = 0")));
   options = SimulationOptions();
   options.odometry.faults.resize(2);
   options.odometry.faults[1].length_m = -1.0;
   EXPECT_THAT([&] { options.Validate(); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("odometry faults[1] (spin) length_m = -1")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("odometry faults[1] (spin) length_m = -1")));
   options = SimulationOptions();
   options.max_scans = 100;
-  EXPECT_THAT([&] { Simulate(options); }, testing::ThrowsMessage<InputError>(testing::HasSubstr("max_scans = 100")));
+  EXPECT_THAT([&] { Simulate(options); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("max_scans = 100")));
 }
 
 }  // namespace

@@ -99,9 +99,9 @@ TEST(WorldCatalog, UnknownNameIsAnInputErrorListingTheWorlds) {
     MakeWorld("moon");
     FAIL() << "no exception";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("'moon'"));
-    EXPECT_THAT(e.what(), testing::HasSubstr("office, hall, corridor, office-slip, office-jump, corridor-long, "
-                                             "building, building-broken"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("'moon'"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("office, hall, corridor, office-slip, office-jump, corridor-long, "
+                                               "building, building-broken"));
   }
 }
 

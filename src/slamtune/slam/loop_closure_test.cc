@@ -6,9 +6,12 @@
 #include <cmath>
 #include <set>
 
+#include "slamtune/slam/testing/chain_graph.h"
+
 namespace slamtune::slam {
 namespace {
 
+using testing::ChainGraph;
 using ::testing::ElementsAre;
 using ::testing::IsEmpty;
 
@@ -17,16 +20,6 @@ std::vector<int> All(const std::vector<Pose2>& refs) {
   std::vector<int> ids(refs.size());
   for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<int>(i);
   return ids;
-}
-
-// Vertices with the given reference poses and sequential edges i-1 -> i.
-PoseGraph ChainGraph(const std::vector<Pose2>& refs) {
-  PoseGraph g;
-  for (const Pose2& p : refs) g.AddVertex(p);
-  for (int i = 1; i < static_cast<int>(refs.size()); ++i) {
-    g.LinkScans(i - 1, i, {}, {}, Eigen::Matrix3d::Identity(), EdgeKind::kSequential);
-  }
-  return g;
 }
 
 // The worked example of §6.5: scans 0..29, current 29, r = 2. Inside r: {0..3}, {10}, {15, 16},

@@ -3,9 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "slamtune/slam/testing/chain_graph.h"
+
 namespace slamtune::slam {
 namespace {
 
+using testing::ChainGraph;
 using ::testing::ElementsAre;
 using ::testing::IsEmpty;
 
@@ -14,16 +17,6 @@ ScansByLaser OneLaser(std::size_t n) {
   ScansByLaser lasers;
   for (std::size_t i = 0; i < n; ++i) lasers.Add(0);
   return lasers;
-}
-
-// A graph of `refs.size()` vertices with sequential edges i-1 -> i.
-PoseGraph ChainGraph(const std::vector<Pose2>& refs) {
-  PoseGraph g;
-  for (const Pose2& p : refs) g.AddVertex(p);
-  for (int i = 1; i < static_cast<int>(refs.size()); ++i) {
-    g.LinkScans(i - 1, i, {}, {}, Eigen::Matrix3d::Identity(), EdgeKind::kSequential);
-  }
-  return g;
 }
 
 TEST(ClosestInChain, FirstMemberWinsTies) {

@@ -112,7 +112,7 @@ TEST(ParamsYaml, AConsistentMatcherSetIsTakenInAnyOrder) {
   EXPECT_EQ(p.correlation_search_space_resolution, 0.1);
 }
 
-std::string Toolbox(const std::string& body) { return "slam_toolbox:\n  ros__parameters:\n" + body; }
+std::string ToolboxYaml(const std::string& body) { return "slam_toolbox:\n  ros__parameters:\n" + body; }
 
 const KeyReport& KeyOf(const ParamsYamlReport& report, const std::string& key) {
   for (const KeyReport& k : report.keys) {
@@ -124,11 +124,11 @@ const KeyReport& KeyOf(const ParamsYamlReport& report, const std::string& key) {
 TEST(ParamsYaml, CeresKeysAreReadAsTheNodeMapsThem) {
   MapperParams p = NodeDefaults(RosNode::kSlamToolbox);
   const ParamsYamlReport r = ApplyParamsYaml(p,
-                                             Toolbox("    ceres_linear_solver: SPARSE_SCHUR\n"
-                                                     "    ceres_preconditioner: IDENTITY\n"
-                                                     "    ceres_trust_strategy: DOGLEG\n"
-                                                     "    ceres_dogleg_type: SUBSPACE_DOGLEG\n"
-                                                     "    ceres_loss_function: HuberLoss\n"),
+                                             ToolboxYaml("    ceres_linear_solver: SPARSE_SCHUR\n"
+                                                         "    ceres_preconditioner: IDENTITY\n"
+                                                         "    ceres_trust_strategy: DOGLEG\n"
+                                                         "    ceres_dogleg_type: SUBSPACE_DOGLEG\n"
+                                                         "    ceres_loss_function: HuberLoss\n"),
                                              "toolbox.yaml");
   EXPECT_EQ(p.ceres_linear_solver, CeresLinearSolver::kSparseSchur);
   EXPECT_EQ(p.ceres_preconditioner, CeresPreconditioner::kIdentity);
@@ -142,9 +142,9 @@ TEST(ParamsYaml, CeresKeysAreReadAsTheNodeMapsThem) {
   MapperParams q = NodeDefaults(RosNode::kSlamToolbox);
   q.ceres_trust_strategy = CeresTrustStrategy::kDogleg;
   const ParamsYamlReport unknown = ApplyParamsYaml(q,
-                                                   Toolbox("    ceres_linear_solver: DENSE_QR\n"
-                                                           "    ceres_trust_strategy: LM\n"
-                                                           "    ceres_loss_function: SoftL1\n"),
+                                                   ToolboxYaml("    ceres_linear_solver: DENSE_QR\n"
+                                                               "    ceres_trust_strategy: LM\n"
+                                                               "    ceres_loss_function: SoftL1\n"),
                                                    "toolbox.yaml");
   EXPECT_EQ(q.ceres_linear_solver, CeresLinearSolver::kSparseNormalCholesky);
   EXPECT_EQ(q.ceres_trust_strategy, CeresTrustStrategy::kLevenbergMarquardt);  // "LM", its declared default
@@ -163,7 +163,7 @@ TEST(ParamsYaml, MinimumTimeIntervalIsTheSynchronousNodesFilter) {
   // Asynchronous node: read, but node-only; Karto's own interval stays 3600.
   MapperParams async = NodeDefaults(RosNode::kSlamToolbox);
   const ParamsYamlReport a =
-      ApplyParamsYaml(async, Toolbox("    minimum_time_interval: 1.5\n    throttle_scans: 2\n"), "a.yaml");
+      ApplyParamsYaml(async, ToolboxYaml("    minimum_time_interval: 1.5\n    throttle_scans: 2\n"), "a.yaml");
   EXPECT_EQ(async.minimum_time_interval, 3600);
   EXPECT_EQ(async.sync_minimum_time_interval, 1.5);
   EXPECT_EQ(KeyOf(a, "minimum_time_interval").use, KeyUse::kNodeOnly);
@@ -172,18 +172,18 @@ TEST(ParamsYaml, MinimumTimeIntervalIsTheSynchronousNodesFilter) {
   MapperParams sync = NodeDefaults(RosNode::kSlamToolbox);
   sync.node_mode = NodeMode::kSlamToolboxSync;
   const ParamsYamlReport s =
-      ApplyParamsYaml(sync, Toolbox("    minimum_time_interval: 1.5\n    throttle_scans: 2\n"), "s.yaml");
+      ApplyParamsYaml(sync, ToolboxYaml("    minimum_time_interval: 1.5\n    throttle_scans: 2\n"), "s.yaml");
   EXPECT_EQ(sync.sync_minimum_time_interval, 1.5);
   EXPECT_EQ(sync.throttle_scans, 2);
   EXPECT_EQ(KeyOf(s, "minimum_time_interval").use, KeyUse::kEngine);
   EXPECT_EQ(KeyOf(s, "throttle_scans").use, KeyUse::kEngine);
   // Left out, it takes transform_timeout's value, as slam_toolbox_common.cpp declares it.
   MapperParams timeout = sync;
-  const ParamsYamlReport t = ApplyParamsYaml(timeout, Toolbox("    transform_timeout: 0.2\n"), "t.yaml");
+  const ParamsYamlReport t = ApplyParamsYaml(timeout, ToolboxYaml("    transform_timeout: 0.2\n"), "t.yaml");
   EXPECT_EQ(timeout.sync_minimum_time_interval, 0.2);
   EXPECT_EQ(KeyOf(t, "transform_timeout").use, KeyUse::kEngine);
   MapperParams both = sync;
-  ApplyParamsYaml(both, Toolbox("    transform_timeout: 0.2\n    minimum_time_interval: 0.7\n"), "b.yaml");
+  ApplyParamsYaml(both, ToolboxYaml("    transform_timeout: 0.2\n    minimum_time_interval: 0.7\n"), "b.yaml");
   EXPECT_EQ(both.sync_minimum_time_interval, 0.7);
 }
 
@@ -201,11 +201,11 @@ TEST(ParamsYaml, SlamKartosMinimumTimeIntervalIsNotKartos) {
 TEST(ParamsYaml, EveryKeyIsClassified) {
   MapperParams p = NodeDefaults(RosNode::kSlamToolbox);
   const ParamsYamlReport r = ApplyParamsYaml(p,
-                                             Toolbox("    odom_frame: odom\n"
-                                                     "    loop_search_maximum_distance: 4.0\n"
-                                                     "    mode: localization\n"
-                                                     "    map_start_pose: [0.0, 0.0, 0.0]\n"
-                                                     "    map_update_interval: 5.0\n"),
+                                             ToolboxYaml("    odom_frame: odom\n"
+                                                         "    loop_search_maximum_distance: 4.0\n"
+                                                         "    mode: localization\n"
+                                                         "    map_start_pose: [0.0, 0.0, 0.0]\n"
+                                                         "    map_update_interval: 5.0\n"),
                                              "all.yaml");
   ASSERT_EQ(r.keys.size(), 5u);
   EXPECT_EQ(r.keys[0].use, KeyUse::kNodeOnly);

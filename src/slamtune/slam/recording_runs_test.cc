@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "slamtune/common/testing/fixtures.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
@@ -17,7 +18,7 @@
 namespace slamtune::slam {
 namespace {
 
-const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/recordings/";
+using slamtune::testing::FixturePath;
 
 // The world the fixtures were made from (the simulate command in the fixtures' README).
 const io::LaserLog& WorldLog() {
@@ -53,10 +54,10 @@ void ExpectSameScans(const io::LaserLog& bag, const io::LaserLog& carmen, std::s
   }
 }
 
-class RecordingRuns : public testing::TestWithParam<std::string> {};
+class RecordingRuns : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RecordingRuns, BagGivesTheCarmenLogsScansAndPoses) {
-  const io::LaserLog bag = io::ReadLaserLog(kFixtures + GetParam());
+  const io::LaserLog bag = io::ReadLaserLog(FixturePath("recordings/" + GetParam()));
   ExpectSameScans(bag, WorldLog(), WorldLog().scans.size());
   ASSERT_TRUE(bag.recording.has_value());
   EXPECT_EQ(bag.recording->scan_topic, "/scan");
@@ -71,8 +72,9 @@ TEST_P(RecordingRuns, BagGivesTheCarmenLogsScansAndPoses) {
 TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
   static const RunResult reference =
       RunLog(std::make_shared<const io::LaserLog>(WorldLog()), MapperParams::Preset("slam_karto"));
-  const RunResult run = RunLog(std::make_shared<const io::LaserLog>(io::ReadLaserLog(kFixtures + GetParam())),
-                               MapperParams::Preset("slam_karto"));
+  const RunResult run =
+      RunLog(std::make_shared<const io::LaserLog>(io::ReadLaserLog(FixturePath("recordings/" + GetParam()))),
+             MapperParams::Preset("slam_karto"));
   EXPECT_EQ(run.summary.nodes, reference.summary.nodes);
   EXPECT_EQ(run.summary.edges, reference.summary.edges);
   ASSERT_EQ(run.summary.loop_closures.size(), reference.summary.loop_closures.size());
@@ -97,8 +99,8 @@ TEST_P(RecordingRuns, SlamRunIsTheSameAsOnTheCarmenLog) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, RecordingRuns,
-                         testing::Values("office_zstd.mcap", "office_db3", "office_lz4.bag", "office_bz2.bag"),
-                         [](const testing::TestParamInfo<std::string>& info) {
+                         ::testing::Values("office_zstd.mcap", "office_db3", "office_lz4.bag", "office_bz2.bag"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return name;
@@ -109,10 +111,10 @@ TEST(RecordingSlices, EveryVariantGivesTheFirstScansOfTheDrive) {
   for (const char* name : {"office_slice_none.mcap", "office_slice_lz4.mcap", "office_slice_nochunk.mcap",
                            "office_slice_unindexed.mcap", "office_slice_none.bag"}) {
     SCOPED_TRACE(name);
-    const io::LaserLog bag = io::ReadLaserLog(kFixtures + name);
+    const io::LaserLog bag = io::ReadLaserLog(FixturePath(std::string("recordings/") + name));
     ExpectSameScans(bag, WorldLog(), 120);
   }
-  const io::LaserLog cut = io::ReadLaserLog(kFixtures + "office_slice_unindexed.mcap");
+  const io::LaserLog cut = io::ReadLaserLog(FixturePath("recordings/office_slice_unindexed.mcap"));
   EXPECT_FALSE(cut.recording->complete);
 }
 

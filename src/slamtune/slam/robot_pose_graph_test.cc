@@ -23,7 +23,7 @@ std::shared_ptr<const io::LaserLog> Drive(const Pose2& offset, std::size_t scans
   return std::make_shared<const io::LaserLog>(std::move(log));
 }
 
-MapperParams Toolbox(bool robot_pose_graph) {
+MapperParams ToolboxParams(bool robot_pose_graph) {
   MapperParams p = MapperParams::Preset("slam_toolbox");
   p.robot_pose_graph = robot_pose_graph;
   return p;
@@ -34,7 +34,7 @@ MapperParams Toolbox(bool robot_pose_graph) {
 TEST(RobotPoseGraph, EdgesAreTheSensorEdgesExpressedBetweenRobotPoses) {
   const Pose2 offset{0.3, -0.1, 0.2};
   const auto log = Drive(offset, 120);
-  MapperParams sensor_params = Toolbox(false), robot_params = Toolbox(true);
+  MapperParams sensor_params = ToolboxParams(false), robot_params = ToolboxParams(true);
   sensor_params.do_loop_closing = robot_params.do_loop_closing = false;  // no solve: the same poses
   LogRunner sensor(log, sensor_params), robot(log, robot_params);
   sensor.RunToEnd();
@@ -62,14 +62,14 @@ TEST(RobotPoseGraph, EdgesAreTheSensorEdgesExpressedBetweenRobotPoses) {
 
 TEST(RobotPoseGraph, WholeRunDiffersWithAnOffsetAndIsBitForBitTheSameWithout) {
   const auto off = Drive(Pose2{0.3, -0.1, 0.2}, 0);
-  const RunResult a = RunLog(off, Toolbox(false)), b = RunLog(off, Toolbox(true));
+  const RunResult a = RunLog(off, ToolboxParams(false)), b = RunLog(off, ToolboxParams(true));
   ASSERT_GE(a.summary.loop_closures.size(), 1u);
   bool differ = false;
   for (std::size_t k = 0; k < a.trajectory.size(); ++k) differ = differ || a.trajectory[k].pose != b.trajectory[k].pose;
   EXPECT_TRUE(differ);
 
   const auto centred = Drive(Pose2{}, 0);
-  const RunResult c = RunLog(centred, Toolbox(false)), d = RunLog(centred, Toolbox(true));
+  const RunResult c = RunLog(centred, ToolboxParams(false)), d = RunLog(centred, ToolboxParams(true));
   ASSERT_GE(c.summary.loop_closures.size(), 1u);
   EXPECT_EQ(c.summary.edges, d.summary.edges);
   ASSERT_EQ(c.trajectory.size(), d.trajectory.size());

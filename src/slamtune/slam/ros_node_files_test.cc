@@ -7,19 +7,19 @@
 #include <sstream>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/fixtures.h"
 #include "slamtune/slam/params_yaml.h"
 
 namespace slamtune::slam {
 namespace {
 
+using slamtune::testing::FixturePath;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
 
-const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/params/";
-
 std::string ReadFixture(const std::string& name) {
-  std::ifstream in(kFixtures + name);
+  std::ifstream in(FixturePath("params/" + name));
   EXPECT_TRUE(in) << name;
   std::ostringstream text;
   text << in.rdbuf();

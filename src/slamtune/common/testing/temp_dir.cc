@@ -1,6 +1,7 @@
 #include "slamtune/common/testing/temp_dir.h"
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <stdexcept>
 #include <vector>
@@ -13,6 +14,11 @@ std::filesystem::path UniqueTempDir(const std::string& stem) {
   buffer.push_back('\0');
   if (::mkdtemp(buffer.data()) == nullptr) throw std::runtime_error("mkdtemp failed for " + pattern);
   return std::filesystem::path(buffer.data());
+}
+
+std::string TempFilePath(const std::string& stem, const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("slamtune_" + stem + "_" + std::to_string(::getpid()) + "_" + name))
+      .string();
 }
 
 }  // namespace slamtune::testing

@@ -14,11 +14,11 @@
 #include "slamtune/io/ros/mcap_records.h"
 
 namespace slamtune::io {
+// The reader is in namespace mcap with the records and opcodes it reads (mcap_records.h).
+namespace mcap {
 namespace {
 
 constexpr std::uint8_t kMagic[] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};  // spec "Magic"
-
-using namespace mcap;  // records and opcodes (mcap_records.h)
 
 class McapReader {
  public:
@@ -279,14 +279,16 @@ void McapReader::SetEnding() {
 }
 
 }  // namespace
+}  // namespace mcap
 
 bool HasMcapMagic(std::span<const std::uint8_t> bytes) {
-  return bytes.size() >= sizeof(kMagic) && std::equal(std::begin(kMagic), std::end(kMagic), bytes.begin());
+  return bytes.size() >= sizeof(mcap::kMagic) &&
+         std::equal(std::begin(mcap::kMagic), std::end(mcap::kMagic), bytes.begin());
 }
 
 void ReadMcapInto(std::span<const std::uint8_t> bytes, const std::string& name, const ContainerReadOptions& options,
                   ContainerSink* sink) {
-  McapReader(bytes, name, options, sink).Read();
+  mcap::McapReader(bytes, name, options, sink).Read();
 }
 
 }  // namespace slamtune::io

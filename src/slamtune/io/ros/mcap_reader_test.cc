@@ -19,9 +19,6 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 using namespace testing;  // NOLINT: the record builders
 
-// What a reader's error says after the record that is not read.
-const std::string kLenient = " (--lenient reads the recording up to this record)";
-
 // The reading of `bytes` as "m.mcap", and the error it gave ("" when none).
 struct McapRead {
   ContainerSummary summary;
@@ -29,7 +26,7 @@ struct McapRead {
   std::string error;
 };
 
-McapRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
+McapRead ReadAsMcap(const Bytes& bytes, ContainerReadOptions options = {}) {
   McapRead read;
   try {
     read.summary = ReadContainerBytes(ContainerFormat::kMcap, bytes, "m.mcap", options, Collect(&read.messages));
@@ -38,8 +35,6 @@ McapRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
   }
   return read;
 }
-
-std::string Byte(std::uint64_t offset) { return "byte " + std::to_string(offset); }
 
 // The offset just past the record that starts at `offset`.
 std::uint64_t RecordEnd(const Bytes& bytes, std::uint64_t offset) {
@@ -51,7 +46,7 @@ std::uint64_t RecordEnd(const Bytes& bytes, std::uint64_t offset) {
 Bytes Prefix(const Bytes& bytes, std::uint64_t size) { return Bytes(bytes.begin(), bytes.begin() + size); }
 
 Bytes Closing() { return Concat({McapDataEnd(), McapFooter(), McapMagic()}); }
-Bytes Opening() { return Concat({McapMagic(), McapHeader()}); }
+Bytes McapOpening() { return Concat({McapMagic(), McapHeader()}); }
 
 std::string Names(const std::vector<Delivered>& messages) {
   std::string names;
@@ -62,7 +57,7 @@ std::string Names(const std::vector<Delivered>& messages) {
 TEST(McapReaderTest, ReadsChunksOfEachCompressionWithSchemasAndChannelsKeptAcrossChunks) {
   for (const std::string compression : {"", "zstd", "lz4"}) {
     SCOPED_TRACE(compression);
-    const McapRead read = Read(SmallMcap(compression));
+    const McapRead read = ReadAsMcap(SmallMcap(compression));
     ASSERT_EQ(read.error, "");
     const auto [chunk1, chunk2] = SmallMcapChunkOffsets(compression);
     // Chunk 2 holds only messages: its channel 0 (/scan) was declared in chunk 1.
@@ -93,10 +88,10 @@ TEST(McapReaderTest, ReadsChunksOfEachCompressionWithSchemasAndChannelsKeptAcros
 }
 
 TEST(McapReaderTest, UnchunkedRecordsChannelIdZeroAndUnknownOrUserOpcodes) {
-  const Bytes head = Concat({Opening(), McapSchema(1, "nav_msgs/msg/Odometry"), McapChannel(0, 1, "/odom")});
+  const Bytes head = Concat({McapOpening(), McapSchema(1, "nav_msgs/msg/Odometry"), McapChannel(0, 1, "/odom")});
   const Bytes bytes = Concat({head, McapMessage(0, 5, "odom-1"), McapRecord(0x42, ToBytes("future")),
                               McapRecord(0x90, ToBytes("user")), McapRecord(0x00, {}), Closing()});
-  const McapRead read = Read(bytes);
+  const McapRead read = ReadAsMcap(bytes);
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(Names(read.messages), "odom-1@5/" + Byte(head.size()) + " ");
   EXPECT_EQ(read.summary.unknown_records, 2u);  // 0x42 and 0x00
@@ -107,7 +102,7 @@ TEST(McapReaderTest, UnchunkedRecordsChannelIdZeroAndUnknownOrUserOpcodes) {
 TEST(McapReaderTest, AFileCutAfterACompleteChunkReadsAsIncomplete) {
   const Bytes full = SmallMcap("zstd");
   const std::uint64_t chunk2 = SmallMcapChunkOffsets("zstd").second;
-  const McapRead read = Read(Prefix(full, RecordEnd(full, chunk2)));
+  const McapRead read = ReadAsMcap(Prefix(full, RecordEnd(full, chunk2)));
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(read.messages.size(), 4u);
   EXPECT_FALSE(read.summary.complete);
@@ -122,7 +117,7 @@ TEST(McapReaderTest, AFileCutInsideAChunkReadsUpToItsLastWholeRecord) {
   const std::uint64_t chunk2 = SmallMcapChunkOffsets("zstd").second;
   const Bytes cut = Prefix(full, RecordEnd(full, chunk2) - 5);
   for (const bool lenient : {false, true}) {
-    const McapRead read = Read(cut, {.lenient = lenient});
+    const McapRead read = ReadAsMcap(cut, {.lenient = lenient});
     ASSERT_EQ(read.error, "");
     EXPECT_EQ(read.messages.size(), 2u);  // chunk 1's
     EXPECT_EQ(read.summary.dropped_tail_bytes, cut.size() - chunk2);
@@ -133,7 +128,7 @@ TEST(McapReaderTest, AFileCutInsideAChunkReadsUpToItsLastWholeRecord) {
                                                             cut.size() - chunk2)));
   }
   // Cut inside the opcode and length of a record: the same.
-  EXPECT_EQ(Read(Prefix(full, chunk2 + 4)).summary.dropped_tail_bytes, 4u);
+  EXPECT_EQ(ReadAsMcap(Prefix(full, chunk2 + 4)).summary.dropped_tail_bytes, 4u);
 }
 
 // A corrupt record inside the file is an error that says what --lenient does.
@@ -144,61 +139,63 @@ TEST(McapReaderTest, ACorruptRecordIsAnErrorNamingLenient) {
   const auto name = std::search(bad.begin() + static_cast<std::ptrdiff_t>(chunk2), bad.end(), zstd.begin(), zstd.end());
   ASSERT_NE(name, bad.end());
   name[3] = 'x';  // the chunk's compression: "zstx"
-  const McapRead strict = Read(bad);
+  const McapRead strict = ReadAsMcap(bad);
   EXPECT_THAT(strict.error, StartsWith("m.mcap: " + Byte(chunk2)));
   EXPECT_THAT(strict.error, EndsWith(" (--lenient reads the recording up to this record)"));
-  const McapRead lenient = Read(bad, {.lenient = true});
+  const McapRead lenient = ReadAsMcap(bad, {.lenient = true});
   ASSERT_EQ(lenient.error, "");
   EXPECT_THAT(lenient.summary.ending, StartsWith("a corrupt record: read up to it (--lenient)"));
 }
 
 TEST(McapReaderTest, ABadChunkCrcIsAnErrorUnlessCrcsAreNotVerified) {
   const Bytes records = Concat({McapSchema(1, "S"), McapChannel(1, 1, "/a"), McapMessage(1, 9, "a")});
-  const Bytes bad = Concat({Opening(), McapChunk(records, "lz4", 0x12345678), Closing()});
-  EXPECT_THAT(Read(bad).error, StartsWith("m.mcap: " + Byte(Opening().size()) + " (chunk): CRC mismatch: "));
-  EXPECT_THAT(Read(bad).error, HasSubstr("the chunk says 12345678"));
-  EXPECT_EQ(Read(bad, {.verify_crc = false}).messages.size(), 1u);
-  const Bytes unchecked = Concat({Opening(), McapChunk(records, "zstd", 0), Closing()});  // CRC 0: not checked
-  EXPECT_EQ(Read(unchecked).messages.size(), 1u);
+  const Bytes bad = Concat({McapOpening(), McapChunk(records, "lz4", 0x12345678), Closing()});
+  EXPECT_THAT(ReadAsMcap(bad).error, StartsWith("m.mcap: " + Byte(McapOpening().size()) + " (chunk): CRC mismatch: "));
+  EXPECT_THAT(ReadAsMcap(bad).error, HasSubstr("the chunk says 12345678"));
+  EXPECT_EQ(ReadAsMcap(bad, {.verify_crc = false}).messages.size(), 1u);
+  const Bytes unchecked = Concat({McapOpening(), McapChunk(records, "zstd", 0), Closing()});  // CRC 0: not checked
+  EXPECT_EQ(ReadAsMcap(unchecked).messages.size(), 1u);
 }
 
 TEST(McapReaderTest, UnknownCompressionAndCorruptZstdAreErrorsAtTheChunk) {
   const Bytes records = Concat({McapSchema(1, "S"), McapChannel(1, 1, "/a"), McapMessage(1, 9, "payload")});
   Bytes chunk = McapChunk(records, "zstd");
-  const Bytes brotli = Concat({Opening(), McapChunk(records, "brotli"), Closing()});
-  EXPECT_EQ(Read(brotli).error,
-            "m.mcap: " + Byte(Opening().size()) + " (chunk): unknown compression \"brotli\"" + kLenient);
+  const Bytes brotli = Concat({McapOpening(), McapChunk(records, "brotli"), Closing()});
+  EXPECT_EQ(ReadAsMcap(brotli).error,
+            "m.mcap: " + Byte(McapOpening().size()) + " (chunk): unknown compression \"brotli\"" + kLenientHint);
   chunk[chunk.size() - ZstdCompress(records).size()] ^= 0xFF;  // the zstd frame's magic
-  const McapRead corrupt = Read(Concat({Opening(), chunk, Closing()}));
-  EXPECT_EQ(corrupt.error, "m.mcap: " + Byte(Opening().size()) + " (chunk): zstd: Unknown frame descriptor" + kLenient);
+  const McapRead corrupt = ReadAsMcap(Concat({McapOpening(), chunk, Closing()}));
+  EXPECT_EQ(corrupt.error,
+            "m.mcap: " + Byte(McapOpening().size()) + " (chunk): zstd: Unknown frame descriptor" + kLenientHint);
 }
 
 TEST(McapReaderTest, AMessageOnAnUndeclaredChannelRefusesItsWholeChunk) {
   const Bytes declarations = Concat({McapSchema(1, "S"), McapChannel(1, 1, "/a")});
-  const Bytes first = Concat({Opening(), declarations, McapMessage(1, 1, "before")});
+  const Bytes first = Concat({McapOpening(), declarations, McapMessage(1, 1, "before")});
   const Bytes records = Concat({McapMessage(1, 2, "in chunk"), McapMessage(5, 3, "orphan")});
   const Bytes bytes = Concat({first, McapChunk(records, "zstd"), Closing()});
-  EXPECT_EQ(Read(bytes).error, "m.mcap: " + Byte(first.size()) + " (chunk), uncompressed " +
-                                   Byte(McapMessage(1, 2, "in chunk").size()) +
-                                   " (Message): message on channel 5, which was never declared" + kLenient);
-  const McapRead lenient = Read(bytes, {.lenient = true});
-  EXPECT_EQ(Names(lenient.messages), "before@1/" + Byte(Opening().size() + declarations.size()) + " ");
+  EXPECT_EQ(ReadAsMcap(bytes).error, "m.mcap: " + Byte(first.size()) + " (chunk), uncompressed " +
+                                         Byte(McapMessage(1, 2, "in chunk").size()) +
+                                         " (Message): message on channel 5, which was never declared" + kLenientHint);
+  const McapRead lenient = ReadAsMcap(bytes, {.lenient = true});
+  EXPECT_EQ(Names(lenient.messages), "before@1/" + Byte(McapOpening().size() + declarations.size()) + " ");
   EXPECT_EQ(lenient.summary.chunks, 0u);
 }
 
 TEST(McapReaderTest, AChannelWhoseSchemaIsMissingIsAnError) {
-  const Bytes bytes = Concat({Opening(), McapSchema(1, "S"), McapChannel(3, 9, "/odom"), Closing()});
-  EXPECT_EQ(Read(bytes).error, "m.mcap: " + Byte(Opening().size() + McapSchema(1, "S").size()) +
-                                   " (Channel): channel 3 (/odom) names schema 9, which was never declared" + kLenient);
+  const Bytes bytes = Concat({McapOpening(), McapSchema(1, "S"), McapChannel(3, 9, "/odom"), Closing()});
+  EXPECT_EQ(ReadAsMcap(bytes).error, "m.mcap: " + Byte(McapOpening().size() + McapSchema(1, "S").size()) +
+                                         " (Channel): channel 3 (/odom) names schema 9, which was never declared" +
+                                         kLenientHint);
   // Schema id 0 means "no schema".
-  EXPECT_EQ(Read(Concat({Opening(), McapChannel(3, 0, "/odom"), Closing()})).error, "");
+  EXPECT_EQ(ReadAsMcap(Concat({McapOpening(), McapChannel(3, 0, "/odom"), Closing()})).error, "");
 }
 
 TEST(McapReaderTest, RepeatedSchemaAndChannelIdsKeepTheFirstDeclaration) {
   const Bytes bytes =
-      Concat({Opening(), McapSchema(1, "First"), McapChannel(2, 1, "/first"), McapSchema(1, "Second"),
+      Concat({McapOpening(), McapSchema(1, "First"), McapChannel(2, 1, "/first"), McapSchema(1, "Second"),
               McapChunk(Concat({McapChannel(2, 1, "/second"), McapMessage(2, 1, "m")}), "lz4"), Closing()});
-  const McapRead read = Read(bytes);
+  const McapRead read = ReadAsMcap(bytes);
   ASSERT_EQ(read.error, "");
   ASSERT_EQ(read.summary.topics.size(), 1u);
   EXPECT_EQ(read.summary.topics[0].name, "/first");
@@ -207,13 +204,13 @@ TEST(McapReaderTest, RepeatedSchemaAndChannelIdsKeepTheFirstDeclaration) {
 }
 
 TEST(McapReaderTest, ChannelsOfOneTopicMergeAndOtherEncodingsAreMarkedInTheType) {
-  const Bytes bytes = Concat({Opening(), McapSchema(1, "tf2_msgs/msg/TFMessage"), McapChannel(0, 1, "/tf"),
+  const Bytes bytes = Concat({McapOpening(), McapSchema(1, "tf2_msgs/msg/TFMessage"), McapChannel(0, 1, "/tf"),
                               McapChannel(1, 1, "/tf"), McapSchema(2, "sensor_msgs/LaserScan", "ros1msg"),
                               McapChannel(2, 2, "/scan", "ros1", {{"latching", "1"}}),
                               McapSchema(3, "foo.Bar", "jsonschema"), McapChannel(3, 3, "/json", "json"),
                               McapChannel(4, 0, "/raw", "protobuf"), McapMessage(0, 1, "a"), McapMessage(1, 2, "b"),
                               McapMessage(2, 3, "c"), McapMessage(3, 4, "{}"), McapMessage(4, 5, "p"), Closing()});
-  const McapRead read = Read(bytes);
+  const McapRead read = ReadAsMcap(bytes);
   ASSERT_EQ(read.error, "");
   const auto& topics = read.summary.topics;
   ASSERT_EQ(topics.size(), 4u);
@@ -240,11 +237,11 @@ TEST(McapReaderTest, CallbackExceptionsPassThroughUnchangedEvenWhenLenient) {
 }
 
 TEST(McapReaderTest, NotMcapAndAHeaderThatIsNotFirstAreErrors) {
-  EXPECT_EQ(Read(ToBytes("#ROSBAG V2.0\n")).error,
+  EXPECT_EQ(ReadAsMcap(ToBytes("#ROSBAG V2.0\n")).error,
             "m.mcap: byte 0 (magic): not an MCAP file (no \\x89MCAP0\\r\\n magic)");
-  EXPECT_EQ(Read(Concat({McapMagic(), McapDataEnd()})).error,
+  EXPECT_EQ(ReadAsMcap(Concat({McapMagic(), McapDataEnd()})).error,
             "m.mcap: byte 8 (DataEnd record): the first record is not the Header");
-  const McapRead magic_only = Read(McapMagic());
+  const McapRead magic_only = ReadAsMcap(McapMagic());
   EXPECT_EQ(magic_only.error, "");
   EXPECT_FALSE(magic_only.summary.complete);
 }

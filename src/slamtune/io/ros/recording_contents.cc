@@ -8,11 +8,7 @@
 namespace slamtune::io {
 namespace {
 
-constexpr std::size_t kMaxExamples = 5;
-
-bool EndsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
+constexpr std::size_t kMaxUndecodableExamples = 5;
 
 RigidTransform3 ToRigid(const RosVector3& t, const RosQuaternion& q) {
   RigidTransform3 out;
@@ -38,7 +34,7 @@ struct Reader {
                       message.location.ToString(), topic.name, e.what());
       if (!lenient) throw InputError(where);
       (kind == RosMessageKind::kLaserScan ? out->scans_undecodable : out->messages_undecodable) += 1;
-      if (out->undecodable_examples.size() < kMaxExamples) out->undecodable_examples.push_back(where);
+      if (out->undecodable_examples.size() < kMaxUndecodableExamples) out->undecodable_examples.push_back(where);
     }
   }
 
@@ -63,7 +59,7 @@ struct Reader {
       }
       case RosMessageKind::kTf: {
         const TfMessage m = DecodeTfMessage(message.data, topic.serialization);
-        const bool is_static = topic.latched || EndsWith(topic.name, "tf_static");
+        const bool is_static = topic.latched || topic.name.ends_with("tf_static");
         ++out->tf_messages;
         if (is_static) ++out->static_tf_messages;
         for (const TransformStampedMessage& t : m.transforms) {

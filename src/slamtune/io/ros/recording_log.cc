@@ -14,9 +14,7 @@
 namespace slamtune::io {
 namespace {
 
-constexpr std::size_t kMaxExamples = 5;
-
-std::string Seconds(std::int64_t ns) { return fmt::format("{:.6f} s", static_cast<double>(ns) / 1e9); }
+constexpr std::size_t kMaxScanExamples = 5;  // of each kind of scan not used
 
 std::string Join(const std::vector<std::string>& items) {
   std::string out;
@@ -261,7 +259,7 @@ std::string GeometryProblem(const LaserScanMessage& m) {
 }
 
 void Example(std::vector<std::string>* examples, const std::string& text) {
-  if (examples->size() < kMaxExamples) examples->push_back(text);
+  if (examples->size() < kMaxScanExamples) examples->push_back(text);
 }
 
 LaserScanRecord ToRecord(const RecordedScan& scan, std::size_t index, const RecordingInfo& info) {
@@ -286,11 +284,6 @@ LaserScanRecord ToRecord(const RecordedScan& scan, std::size_t index, const Reco
   r.header_stamp_ns = static_cast<std::int64_t>(m.header.stamp_ns);
   r.logger_time = static_cast<double>(scan.log_time_ns) / 1e9;
   return r;
-}
-
-std::size_t CountNoReturns(const LaserScanRecord& r) {
-  return static_cast<std::size_t>(std::count_if(
-      r.ranges.begin(), r.ranges.end(), [&](double v) { return !std::isfinite(v) || v < 0.0 || v >= r.max_range; }));
 }
 
 void FillTopics(const RecordingContents& contents, RecordingInfo* info) {
@@ -399,12 +392,12 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
     if (NormalizeFrameId(m.header.frame_id) != info.laser_frame) ++info.scans_other_frame;
     if (!(std::isfinite(m.range_max) && m.range_max > 0.0f) && info.scans_bad_range_max++ == 0) {
       info.bad_range_max_example =
-          fmt::format("scan {} at {}: range_max {}", k, Seconds(m.header.stamp_ns), m.range_max);
+          fmt::format("scan {} at {}: range_max {}", k, StampText(m.header.stamp_ns), m.range_max);
     }
     const TfLookup pose = source.tf->Lookup(info.odom_frame, info.base_frame, m.header.stamp_ns, choice.max_odom_gap_s);
     if (!pose.transform) {
       ++info.scans_unplaced;
-      Example(&info.unplaced_examples, fmt::format("scan {} at {}: {}", k, Seconds(m.header.stamp_ns), pose.failure));
+      Example(&info.unplaced_examples, fmt::format("scan {} at {}: {}", k, StampText(m.header.stamp_ns), pose.failure));
       continue;
     }
     LaserScanRecord record = ToRecord(scan, k, info);

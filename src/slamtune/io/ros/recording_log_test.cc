@@ -9,27 +9,23 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/common/testing/error_message.h"
+#include "slamtune/common/testing/fixtures.h"
 #include "slamtune/io/log_check.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
+#include "slamtune/io/testing/planar_transform.h"
 #include "slamtune/io/testing/recording_bytes.h"
 
 namespace slamtune::io {
 namespace {
 
 using slamtune::testing::ErrorMessageOf;
+using slamtune::testing::FixturePath;
+using testing::Planar;
 
 constexpr std::int64_t kMs = 1000000;
-const std::string kFixtures = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/recordings/";
 
-RigidTransform3 Planar(double x, double y, double yaw, double z = 0.0) {
-  RigidTransform3 t;
-  t.translation = {x, y, z};
-  t.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-  return t;
-}
-
-LaserScanMessage Scan(std::int64_t stamp_ns, std::size_t n = 5, const std::string& frame = "laser") {
+LaserScanMessage ScanMessage(std::int64_t stamp_ns, std::size_t n = 5, const std::string& frame = "laser") {
   LaserScanMessage m;
   m.header.stamp_ns = stamp_ns;
   m.header.frame_id = frame;
@@ -51,7 +47,7 @@ RecordingContents Drive() {
                         {"/tf_static", "tf2_msgs/msg/TFMessage", MessageSerialization::kCdr, true, 0}};
   for (int k = 0; k <= 40; ++k) c.tf.Add("odom", "base_footprint", k * 50 * kMs, Planar(0.05 * k, 0, 0), false);
   c.tf.Add("base_footprint", "laser", 0, Planar(0.2, 0, 0.1, 0.3), true);
-  for (int k = 0; k < 9; ++k) c.scans["/scan"].push_back({Scan(100 * kMs + k * 200 * kMs), 0, "byte 0"});
+  for (int k = 0; k < 9; ++k) c.scans["/scan"].push_back({ScanMessage(100 * kMs + k * 200 * kMs), 0, "byte 0"});
   return c;
 }
 
@@ -82,7 +78,7 @@ TEST(RecordingToLog, ScansArePosedFromTfAtTheirStampsWithTheOffsetFoldedIn) {
 
 TEST(RecordingToLog, ScansOutsideTheOdometryOrInAGapAreCountedNotPosed) {
   RecordingContents c = Drive();
-  c.scans["/scan"].push_back({Scan(5000 * kMs), 0, "byte 0"});  // after the last tf sample
+  c.scans["/scan"].push_back({ScanMessage(5000 * kMs), 0, "byte 0"});  // after the last tf sample
   const LaserLog log = RecordingToLog(c, {});
   EXPECT_EQ(log.scans.size(), 9u);
   EXPECT_EQ(log.recording->scans_unplaced, 1u);
@@ -90,7 +86,7 @@ TEST(RecordingToLog, ScansOutsideTheOdometryOrInAGapAreCountedNotPosed) {
   // tf every 50 ms; a scan between two samples is placed unless the samples are farther apart
   // than --max-odom-gap.
   RecordingContents between = Drive();
-  between.scans["/scan"].push_back({Scan(125 * kMs), 0, "byte 0"});
+  between.scans["/scan"].push_back({ScanMessage(125 * kMs), 0, "byte 0"});
   EXPECT_EQ(RecordingToLog(between, {}).scans.size(), 10u);
   LogReadOptions tight;
   tight.recording.max_odom_gap_s = 0.01;
@@ -338,7 +334,7 @@ TEST(RecordingToLog, WithoutTfOdometryTheOnlyOdometryTopicIsUsedAndSaid) {
   RecordingContents c;
   c.path = "drive.db3";
   c.tf.Add("base_footprint", "laser", 0, Planar(0.2, 0, 0), true);
-  for (int k = 0; k < 3; ++k) c.scans["/scan"].push_back({Scan(k * 100 * kMs), 0, "row 1"});
+  for (int k = 0; k < 3; ++k) c.scans["/scan"].push_back({ScanMessage(k * 100 * kMs), 0, "row 1"});
   for (int k = 0; k <= 3; ++k) {
     OdometrySample s;
     s.stamp_ns = k * 100 * kMs;
@@ -357,10 +353,10 @@ TEST(RecordingToLog, WithoutTfOdometryTheOnlyOdometryTopicIsUsedAndSaid) {
 TEST(RecordingFixtures, OdomTopicGivesPosesNearTheTfOnes) {
   LogReadOptions o;
   o.recording.odom_topic = "/odom";  // every second scan stamp (0.67 s apart): the others interpolated
-  EXPECT_EQ(ReadLaserLog(kFixtures + "office_slice_none.mcap", o).scans.size(), 60u);  // 0.5 s gap rule
+  EXPECT_EQ(ReadLaserLog(FixturePath("recordings/office_slice_none.mcap"), o).scans.size(), 60u);  // 0.5 s gap rule
   o.recording.max_odom_gap_s = 1.0;
-  const LaserLog by_topic = ReadLaserLog(kFixtures + "office_slice_none.mcap", o);
-  const LaserLog by_tf = ReadLaserLog(kFixtures + "office_slice_none.mcap");
+  const LaserLog by_topic = ReadLaserLog(FixturePath("recordings/office_slice_none.mcap"), o);
+  const LaserLog by_tf = ReadLaserLog(FixturePath("recordings/office_slice_none.mcap"));
   ASSERT_EQ(by_topic.scans.size(), 119u);  // the last scan is after the last Odometry message
   EXPECT_EQ(by_topic.recording->scans_unplaced, 1u);
   for (std::size_t k = 0; k < by_topic.scans.size(); k += 2) {
@@ -373,16 +369,16 @@ TEST(RecordingFixtures, OdomTopicGivesPosesNearTheTfOnes) {
 
 TEST(RecordingFixtures, PlantedFaultsAreReportedByTheReader) {
   try {
-    ReadLaserLog(kFixtures + "fault_no_tf_static.mcap");
+    ReadLaserLog(FixturePath("recordings/fault_no_tf_static.mcap"));
     FAIL();
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("no laser offset"));
   }
-  const LaserLog gap = ReadLaserLog(kFixtures + "fault_tf_gap.mcap");
+  const LaserLog gap = ReadLaserLog(FixturePath("recordings/fault_tf_gap.mcap"));
   EXPECT_EQ(gap.recording->scans_unplaced, 9u);
   EXPECT_EQ(gap.scans.size(), 111u);
-  EXPECT_THROW(ReadLaserLog(kFixtures + "fault_two_scan_topics.mcap"), InputError);
-  const LaserLog inf_nan = ReadLaserLog(kFixtures + "fault_inf_nan.mcap");
+  EXPECT_THROW(ReadLaserLog(FixturePath("recordings/fault_two_scan_topics.mcap")), InputError);
+  const LaserLog inf_nan = ReadLaserLog(FixturePath("recordings/fault_inf_nan.mcap"));
   std::size_t non_finite = 0;
   for (const LaserScanRecord& s : inf_nan.scans) {
     for (double r : s.ranges) non_finite += std::isfinite(r) ? 0 : 1;

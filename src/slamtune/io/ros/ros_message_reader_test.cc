@@ -21,28 +21,28 @@ using ::testing::ThrowsMessage;
 
 // Payload bytes written by hand, in the order given: no alignment is added, so each test spells
 // out the padding it expects (docs/recordings.md §1.4 for CDR, 1.6 for ROS 1).
-class Bytes {
+class PayloadWriter {
  public:
-  explicit Bytes(bool big_endian = false) : big_endian_(big_endian) {}
-  Bytes& U8(std::uint8_t v) {
+  explicit PayloadWriter(bool big_endian = false) : big_endian_(big_endian) {}
+  PayloadWriter& U8(std::uint8_t v) {
     data.push_back(v);
     return *this;
   }
-  Bytes& Zeros(std::size_t n) {
+  PayloadWriter& Zeros(std::size_t n) {
     data.insert(data.end(), n, 0);
     return *this;
   }
-  Bytes& Text(const std::string& s) {
+  PayloadWriter& Text(const std::string& s) {
     data.insert(data.end(), s.begin(), s.end());
     return *this;
   }
-  Bytes& U32(std::uint32_t v) { return Word(v, 4); }
-  Bytes& F32(float v) { return Word(std::bit_cast<std::uint32_t>(v), 4); }
-  Bytes& F64(double v) { return Word(std::bit_cast<std::uint64_t>(v), 8); }
+  PayloadWriter& U32(std::uint32_t v) { return Word(v, 4); }
+  PayloadWriter& F32(float v) { return Word(std::bit_cast<std::uint32_t>(v), 4); }
+  PayloadWriter& F64(double v) { return Word(std::bit_cast<std::uint64_t>(v), 8); }
   std::vector<std::uint8_t> data;
 
  private:
-  Bytes& Word(std::uint64_t v, int size) {
+  PayloadWriter& Word(std::uint64_t v, int size) {
     for (int i = 0; i < size; ++i) {
       const int shift = 8 * (big_endian_ ? size - 1 - i : i);
       data.push_back(static_cast<std::uint8_t>(v >> shift));
@@ -52,22 +52,22 @@ class Bytes {
   bool big_endian_;
 };
 
-Bytes CdrLe() { return std::move(Bytes().U8(0x00).U8(0x01).U8(0x00).U8(0x00)); }
-Bytes CdrBe() { return std::move(Bytes(true).U8(0x00).U8(0x00).U8(0x00).U8(0x00)); }
+PayloadWriter CdrLe() { return std::move(PayloadWriter().U8(0x00).U8(0x01).U8(0x00).U8(0x00)); }
+PayloadWriter CdrBe() { return std::move(PayloadWriter(true).U8(0x00).U8(0x00).U8(0x00).U8(0x00)); }
 
 constexpr const char* kType = "sensor_msgs/LaserScan";
 
-RosMessageReader Cdr(const Bytes& b) { return RosMessageReader(b.data, MessageSerialization::kCdr, kType); }
-RosMessageReader Ros1(const Bytes& b) { return RosMessageReader(b.data, MessageSerialization::kRos1, kType); }
+RosMessageReader Cdr(const PayloadWriter& b) { return RosMessageReader(b.data, MessageSerialization::kCdr, kType); }
+RosMessageReader Ros1(const PayloadWriter& b) { return RosMessageReader(b.data, MessageSerialization::kRos1, kType); }
 
 TEST(CdrEncapsulationTest, LittleAndBigEndianKindsWithOptionsIgnored) {
-  const Bytes le = std::move(Bytes().U8(0x00).U8(0x01).U8(0xff).U8(0xee).U32(7));
+  const PayloadWriter le = std::move(PayloadWriter().U8(0x00).U8(0x01).U8(0xff).U8(0xee).U32(7));
   RosMessageReader a(le.data, MessageSerialization::kCdr, kType);
   EXPECT_EQ(a.format(), RosWireFormat::kCdrLittleEndian);
   EXPECT_EQ(a.offset(), 4u);
   EXPECT_EQ(a.ReadUint32("x"), 7u);
 
-  const Bytes be = std::move(Bytes(true).U8(0x00).U8(0x00).U8(0x12).U8(0x34).U32(7));
+  const PayloadWriter be = std::move(PayloadWriter(true).U8(0x00).U8(0x00).U8(0x12).U8(0x34).U32(7));
   RosMessageReader b(be.data, MessageSerialization::kCdr, kType);
   EXPECT_EQ(b.format(), RosWireFormat::kCdrBigEndian);
   EXPECT_EQ(b.ReadUint32("x"), 7u);
@@ -82,13 +82,13 @@ TEST(CdrEncapsulationTest, OtherKindsAreRefusedByName) {
                 {0x00, 0x06, "CDR2_BE"}, {0x00, 0x03, "PL_CDR_LE"}, {0x01, 0x00, "unknown"},
                 {0x00, 0x11, "unknown"}};
   for (const auto& c : kCases) {
-    const Bytes b = std::move(Bytes().U8(c.b0).U8(c.b1).Zeros(2).U32(1));
+    const PayloadWriter b = std::move(PayloadWriter().U8(c.b0).U8(c.b1).Zeros(2).U32(1));
     const std::string error = ErrorMessageOf([&] { Cdr(b); });
     EXPECT_THAT(error, HasSubstr("sensor_msgs/LaserScan: encapsulation header: representation")) << error;
     EXPECT_THAT(error, HasSubstr(c.name)) << error;
     EXPECT_THAT(error, HasSubstr("at byte 0, the message has 8")) << error;
   }
-  const Bytes xcdr2 = std::move(Bytes().U8(0x00).U8(0x07).Zeros(6));
+  const PayloadWriter xcdr2 = std::move(PayloadWriter().U8(0x00).U8(0x07).Zeros(6));
   EXPECT_EQ(ErrorMessageOf([&] { Cdr(xcdr2); }),
             "sensor_msgs/LaserScan: encapsulation header: representation 00 07 (CDR2_LE, XCDR2 plain "
             "little-endian) is not supported, only XCDR1 plain CDR (00 01 little-endian, 00 00 big-endian) at byte "
@@ -113,7 +113,8 @@ TEST(CdrEncapsulationTest, PayloadShorterThanTheHeaderIsRefused) {
 TEST(RosMessageReaderTest, CdrAlignsRelativeToTheEndOfTheHeader) {
   // d = offset after the 4-byte header. "a" takes d0-d5 (length 2 with its NUL); the float64
   // goes to d8 = byte 12, not to byte 8 or 16 (multiples of 8 from the buffer start).
-  const Bytes b = std::move(CdrLe().U32(2).Text("a").U8(0).Zeros(2).F64(1.5).U32(3).Text("xy").U8(0).U8(0).F32(2.5));
+  const PayloadWriter b =
+      std::move(CdrLe().U32(2).Text("a").U8(0).Zeros(2).F64(1.5).U32(3).Text("xy").U8(0).U8(0).F32(2.5));
   RosMessageReader in = Cdr(b);
   EXPECT_EQ(in.ReadString("s"), "a");
   EXPECT_EQ(in.offset(), 10u);
@@ -126,7 +127,7 @@ TEST(RosMessageReaderTest, CdrAlignsRelativeToTheEndOfTheHeader) {
 }
 
 TEST(RosMessageReaderTest, Ros1HasNoAlignmentAndNoNul) {
-  const Bytes b = std::move(Bytes().U32(1).Text("a").F64(-0.25).U32(0).F32(4.0f));
+  const PayloadWriter b = std::move(PayloadWriter().U32(1).Text("a").F64(-0.25).U32(0).F32(4.0f));
   RosMessageReader in = Ros1(b);
   EXPECT_EQ(in.format(), RosWireFormat::kRos1);
   EXPECT_EQ(in.ReadString("s"), "a");
@@ -137,7 +138,7 @@ TEST(RosMessageReaderTest, Ros1HasNoAlignmentAndNoNul) {
 }
 
 TEST(RosMessageReaderTest, BigEndianPrimitives) {
-  const Bytes b =
+  const PayloadWriter b =
       std::move(CdrBe().U32(0xdeadbeef).U32(static_cast<std::uint32_t>(-5)).F32(-1.75f).Zeros(4).F64(1e300));
   RosMessageReader in = Cdr(b);
   EXPECT_EQ(in.ReadUint32("u"), 0xdeadbeefu);
@@ -147,54 +148,54 @@ TEST(RosMessageReaderTest, BigEndianPrimitives) {
 }
 
 TEST(RosMessageReaderTest, CdrStrings) {
-  const Bytes b = std::move(CdrLe().U32(1).U8(0).Zeros(3).U32(5).Text("odom").U8(0));
+  const PayloadWriter b = std::move(CdrLe().U32(1).U8(0).Zeros(3).U32(5).Text("odom").U8(0));
   RosMessageReader in = Cdr(b);
   EXPECT_EQ(in.ReadString("a"), "");
   EXPECT_EQ(in.ReadString("b"), "odom");
 
-  const Bytes no_nul = std::move(CdrLe().U32(4).Text("odom"));
+  const PayloadWriter no_nul = std::move(CdrLe().U32(4).Text("odom"));
   EXPECT_EQ(ErrorMessageOf([&] { Cdr(no_nul).ReadString("header.frame_id"); }),
             "sensor_msgs/LaserScan: header.frame_id: a CDR string of length 4 does not end with a NUL at byte 8, "
             "the message has 12");
-  const Bytes zero = std::move(CdrLe().U32(0).Zeros(4));
+  const PayloadWriter zero = std::move(CdrLe().U32(0).Zeros(4));
   EXPECT_THAT([&] { Cdr(zero).ReadString("header.frame_id"); },
               ThrowsMessage<InputError>(HasSubstr(
                   "header.frame_id: a CDR string length of 0 leaves no room for the terminating NUL at byte 8")));
-  const Bytes past = std::move(CdrLe().U32(100).Text("odom").U8(0));
+  const PayloadWriter past = std::move(CdrLe().U32(100).Text("odom").U8(0));
   EXPECT_EQ(ErrorMessageOf([&] { Cdr(past).ReadString("header.frame_id"); }),
             "sensor_msgs/LaserScan: header.frame_id: a string of length 100 needs 100 bytes at byte 8, the message "
             "has 13");
-  const Bytes huge = std::move(CdrLe().U32(0xffffffff).Text("odom").U8(0));
+  const PayloadWriter huge = std::move(CdrLe().U32(0xffffffff).Text("odom").U8(0));
   EXPECT_THAT([&] { Cdr(huge).ReadString("s"); },
               ThrowsMessage<InputError>(HasSubstr("length 4294967295 needs 4294967295 bytes")));
 }
 
 TEST(RosMessageReaderTest, Ros1StringPastTheEnd) {
-  const Bytes b = std::move(Bytes().U32(5).Text("odom"));
+  const PayloadWriter b = std::move(PayloadWriter().U32(5).Text("odom"));
   EXPECT_EQ(ErrorMessageOf([&] { Ros1(b).ReadString("child_frame_id"); }),
             "sensor_msgs/LaserScan: child_frame_id: a string of length 5 needs 5 bytes at byte 4, the message has 8");
 }
 
 TEST(RosMessageReaderTest, SequencesAlignTheirFirstElementUnlessEmpty) {
   // Empty float64 sequence at d0: the uint32 after it stays at d4 (no alignment to 8).
-  const Bytes empty = std::move(CdrLe().U32(0).U32(7));
+  const PayloadWriter empty = std::move(CdrLe().U32(0).U32(7));
   RosMessageReader a = Cdr(empty);
   EXPECT_TRUE(a.ReadFloat64Sequence("s").empty());
   EXPECT_EQ(a.ReadUint32("after"), 7u);
   // One float64: count at d0, element at d8.
-  const Bytes one = std::move(CdrLe().U32(1).Zeros(4).F64(-3.0).U32(2).F32(1.0f).F32(2.0f));
+  const PayloadWriter one = std::move(CdrLe().U32(1).Zeros(4).F64(-3.0).U32(2).F32(1.0f).F32(2.0f));
   RosMessageReader b = Cdr(one);
   EXPECT_EQ(b.ReadFloat64Sequence("s"), std::vector<double>{-3.0});
   EXPECT_EQ(b.ReadFloat32Sequence("t"), (std::vector<float>{1.0f, 2.0f}));
   // ROS 1: no padding anywhere.
-  const Bytes ros1 = std::move(Bytes().U32(1).F64(-3.0).U32(1).F32(0.5f));
+  const PayloadWriter ros1 = std::move(PayloadWriter().U32(1).F64(-3.0).U32(1).F32(0.5f));
   RosMessageReader c = Ros1(ros1);
   EXPECT_EQ(c.ReadFloat64Sequence("s"), std::vector<double>{-3.0});
   EXPECT_EQ(c.ReadFloat32Sequence("t"), std::vector<float>{0.5f});
 }
 
 TEST(RosMessageReaderTest, ImpossibleSequenceCountsThrowBeforeAllocating) {
-  const Bytes b = std::move(CdrLe().U32(0xffffffff).Zeros(16));
+  const PayloadWriter b = std::move(CdrLe().U32(0xffffffff).Zeros(16));
   EXPECT_EQ(ErrorMessageOf([&] { Cdr(b).ReadFloat32Sequence("ranges"); }),
             "sensor_msgs/LaserScan: ranges: 4294967295 float32 values need 17179869180 bytes at byte 8, the message "
             "has 24");
@@ -206,12 +207,12 @@ TEST(RosMessageReaderTest, ImpossibleSequenceCountsThrowBeforeAllocating) {
             "sensor_msgs/LaserScan: transforms: 4294967295 elements of at least 72 bytes need 309237645240 bytes at "
             "byte 8, the message has 24");
   // A count that fits passes.
-  const Bytes two = std::move(Bytes().U32(2).Zeros(144));
+  const PayloadWriter two = std::move(PayloadWriter().U32(2).Zeros(144));
   EXPECT_EQ(Ros1(two).ReadSequenceCount("transforms", 72), 2u);
 }
 
 TEST(RosMessageReaderTest, FixedArraysHaveNoCount) {
-  const Bytes b = std::move(CdrLe().U32(9).Zeros(4).F64(1).F64(2).F64(3));
+  const PayloadWriter b = std::move(CdrLe().U32(9).Zeros(4).F64(1).F64(2).F64(3));
   RosMessageReader in = Cdr(b);
   EXPECT_EQ(in.ReadUint32("n"), 9u);
   std::array<double, 3> v{};
@@ -223,7 +224,8 @@ TEST(RosMessageReaderTest, FixedArraysHaveNoCount) {
 }
 
 TEST(RosMessageReaderTest, HeaderStampsAreExactNanoseconds) {
-  const Bytes cdr = std::move(CdrLe().U32(static_cast<std::uint32_t>(-2)).U32(250000000).U32(5).Text("odom").U8(0));
+  const PayloadWriter cdr =
+      std::move(CdrLe().U32(static_cast<std::uint32_t>(-2)).U32(250000000).U32(5).Text("odom").U8(0));
   RosMessageReader a = Cdr(cdr);
   const RosHeader h = a.ReadHeader();
   EXPECT_EQ(h.seq, 0u);
@@ -231,25 +233,25 @@ TEST(RosMessageReaderTest, HeaderStampsAreExactNanoseconds) {
   EXPECT_EQ(h.frame_id, "odom");
 
   // Real dates exceed 2^53 ns; ROS 1 seconds are unsigned.
-  const Bytes ros1 = std::move(Bytes().U32(42).U32(4000000000u).U32(999999999).U32(3).Text("map"));
+  const PayloadWriter ros1 = std::move(PayloadWriter().U32(42).U32(4000000000u).U32(999999999).U32(3).Text("map"));
   const RosHeader g = Ros1(ros1).ReadHeader();
   EXPECT_EQ(g.seq, 42u);
   EXPECT_EQ(g.stamp_ns, std::int64_t{4000000000999999999});
   EXPECT_EQ(g.frame_id, "map");
 
-  const Bytes real = std::move(CdrLe().U32(1700000000).U32(999999999).U32(1).U8(0));
+  const PayloadWriter real = std::move(CdrLe().U32(1700000000).U32(999999999).U32(1).U8(0));
   EXPECT_EQ(Cdr(real).ReadHeader().stamp_ns, std::int64_t{1700000000999999999});
 }
 
 TEST(RosMessageReaderTest, ErrorsNameTypeContextFieldAndByte) {
-  const Bytes b = std::move(CdrLe().U32(1).U8(0).U8(0));  // a stamp cut in its second word
+  const PayloadWriter b = std::move(CdrLe().U32(1).U8(0).U8(0));  // a stamp cut in its second word
   RosMessageReader in(b.data, MessageSerialization::kCdr, "tf2_msgs/TFMessage");
   in.set_context("transforms[2]");
   EXPECT_EQ(ErrorMessageOf([&] { in.ReadHeader(); }),
             "tf2_msgs/TFMessage: transforms[2].header.stamp.nanosec: a uint32 needs 4 bytes at byte 8, the message "
             "has 10");
   // Alignment padding that runs past the end reports the aligned offset.
-  const Bytes c = std::move(CdrLe().U32(2).Text("a").U8(0));
+  const PayloadWriter c = std::move(CdrLe().U32(2).Text("a").U8(0));
   RosMessageReader d = Cdr(c);
   d.ReadString("s");
   EXPECT_EQ(ErrorMessageOf([&] { d.ReadFloat64("x"); }),

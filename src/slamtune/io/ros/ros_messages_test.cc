@@ -15,11 +15,13 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
+#include "slamtune/common/testing/fixtures.h"
 
 namespace slamtune::io {
 namespace {
 
 using slamtune::testing::ErrorMessageOf;
+using slamtune::testing::FixturePath;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 using Payload = std::vector<std::uint8_t>;
@@ -34,7 +36,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // tfCase formulas; golden.json there lists the same values.
 
 Payload Golden(const std::string& name) {
-  const std::string path = std::string(SLAMTUNE_SOURCE_DIR) + "/tests/fixtures/ros_messages/" + name;
+  const std::string path = FixturePath("ros_messages/" + name);
   std::ifstream in(path, std::ios::binary);
   EXPECT_TRUE(in) << "cannot open " << path;
   return Payload(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -26,7 +26,7 @@ struct RecordingRead {
   std::string error;
 };
 
-RecordingRead Read(const std::string& path, ContainerReadOptions options = {}) {
+RecordingRead ReadRecording(const std::string& path, ContainerReadOptions options = {}) {
   RecordingRead read;
   try {
     read.summary = ReadRosRecording(path, options, Collect(&read.messages));
@@ -47,7 +47,7 @@ std::string MetadataYaml(const std::string& storage, const std::vector<std::stri
   return yaml;
 }
 
-void WriteText(const std::string& path, const std::string& text) { WriteFile(path, ToBytes(text)); }
+void WriteTextFile(const std::string& path, const std::string& text) { WriteFile(path, ToBytes(text)); }
 
 // An MCAP split whose /scan channel has id `scan_channel`, with one more topic /odom.
 Bytes McapSplit(std::uint16_t scan_channel, std::uint64_t t0, std::string_view suffix, bool zstd_payloads = false) {
@@ -77,8 +77,8 @@ TEST(RosRecordingTest, DetectsEachKindByContentNeverByName) {
   WriteFile(dir + "/b.mcap", SmallRos1Bag("none"));
   WriteHumbleDb3(dir + "/c.txt");
   WriteFile(dir + "/d.db3", ZstdCompress(SmallMcap("")));
-  WriteText(dir + "/e.clf", "# CARMEN log\nODOM 0 0 0 0 0 0 1.0 host 1.0\n");
-  WriteText(dir + "/empty", "");
+  WriteTextFile(dir + "/e.clf", "# CARMEN log\nODOM 0 0 0 0 0 0 1.0 host 1.0\n");
+  WriteTextFile(dir + "/empty", "");
   gzFile gz = gzopen((dir + "/f.mcap").c_str(), "wb");
   gzputs(gz, "FLASER 0\n");
   gzclose(gz);
@@ -93,7 +93,7 @@ TEST(RosRecordingTest, DetectsEachKindByContentNeverByName) {
             dir + "/nothing: cannot open (No such file or directory)");
   EXPECT_EQ(ErrorMessageOf([&] { DetectRecordingKind(dir); }),
             dir + ": a folder but not a rosbag2 bag (no metadata.yaml)");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"a.bag"}));
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"a.bag"}));
   EXPECT_EQ(DetectRecordingKind(dir), RecordingKind::kRosbag2Folder);
   EXPECT_STREQ(RecordingKindName(RecordingKind::kRosbag2Folder), "rosbag2 bag folder");
   EXPECT_STREQ(ContainerFormatName(ContainerFormat::kRosbag1), "ROS 1 bag v2.0");
@@ -119,31 +119,33 @@ TEST(RosRecordingTest, ReadsEverySingleFileKindAndRefusesACarmenLog) {
         Expected{"drive.mcap.zstd", ContainerFormat::kMcap, 4, "zstd"},
         Expected{"drive.db3.zstd", ContainerFormat::kRosbag2Sqlite, 4, "zstd"}}) {
     SCOPED_TRACE(e.file);
-    const RecordingRead read = Read(dir + "/" + e.file);
+    const RecordingRead read = ReadRecording(dir + "/" + e.file);
     ASSERT_EQ(read.error, "");
     EXPECT_EQ(read.summary.format, e.format);
     EXPECT_EQ(read.messages.size(), e.messages);
     EXPECT_EQ(read.summary.file_compression, e.file_compression);
     EXPECT_THAT(read.summary.files, ElementsAre(dir + "/" + e.file));
   }
-  WriteText(dir + "/intel.clf", "ODOM 0 0 0 0 0 0 1.0 host 1.0\n");
-  EXPECT_EQ(Read(dir + "/intel.clf").error, dir +
-                                                "/intel.clf: not a ROS recording (MCAP, rosbag2 SQLite3 or ROS 1 "
-                                                "bag v2.0): it reads as a CARMEN log");
+  WriteTextFile(dir + "/intel.clf", "ODOM 0 0 0 0 0 0 1.0 host 1.0\n");
+  EXPECT_EQ(ReadRecording(dir + "/intel.clf").error,
+            dir +
+                "/intel.clf: not a ROS recording (MCAP, rosbag2 SQLite3 or ROS 1 "
+                "bag v2.0): it reads as a CARMEN log");
   WriteFile(dir + "/text.zstd", ZstdCompress(ToBytes("plain text")));
-  EXPECT_THAT(Read(dir + "/text.zstd").error, HasSubstr("zstd-compressed, but what it holds is not"));
+  EXPECT_THAT(ReadRecording(dir + "/text.zstd").error, HasSubstr("zstd-compressed, but what it holds is not"));
   Bytes cut = ZstdCompress(SmallMcap(""));
   cut.resize(cut.size() / 2);
   WriteFile(dir + "/cut.mcap.zstd", cut);
-  EXPECT_THAT(Read(dir + "/cut.mcap.zstd").error, StartsWith(dir + "/cut.mcap.zstd: zstd-compressed file: zstd: "));
+  EXPECT_THAT(ReadRecording(dir + "/cut.mcap.zstd").error,
+              StartsWith(dir + "/cut.mcap.zstd: zstd-compressed file: zstd: "));
 }
 
 TEST(RosRecordingTest, ABagFolderReadsItsSplitsInOrderWithTopicsMergedByName) {
   const std::string dir = FreshTempDir("two_splits");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"two_splits_0.mcap", "two_splits_1.mcap"}));
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"two_splits_0.mcap", "two_splits_1.mcap"}));
   WriteFile(dir + "/two_splits_0.mcap", McapSplit(0, 100, "-0"));
   WriteFile(dir + "/two_splits_1.mcap", McapSplit(4, 200, "-1"));  // /scan on another channel id
-  const RecordingRead read = Read(dir);
+  const RecordingRead read = ReadRecording(dir);
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(Summary(read.messages),
             "/scan:scan-0@100 in two_splits_0.mcap; /odom:odom-0@101 in two_splits_0.mcap; "
@@ -161,14 +163,14 @@ TEST(RosRecordingTest, ABagFolderReadsItsSplitsInOrderWithTopicsMergedByName) {
 
 TEST(RosRecordingTest, FileCompressedSplitsAreDecompressedWhole) {
   const std::string dir = FreshTempDir("file_compressed");
-  WriteText(dir + "/metadata.yaml",
-            MetadataYaml("sqlite3", {"file_compressed_0.db3.zstd", "file_compressed_1.db3"}, "FILE", "zstd"));
+  WriteTextFile(dir + "/metadata.yaml",
+                MetadataYaml("sqlite3", {"file_compressed_0.db3.zstd", "file_compressed_1.db3"}, "FILE", "zstd"));
   WriteHumbleDb3(dir + "/plain.db3");
   WriteFile(dir + "/file_compressed_0.db3.zstd", ZstdCompress(ReadFile(dir + "/plain.db3")));
   // Listed without ".zstd", found with it.
   std::filesystem::rename(dir + "/plain.db3", dir + "/file_compressed_1.db3.zstd.tmp");
   WriteFile(dir + "/file_compressed_1.db3.zstd", ZstdCompress(ReadFile(dir + "/file_compressed_1.db3.zstd.tmp")));
-  const RecordingRead read = Read(dir);
+  const RecordingRead read = ReadRecording(dir);
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(read.messages.size(), 8u);
   EXPECT_EQ(read.summary.topics.size(), 2u);
@@ -180,9 +182,9 @@ TEST(RosRecordingTest, FileCompressedSplitsAreDecompressedWhole) {
 
 TEST(RosRecordingTest, MessageCompressedPayloadsAreDecompressedForTheCallback) {
   const std::string dir = FreshTempDir("message_compressed");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"message_compressed_0.mcap"}, "MESSAGE", "zstd"));
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"message_compressed_0.mcap"}, "MESSAGE", "zstd"));
   WriteFile(dir + "/message_compressed_0.mcap", McapSplit(1, 100, "-z", /*zstd_payloads=*/true));
-  const RecordingRead read = Read(dir);
+  const RecordingRead read = ReadRecording(dir);
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(Summary(read.messages),
             "/scan:scan-z@100 in message_compressed_0.mcap; "
@@ -190,27 +192,28 @@ TEST(RosRecordingTest, MessageCompressedPayloadsAreDecompressedForTheCallback) {
   EXPECT_EQ(read.summary.message_compression, "zstd");
 
   WriteFile(dir + "/message_compressed_0.mcap", McapSplit(1, 100, "-plain"));  // payloads not zstd
-  EXPECT_THAT(Read(dir).error, HasSubstr("message_compressed_0.mcap: byte "));
-  EXPECT_THAT(Read(dir).error, HasSubstr("(message): zstd: "));
+  EXPECT_THAT(ReadRecording(dir).error, HasSubstr("message_compressed_0.mcap: byte "));
+  EXPECT_THAT(ReadRecording(dir).error, HasSubstr("(message): zstd: "));
 }
 
 TEST(RosRecordingTest, AMissingSplitOrAnUnusableMetadataFileIsNamed) {
   const std::string dir = FreshTempDir("missing_split");
   WriteFile(dir + "/missing_split_0.mcap", McapSplit(0, 100, "-0"));
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"missing_split_0.mcap", "missing_split_1.mcap"}));
-  EXPECT_EQ(Read(dir).error, dir +
-                                 "/missing_split_1.mcap: missing: listed in metadata.yaml's relative_file_paths, "
-                                 "but there is no such file");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"old_style_prefix/missing_split_0.mcap"}));
-  EXPECT_EQ(Read(dir).error, "");  // found by its base name
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {}));
-  EXPECT_EQ(Read(dir).error, dir + "/metadata.yaml: no relative_file_paths: the bag lists no files");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"missing_split_0.mcap"}, "file", "lz4"));
-  EXPECT_EQ(Read(dir).error, dir + "/metadata.yaml: compression_format \"lz4\" is not supported (only zstd)");
-  WriteText(dir + "/metadata.yaml", "rosbag2_bagfile_information: [unclosed\n");
-  EXPECT_THAT(Read(dir).error, StartsWith(dir + "/metadata.yaml:"));
-  WriteText(dir + "/metadata.yaml", "something_else: 1\n");
-  EXPECT_EQ(Read(dir).error, dir + "/metadata.yaml: no rosbag2_bagfile_information map");
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"missing_split_0.mcap", "missing_split_1.mcap"}));
+  EXPECT_EQ(ReadRecording(dir).error,
+            dir +
+                "/missing_split_1.mcap: missing: listed in metadata.yaml's relative_file_paths, "
+                "but there is no such file");
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"old_style_prefix/missing_split_0.mcap"}));
+  EXPECT_EQ(ReadRecording(dir).error, "");  // found by its base name
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {}));
+  EXPECT_EQ(ReadRecording(dir).error, dir + "/metadata.yaml: no relative_file_paths: the bag lists no files");
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"missing_split_0.mcap"}, "file", "lz4"));
+  EXPECT_EQ(ReadRecording(dir).error, dir + "/metadata.yaml: compression_format \"lz4\" is not supported (only zstd)");
+  WriteTextFile(dir + "/metadata.yaml", "rosbag2_bagfile_information: [unclosed\n");
+  EXPECT_THAT(ReadRecording(dir).error, StartsWith(dir + "/metadata.yaml:"));
+  WriteTextFile(dir + "/metadata.yaml", "something_else: 1\n");
+  EXPECT_EQ(ReadRecording(dir).error, dir + "/metadata.yaml: no rosbag2_bagfile_information map");
 }
 
 // A split listed twice, by the same name or another that finds the same file, is refused before
@@ -218,25 +221,26 @@ TEST(RosRecordingTest, AMissingSplitOrAnUnusableMetadataFileIsNamed) {
 TEST(RosRecordingTest, ASplitListedTwiceIsRefused) {
   const std::string dir = FreshTempDir("split_twice");
   WriteFile(dir + "/split_twice_0.mcap", McapSplit(0, 100, "-0"));
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap", "split_twice_0.mcap"}));
-  EXPECT_EQ(Read(dir).error, dir + "/metadata.yaml: relative_file_paths lists " + dir +
-                                 "/split_twice_0.mcap twice (entries 1 and 2, \"split_twice_0.mcap\" and "
-                                 "\"split_twice_0.mcap\"): refused, as reading it twice would give every message "
-                                 "twice; remove the repeated entry");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap", "split_twice/split_twice_0.mcap"}));
-  EXPECT_THAT(Read(dir).error, HasSubstr("twice (entries 1 and 2"));
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap"}));
-  EXPECT_EQ(Read(dir).error, "");
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap", "split_twice_0.mcap"}));
+  EXPECT_EQ(ReadRecording(dir).error,
+            dir + "/metadata.yaml: relative_file_paths lists " + dir +
+                "/split_twice_0.mcap twice (entries 1 and 2, \"split_twice_0.mcap\" and "
+                "\"split_twice_0.mcap\"): refused, as reading it twice would give every message "
+                "twice; remove the repeated entry");
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap", "split_twice/split_twice_0.mcap"}));
+  EXPECT_THAT(ReadRecording(dir).error, HasSubstr("twice (entries 1 and 2"));
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"split_twice_0.mcap"}));
+  EXPECT_EQ(ReadRecording(dir).error, "");
 }
 
 TEST(RosRecordingTest, AnIncompleteSplitMakesTheBagIncompleteAndSaysWhich) {
   const std::string dir = FreshTempDir("incomplete_split");
-  WriteText(dir + "/metadata.yaml", MetadataYaml("mcap", {"incomplete_split_0.mcap", "incomplete_split_1.mcap"}));
+  WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"incomplete_split_0.mcap", "incomplete_split_1.mcap"}));
   Bytes cut = McapSplit(0, 100, "-0");
   cut.resize(cut.size() - McapDataEnd().size() - McapFooter().size() - McapMagic().size());
   WriteFile(dir + "/incomplete_split_0.mcap", cut);
   WriteFile(dir + "/incomplete_split_1.mcap", McapSplit(0, 200, "-1"));
-  const RecordingRead read = Read(dir);
+  const RecordingRead read = ReadRecording(dir);
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(read.messages.size(), 4u);
   EXPECT_FALSE(read.summary.complete);

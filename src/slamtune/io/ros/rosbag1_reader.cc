@@ -12,11 +12,11 @@
 #include "slamtune/io/ros/rosbag1_records.h"
 
 namespace slamtune::io {
+// The reader is in namespace rosbag1 with the records and ops it reads (rosbag1_records.h).
+namespace rosbag1 {
 namespace {
 
 constexpr std::string_view kMagic = "#ROSBAG V2.0\n";  // Bags/Format/2.0 "Version"
-
-using namespace rosbag1;  // records and ops (rosbag1_records.h)
 
 class Rosbag1Reader {
  public:
@@ -170,14 +170,16 @@ void Rosbag1Reader::SetEnding() {
 }
 
 }  // namespace
+}  // namespace rosbag1
 
 bool HasRosbag1Magic(std::span<const std::uint8_t> bytes) {
-  return bytes.size() >= kMagic.size() && std::equal(kMagic.begin(), kMagic.end(), bytes.begin());
+  return bytes.size() >= rosbag1::kMagic.size() &&
+         std::equal(rosbag1::kMagic.begin(), rosbag1::kMagic.end(), bytes.begin());
 }
 
 void ReadRosbag1Into(std::span<const std::uint8_t> bytes, const std::string& name, const ContainerReadOptions& options,
                      ContainerSink* sink) {
-  Rosbag1Reader(bytes, name, options, sink).Read();
+  rosbag1::Rosbag1Reader(bytes, name, options, sink).Read();
 }
 
 }  // namespace slamtune::io

@@ -15,9 +15,6 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 using namespace testing;  // NOLINT: the record builders
 
-// What a reader's error says after the record that is not read.
-const std::string kLenient = " (--lenient reads the recording up to this record)";
-
 constexpr std::uint64_t kFirstChunk = 13 + 4096;  // after the version line and the padded bag header
 
 struct BagRead {
@@ -26,7 +23,7 @@ struct BagRead {
   std::string error;
 };
 
-BagRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
+BagRead ReadAsBag(const Bytes& bytes, ContainerReadOptions options = {}) {
   BagRead read;
   try {
     read.summary = ReadContainerBytes(ContainerFormat::kRosbag1, bytes, "b.bag", options, Collect(&read.messages));
@@ -35,8 +32,6 @@ BagRead Read(const Bytes& bytes, ContainerReadOptions options = {}) {
   }
   return read;
 }
-
-std::string Byte(std::uint64_t offset) { return "byte " + std::to_string(offset); }
 
 // The offset of SmallRos1Bag's second chunk.
 std::uint64_t SecondChunk(std::string_view compression) {
@@ -47,12 +42,12 @@ std::uint64_t SecondChunk(std::string_view compression) {
   return kFirstChunk + chunk1.size() + Ros1IndexData(0).size() + Ros1IndexData(1).size();
 }
 
-Bytes Opening() { return Concat({Ros1Magic(), Ros1BagHeader(0, 0, 0)}); }
+Bytes BagOpening() { return Concat({Ros1Magic(), Ros1BagHeader(0, 0, 0)}); }
 
 TEST(Rosbag1ReaderTest, ReadsChunksOfEachCompressionAndIgnoresTheIndexsRepeatedConnections) {
   for (const std::string compression : {"none", "bz2", "lz4"}) {
     SCOPED_TRACE(compression);
-    const BagRead read = Read(SmallRos1Bag(compression));
+    const BagRead read = ReadAsBag(SmallRos1Bag(compression));
     ASSERT_EQ(read.error, "");
     const std::uint64_t second = SecondChunk(compression);
     ASSERT_EQ(read.messages.size(), 3u);
@@ -83,7 +78,7 @@ TEST(Rosbag1ReaderTest, ReadsChunksOfEachCompressionAndIgnoresTheIndexsRepeatedC
 }
 
 TEST(Rosbag1ReaderTest, AnUnindexedBagOrOneCutBeforeItsIndexReadsAsIncomplete) {
-  const BagRead unindexed = Read(SmallRos1Bag("lz4", /*indexed=*/false));
+  const BagRead unindexed = ReadAsBag(SmallRos1Bag("lz4", /*indexed=*/false));
   ASSERT_EQ(unindexed.error, "");
   EXPECT_EQ(unindexed.messages.size(), 3u);
   EXPECT_FALSE(unindexed.summary.complete);
@@ -95,7 +90,7 @@ TEST(Rosbag1ReaderTest, AnUnindexedBagOrOneCutBeforeItsIndexReadsAsIncomplete) {
                                  Ros1Connection(1, "/tf_static", "tf2_msgs/TFMessage", true).size() +
                                  2 * Ros1ChunkInfo(0).size();
   const Bytes cut(indexed.begin(), indexed.end() - static_cast<std::ptrdiff_t>(index_size));
-  const BagRead before_index = Read(cut);
+  const BagRead before_index = ReadAsBag(cut);
   ASSERT_EQ(before_index.error, "");
   EXPECT_FALSE(before_index.summary.complete);
   EXPECT_EQ(before_index.summary.ending, "no index at index_pos " + std::to_string(cut.size()) +
@@ -110,7 +105,7 @@ TEST(Rosbag1ReaderTest, ABagCutInsideAChunkReadsUpToItsLastWholeRecord) {
   for (const std::uint64_t kept : {2, 60}) {  // inside the header length, inside the data
     const Bytes cut(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(second + kept));
     for (const bool lenient : {false, true}) {
-      const BagRead read = Read(cut, {.lenient = lenient});
+      const BagRead read = ReadAsBag(cut, {.lenient = lenient});
       ASSERT_EQ(read.error, "");
       EXPECT_EQ(read.messages.size(), 2u);
       EXPECT_EQ(read.summary.dropped_tail_bytes, kept);
@@ -122,26 +117,27 @@ TEST(Rosbag1ReaderTest, ABagCutInsideAChunkReadsUpToItsLastWholeRecord) {
 
 TEST(Rosbag1ReaderTest, AMessageOnAnUndeclaredConnectionIsAnErrorInsideItsChunk) {
   const Bytes records = Concat({Ros1Connection(0, "/scan", "sensor_msgs/LaserScan"), Ros1MessageData(7, 1, 0, "x")});
-  const BagRead read = Read(Concat({Opening(), Ros1Chunk(records, "lz4")}));
+  const BagRead read = ReadAsBag(Concat({BagOpening(), Ros1Chunk(records, "lz4")}));
   EXPECT_EQ(read.error, "b.bag: " + Byte(kFirstChunk) + " (chunk), uncompressed " +
                             Byte(Ros1Connection(0, "/scan", "sensor_msgs/LaserScan").size()) +
-                            " (message data record): message on connection 7, which was never declared" + kLenient);
+                            " (message data record): message on connection 7, which was never declared" + kLenientHint);
 }
 
 TEST(Rosbag1ReaderTest, UnknownOrCorruptChunkCompressionIsAnErrorAtTheChunk) {
   const Bytes records = Ros1Connection(0, "/scan", "sensor_msgs/LaserScan");
-  EXPECT_EQ(Read(Concat({Opening(), Ros1Chunk(records, "brotli")})).error,
-            "b.bag: " + Byte(kFirstChunk) + " (chunk record): unknown compression \"brotli\"" + kLenient);
+  EXPECT_EQ(ReadAsBag(Concat({BagOpening(), Ros1Chunk(records, "brotli")})).error,
+            "b.bag: " + Byte(kFirstChunk) + " (chunk record): unknown compression \"brotli\"" + kLenientHint);
   const Bytes fake_bz2 = Ros1Record(
       {{"op", {0x05}}, {"compression", ToBytes("bz2")}, {"size", ByteWriter().U32(10).Take()}}, ToBytes("not bz2"));
-  EXPECT_EQ(Read(Concat({Opening(), fake_bz2})).error,
-            "b.bag: " + Byte(kFirstChunk) + " (chunk record): bz2: BZ_DATA_ERROR_MAGIC (not bzip2 data)" + kLenient);
+  EXPECT_EQ(
+      ReadAsBag(Concat({BagOpening(), fake_bz2})).error,
+      "b.bag: " + Byte(kFirstChunk) + " (chunk record): bz2: BZ_DATA_ERROR_MAGIC (not bzip2 data)" + kLenientHint);
 }
 
 TEST(Rosbag1ReaderTest, TopLevelMessagesUnknownOpsAndMalformedHeaders) {
-  const Bytes good = Concat({Opening(), Ros1Connection(3, "/odom", "nav_msgs/Odometry"),
+  const Bytes good = Concat({BagOpening(), Ros1Connection(3, "/odom", "nav_msgs/Odometry"),
                              Ros1MessageData(3, 10, 5, "odom"), Ros1Record({{"op", {0x09}}}, {})});
-  const BagRead read = Read(good);
+  const BagRead read = ReadAsBag(good);
   ASSERT_EQ(read.error, "");
   ASSERT_EQ(read.messages.size(), 1u);
   EXPECT_EQ(read.messages[0].log_time_ns, 10'000'000'005);
@@ -149,13 +145,14 @@ TEST(Rosbag1ReaderTest, TopLevelMessagesUnknownOpsAndMalformedHeaders) {
   EXPECT_EQ(read.summary.unknown_records, 1u);
   EXPECT_EQ(read.summary.chunks, 0u);
 
-  EXPECT_EQ(Read(Concat({Opening(), Ros1Record({{"op", {0x07}}, {"topic", ToBytes("/a")}}, {})})).error,
-            "b.bag: " + Byte(kFirstChunk) + " (connection record): no field conn" + kLenient);
-  EXPECT_EQ(Read(Concat({Opening(), Ros1Record({{"op", {0x02}}, {"conn", {1, 0}}}, {})})).error,
-            "b.bag: " + Byte(kFirstChunk) + " (message data record): field conn has 2 bytes, expected 4" + kLenient);
-  EXPECT_EQ(Read(Concat({Ros1Magic(), Ros1Connection(0, "/a", "T")})).error,
+  EXPECT_EQ(ReadAsBag(Concat({BagOpening(), Ros1Record({{"op", {0x07}}, {"topic", ToBytes("/a")}}, {})})).error,
+            "b.bag: " + Byte(kFirstChunk) + " (connection record): no field conn" + kLenientHint);
+  EXPECT_EQ(
+      ReadAsBag(Concat({BagOpening(), Ros1Record({{"op", {0x02}}, {"conn", {1, 0}}}, {})})).error,
+      "b.bag: " + Byte(kFirstChunk) + " (message data record): field conn has 2 bytes, expected 4" + kLenientHint);
+  EXPECT_EQ(ReadAsBag(Concat({Ros1Magic(), Ros1Connection(0, "/a", "T")})).error,
             "b.bag: byte 13 (connection record): the first record is not the bag header");
-  EXPECT_EQ(Read(ToBytes("#ROSBAG V1.2\n")).error,
+  EXPECT_EQ(ReadAsBag(ToBytes("#ROSBAG V1.2\n")).error,
             "b.bag: byte 0 (version line): not a ROS 1 bag v2.0 (no #ROSBAG V2.0 line)");
 }
 

@@ -23,7 +23,7 @@ struct DbRead {
   std::string error;
 };
 
-DbRead Read(const std::string& path, ContainerReadOptions options = {}) {
+DbRead ReadDb(const std::string& path, ContainerReadOptions options = {}) {
   DbRead read;
   try {
     read.summary = ReadContainerFile(ContainerFormat::kRosbag2Sqlite, path, options, Collect(&read.messages));
@@ -96,7 +96,7 @@ TEST(Rosbag2SqliteReaderTest, ReadsEachSchemaVariantInTimestampThenIdOrder) {
     SCOPED_TRACE(variant.name);
     const std::string path = dir + "/" + variant.name + ".db3";
     variant.write(path);
-    const DbRead read = Read(path);
+    const DbRead read = ReadDb(path);
     ASSERT_EQ(read.error, "");
     std::vector<std::string> order;
     for (const Delivered& m : read.messages)
@@ -129,8 +129,9 @@ TEST(Rosbag2SqliteReaderTest, ADatabaseWithoutTheRosbag2TablesIsRefused) {
     TestDatabase other(dir + "/no_type.db3");
     other.Exec(std::string("CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT);") + kMessagesTable);
   }
-  EXPECT_EQ(Read(dir + "/topics_only.db3").error, dir + "/topics_only.db3: not a rosbag2 database: no table messages");
-  EXPECT_EQ(Read(dir + "/no_type.db3").error,
+  EXPECT_EQ(ReadDb(dir + "/topics_only.db3").error,
+            dir + "/topics_only.db3: not a rosbag2 database: no table messages");
+  EXPECT_EQ(ReadDb(dir + "/no_type.db3").error,
             dir + "/no_type.db3: not a rosbag2 database: table topics has no column type");
 }
 
@@ -140,25 +141,25 @@ TEST(Rosbag2SqliteReaderTest, ACorruptOrForeignFileNamesTheSqliteError) {
   Bytes header_then_noise = ToBytes(std::string("SQLite format 3") + '\0');
   for (int i = 0; i < 8192; ++i) header_then_noise.push_back(static_cast<std::uint8_t>(random()));
   WriteFile(dir + "/noise.db3", header_then_noise);
-  EXPECT_THAT(Read(dir + "/noise.db3").error, HasSubstr(dir + "/noise.db3: sqlite: "));
+  EXPECT_THAT(ReadDb(dir + "/noise.db3").error, HasSubstr(dir + "/noise.db3: sqlite: "));
 
   WriteHumbleDb3(dir + "/pages.db3");  // 512-byte pages: overwrite every page but the first
   Bytes pages = ReadFile(dir + "/pages.db3");
   for (std::size_t i = 512; i < pages.size(); ++i) pages[i] = static_cast<std::uint8_t>(random());
   WriteFile(dir + "/pages.db3", pages);
-  EXPECT_THAT(Read(dir + "/pages.db3").error, HasSubstr("sqlite: database disk image is malformed"));
+  EXPECT_THAT(ReadDb(dir + "/pages.db3").error, HasSubstr("sqlite: database disk image is malformed"));
 
   WriteFile(dir + "/text.db3", ToBytes("just some text, long enough to be looked at by SQLite as a header......"));
-  EXPECT_THAT(Read(dir + "/text.db3").error, HasSubstr("sqlite: file is not a database"));
-  EXPECT_EQ(Read(dir + "/missing.db3").error, dir + "/missing.db3: cannot open (No such file or directory)");
+  EXPECT_THAT(ReadDb(dir + "/text.db3").error, HasSubstr("sqlite: file is not a database"));
+  EXPECT_EQ(ReadDb(dir + "/missing.db3").error, dir + "/missing.db3: cannot open (No such file or directory)");
 }
 
 TEST(Rosbag2SqliteReaderTest, AMessageOnAnUnknownTopicIdNamesItsRow) {
   const std::string path = FreshTempDir("db3_unknown_topic") + "/bag.db3";
   WriteHumbleDb3(path);
   TestDatabase(path).InsertMessage(5, 9, 250, ToBytes("orphan"));
-  EXPECT_EQ(Read(path).error, path + ": row 5: message on topic id 9, which is not in the topics table");
-  const DbRead lenient = Read(path, {.lenient = true});
+  EXPECT_EQ(ReadDb(path).error, path + ": row 5: message on topic id 9, which is not in the topics table");
+  const DbRead lenient = ReadDb(path, {.lenient = true});
   ASSERT_EQ(lenient.error, "");
   EXPECT_EQ(lenient.messages.size(), 3u);  // up to timestamp 200
   EXPECT_FALSE(lenient.summary.complete);
@@ -174,7 +175,7 @@ TEST(Rosbag2SqliteReaderTest, OtherSerializationFormatsAreMarkedInTheType) {
             kMessagesTable);
     db.Exec("INSERT INTO topics VALUES (1, '/a', 'std_msgs/String', 'ros1'), (2, '/b', 'x/msg/Y', 'json');");
   }
-  const DbRead read = Read(path);
+  const DbRead read = ReadDb(path);
   ASSERT_EQ(read.summary.topics.size(), 2u);
   EXPECT_EQ(read.summary.topics[0].serialization, MessageSerialization::kRos1);
   EXPECT_EQ(read.summary.topics[1].type, "x/msg/Y (json encoding)");

@@ -17,9 +17,9 @@ RigidTransform3 Interpolate(const RigidTransform3& a, const RigidTransform3& b, 
   return out;
 }
 
-std::string Seconds(std::int64_t ns) { return fmt::format("{:.6f} s", static_cast<double>(ns) / 1e9); }
-
 }  // namespace
+
+std::string StampText(std::int64_t stamp_ns) { return fmt::format("{:.6f} s", static_cast<double>(stamp_ns) / 1e9); }
 
 RigidTransform3 RigidTransform3::operator*(const RigidTransform3& other) const {
   RigidTransform3 out;
@@ -98,15 +98,16 @@ TfLookup TfBuffer::EdgeAt(const std::string& child, const Edge& edge, std::int64
       std::lower_bound(s.begin(), s.end(), stamp_ns, [](const Sample& a, std::int64_t t) { return a.stamp_ns < t; });
   if (after != s.end() && after->stamp_ns == stamp_ns) return {after->transform, ""};
   if (after == s.begin() || after == s.end()) {
-    return {std::nullopt, fmt::format("{} -> {} at {}: outside its samples ({} .. {})", edge.parent, child,
-                                      Seconds(stamp_ns), Seconds(s.front().stamp_ns), Seconds(s.back().stamp_ns))};
+    return {std::nullopt,
+            fmt::format("{} -> {} at {}: outside its samples ({} .. {})", edge.parent, child, StampText(stamp_ns),
+                        StampText(s.front().stamp_ns), StampText(s.back().stamp_ns))};
   }
   const Sample& b = *after;
   const Sample& a = *(after - 1);
   if (b.stamp_ns - a.stamp_ns > max_gap_ns) {
     return {std::nullopt, fmt::format("{} -> {} at {}: no sample for {:.3f} s around it (gap {} .. {})", edge.parent,
-                                      child, Seconds(stamp_ns), static_cast<double>(b.stamp_ns - a.stamp_ns) / 1e9,
-                                      Seconds(a.stamp_ns), Seconds(b.stamp_ns))};
+                                      child, StampText(stamp_ns), static_cast<double>(b.stamp_ns - a.stamp_ns) / 1e9,
+                                      StampText(a.stamp_ns), StampText(b.stamp_ns))};
   }
   const double f = static_cast<double>(stamp_ns - a.stamp_ns) / static_cast<double>(b.stamp_ns - a.stamp_ns);
   return {Interpolate(a.transform, b.transform, f), ""};

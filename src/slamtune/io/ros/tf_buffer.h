@@ -45,6 +45,9 @@ Pose2 ToPose2(const RigidTransform3& t);
 // Yaw about z of a quaternion, as tf2::getYaw: atan2(2(wz + xy), 1 - 2(y^2 + z^2)).
 double YawOf(const Eigen::Quaterniond& q);
 
+// A stamp in nanoseconds as messages about the recording give it, in seconds: "12.345678 s".
+std::string StampText(std::int64_t stamp_ns);
+
 // A frame id as tf2 names it: without the leading '/' ROS 1's tf allowed ("/base_link").
 std::string NormalizeFrameId(const std::string& frame);
 

@@ -5,17 +5,14 @@
 
 #include <cmath>
 
+#include "slamtune/io/testing/planar_transform.h"
+
 namespace slamtune::io {
 namespace {
 
-constexpr std::int64_t kSecond = 1000000000;
+using testing::Planar;
 
-RigidTransform3 Planar(double x, double y, double yaw, double z = 0.0) {
-  RigidTransform3 t;
-  t.translation = {x, y, z};
-  t.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-  return t;
-}
+constexpr std::int64_t kSecond = 1000000000;
 
 void ExpectPose(const Pose2& p, double x, double y, double theta, double tol = 1e-12) {
   EXPECT_NEAR(p.x, x, tol);
@@ -50,9 +47,9 @@ TEST(TfBuffer, NoExtrapolationAndNoBridgingOfGaps) {
   tf.Add("odom", "base", 1 * kSecond, Planar(0, 0, 0), false);
   tf.Add("odom", "base", 2 * kSecond, Planar(1, 0, 0), false);
   tf.Add("odom", "base", 2 * kSecond + kSecond / 10, Planar(1.1, 0, 0), false);
-  EXPECT_THAT(tf.Lookup("odom", "base", kSecond / 2).failure, testing::HasSubstr("outside its samples"));
-  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond).failure, testing::HasSubstr("outside its samples"));
-  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond / 2).failure, testing::HasSubstr("gap"));
+  EXPECT_THAT(tf.Lookup("odom", "base", kSecond / 2).failure, ::testing::HasSubstr("outside its samples"));
+  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond).failure, ::testing::HasSubstr("outside its samples"));
+  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond / 2).failure, ::testing::HasSubstr("gap"));
   EXPECT_TRUE(tf.Lookup("odom", "base", 2 * kSecond + kSecond / 20).transform);
   EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1.5).transform);  // a wider gap allowed
 }
@@ -65,7 +62,7 @@ TEST(TfBuffer, AGapLimitOfAnySizeIsHeldToNanosecondsThatExist) {
   tf.Add("odom", "base", 2 * kSecond, Planar(1, 0, 0), false);
   EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1e300).transform);
   EXPECT_TRUE(tf.Lookup("odom", "base", 3 * kSecond / 2, 1e10).transform);
-  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond / 2, -1e300).failure, testing::HasSubstr("gap"));
+  EXPECT_THAT(tf.Lookup("odom", "base", 3 * kSecond / 2, -1e300).failure, ::testing::HasSubstr("gap"));
   EXPECT_TRUE(tf.Lookup("odom", "base", 1 * kSecond, -1e300).transform);  // a sample itself needs no gap
 }
 
@@ -134,8 +131,8 @@ TEST(TfBuffer, UnknownOrUnconnectedFramesSayWhy) {
   TfBuffer tf;
   tf.Add("odom", "base", 0, Planar(0, 0, 0), true);
   tf.Add("map", "other", 0, Planar(0, 0, 0), true);
-  EXPECT_THAT(tf.Lookup("odom", "laser", 0).failure, testing::HasSubstr("'laser' is in no transform"));
-  EXPECT_THAT(tf.Lookup("odom", "other", 0).failure, testing::HasSubstr("not connected"));
+  EXPECT_THAT(tf.Lookup("odom", "laser", 0).failure, ::testing::HasSubstr("'laser' is in no transform"));
+  EXPECT_THAT(tf.Lookup("odom", "other", 0).failure, ::testing::HasSubstr("not connected"));
 }
 
 TEST(TfBuffer, SecondParentAndBadRotationsAreRefusedAndCounted) {

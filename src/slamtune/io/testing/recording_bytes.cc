@@ -335,6 +335,8 @@ Bytes ReadFile(const std::string& path) {
   return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+std::string Byte(std::uint64_t offset) { return "byte " + std::to_string(offset); }
+
 MessageCallback Collect(std::vector<Delivered>* out) {
   return [out](const RecordedTopic& topic, const RecordedMessage& message) {
     std::string data;

@@ -121,6 +121,11 @@ void WriteFile(const std::string& path, std::span<const std::uint8_t> bytes);
 Bytes ReadFile(const std::string& path);
 
 // --- reading ---
+// "byte N": where a reader's error says the record it stopped at starts.
+std::string Byte(std::uint64_t offset);
+// What a reader's error says after the record that is not read.
+inline const std::string kLenientHint = " (--lenient reads the recording up to this record)";
+
 struct Delivered {
   std::string topic;
   std::int64_t log_time_ns = 0;

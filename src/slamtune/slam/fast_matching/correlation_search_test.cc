@@ -15,12 +15,12 @@ namespace {
 
 // A random byte grid (padded like CorrelationGrid) and a scan with random readings, NaN, inf
 // and far "no return" values, so that the table holds safe, checked and INVALID entries.
-struct Fixture {
+struct RandomGridAndTable {
   std::vector<std::uint8_t> grid;
   std::int64_t size;
   ScanLookupTable table;
 
-  Fixture(int beams, std::uint32_t seed) {
+  RandomGridAndTable(int beams, std::uint32_t seed) {
     const std::int32_t stride = 648, height = 645;
     size = static_cast<std::int64_t>(stride) * height;
     std::mt19937 rng(seed);
@@ -65,7 +65,7 @@ CandidateCells IrregularLattice(std::int32_t stride) {
   return cells;
 }
 
-void ExpectMatchesReference(const Fixture& f, const CandidateCells& cells, int threads) {
+void ExpectMatchesReference(const RandomGridAndTable& f, const CandidateCells& cells, int threads) {
   const auto [lo, hi] = std::minmax_element(cells.index.begin(), cells.index.end());
   ScanLookupTable table = f.table;
   table.Partition(*lo, *hi, f.size);
@@ -83,18 +83,18 @@ void ExpectMatchesReference(const Fixture& f, const CandidateCells& cells, int t
 }
 
 TEST(CorrelationSearch, StepTwoRowsMatchThePerCandidateSum) {
-  const Fixture f(180, 1);
+  const RandomGridAndTable f(180, 1);
   ExpectMatchesReference(f, StepTwoLattice(648), 1);
 }
 
 TEST(CorrelationSearch, IrregularRowsMatchThePerCandidateSum) {
-  const Fixture f(180, 2);
+  const RandomGridAndTable f(180, 2);
   ExpectMatchesReference(f, IrregularLattice(648), 1);
 }
 
 TEST(CorrelationSearch, WideScansUse32BitLanes) {
   // 700 beams: 100 * 700 does not fit 16 bits.
-  const Fixture f(700, 3);
+  const RandomGridAndTable f(700, 3);
   ExpectMatchesReference(f, StepTwoLattice(648), 1);
   ExpectMatchesReference(f, IrregularLattice(648), 1);
 }
@@ -103,7 +103,7 @@ TEST(CorrelationSearch, WideScansUse32BitLanes) {
 // block widths, whole and partial column ranges, and rows whose far entries are checked.
 TEST(CorrelationSearch, Avx2RowKernelEqualsBaseline) {
   if (!internal::Avx2Available()) GTEST_SKIP() << "CPU without AVX2";
-  const Fixture f(180, 5);
+  const RandomGridAndTable f(180, 5);
   ScanLookupTable table = f.table;
   const CandidateCells cells = StepTwoLattice(648);
   const auto [lo, hi] = std::minmax_element(cells.index.begin(), cells.index.end());
@@ -131,7 +131,7 @@ TEST(CorrelationSearch, Avx2RowKernelEqualsBaseline) {
 }
 
 TEST(CorrelationSearch, ResultDoesNotDependOnThreads) {
-  const Fixture f(180, 4);
+  const RandomGridAndTable f(180, 4);
   ScanLookupTable table = f.table;
   const CandidateCells cells = StepTwoLattice(648);
   const auto [lo, hi] = std::minmax_element(cells.index.begin(), cells.index.end());

@@ -26,7 +26,7 @@ constexpr std::size_t kBaseIdsOffset = 10;
 
 // Approximate bookkeeping beside the key words: map node, bucket and the MatchResult of an
 // entry; map node, bucket and the by-id words and count of an interned scan.
-constexpr std::size_t kEntryOverheadBytes = 224;
+constexpr std::size_t kMatchEntryOverheadBytes = 224;
 constexpr std::size_t kInternedBytes = 152;
 
 }  // namespace
@@ -218,7 +218,7 @@ MatchResult MatchCache::Find(MatchRole role, const ScanMatcherOptions& options, 
   HoldReadingsLocked(scan);  // base scans' readings are held when they are interned
   Entry entry;
   entry.sequence = next_sequence_++;
-  entry.bytes = key.capacity() * sizeof(std::uint64_t) + kEntryOverheadBytes;
+  entry.bytes = key.capacity() * sizeof(std::uint64_t) + kMatchEntryOverheadBytes;
   counters_.bytes += entry.bytes;
   ++counters_.entries;
   // Element addresses survive rehashing, and an unfinished entry is never evicted.

@@ -53,7 +53,8 @@ bool SameBits(const MatchResult& a, const MatchResult& b) {
   return true;
 }
 
-struct Fixture {
+// A scan of the room to match against three base scans, with the default matcher options.
+struct ScanAndBases {
   LaserScan scan = RoomScan({0.05, -0.02, 0.01}, 3);
   std::vector<LaserScan> bases = {RoomScan({0, 0, 0}, 0), RoomScan({0.2, 0, 0}, 1), RoomScan({0.4, 0.1, 0}, 2)};
   std::vector<const LaserScan*> base_ptrs = {&bases[0], &bases[1], &bases[2]};
@@ -71,7 +72,7 @@ TEST(MatchCacheOptions, RejectsAZeroBudget) {
 // like a result (the proof is not asked for again), a real match is stored when the proof
 // fails, and another threshold is another key.
 TEST(MatchCache, MatchAboveStoresProofsAndMatchesPerThreshold) {
-  Fixture f;
+  ScanAndBases f;
   MatchCache cache;
   ScanMatcher matcher(f.options);
   int asked = 0;
@@ -97,7 +98,7 @@ TEST(MatchCache, MatchAboveStoresProofsAndMatchesPerThreshold) {
 }
 
 TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
-  Fixture f;
+  ScanAndBases f;
   MatchCache cache;
   const auto key = [&](MatchRole role, const ScanMatcherOptions& o, const LaserScan& s,
                        const std::vector<const LaserScan*>& b, Penalize penalize,
@@ -164,7 +165,7 @@ TEST(MatchCache, KeyChangesWithEveryResultAffectingInput) {
 // Base scans of another laser (docs/engine.md §3.5) are keyed with their own geometry, not
 // bypassed: the same geometry in another object gives the same key, another geometry another.
 TEST(MatchCache, BaseScansOfAnotherLaserAreKeyedByTheirGeometry) {
-  Fixture f;
+  ScanAndBases f;
   MatchCache cache;
   const auto rebuilt = [&](const LaserGeometry& g) {
     const auto ptr = std::make_shared<const LaserGeometry>(g);
@@ -219,7 +220,7 @@ TEST(MatchCache, KeysAreCompact) {
 // Ids freed by eviction are reused for other scans; keys stay exact: a scan interned under a
 // reused id never matches an entry made for the scan that held the id before.
 TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
-  Fixture f;
+  ScanAndBases f;
   MatchCacheOptions o;
   o.byte_budget = 1;  // every finished entry is evicted, freeing its ids
   MatchCache cache(o);
@@ -243,7 +244,7 @@ TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
 }
 
 TEST(MatchCache, HitReturnsTheMatchersResult) {
-  Fixture f;
+  ScanAndBases f;
   ScanMatcher reference(f.options);
   const MatchResult expected = reference.Match(f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
   MatchCache cache;
@@ -266,7 +267,7 @@ TEST(MatchCache, HitReturnsTheMatchersResult) {
 }
 
 TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
-  Fixture f;
+  ScanAndBases f;
   ScanMatcher reference(f.options);
   const MatchResult expected = reference.Match(f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
   MatchCache cache;
@@ -287,7 +288,7 @@ TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
 }
 
 TEST(MatchCache, EvictionNeverChangesResults) {
-  Fixture f;
+  ScanAndBases f;
   MatchCacheOptions o;
   o.byte_budget = 1;  // every insertion evicts
   MatchCache cache(o);
@@ -310,7 +311,7 @@ TEST(MatchCache, EvictionNeverChangesResults) {
 
 // Eviction drops the least recently used entries: a hit keeps an old entry.
 TEST(MatchCache, EvictionKeepsRecentlyUsedEntries) {
-  Fixture f;
+  ScanAndBases f;
   ScanMatcher matcher(f.options);
   std::size_t two_entries = 0;
   {

@@ -10,7 +10,7 @@ namespace slamtune::slam {
 namespace {
 
 // Map node, the stored summary's strings, vector headers.
-constexpr std::size_t kEntryOverheadBytes = 256;
+constexpr std::size_t kSolveEntryOverheadBytes = 256;
 
 }  // namespace
 
@@ -57,7 +57,7 @@ std::optional<SolveCache::Solved> SolveCache::Find(const std::vector<std::uint64
 void SolveCache::Store(std::vector<std::uint64_t> key, Solved solved) {
   Entry entry;
   entry.bytes = key.size() * sizeof(std::uint64_t) + (solved.nodes.size() + solved.barycenters.size()) * sizeof(Pose2) +
-                kEntryOverheadBytes;
+                kSolveEntryOverheadBytes;
   entry.solved = std::move(solved);
   std::lock_guard guard(mutex_);
   if (entry.bytes > byte_budget_ || entries_.count(key) != 0) return;
