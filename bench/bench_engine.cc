@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 

@@ -41,11 +41,11 @@
 #include <string>
 #include <vector>
 
-#include "slamtune/io/carmen_reader.h"
-#include "slamtune/slam/correlation_grid.h"
+#include "slamtune/io/carmen/carmen_reader.h"
+#include "slamtune/slam/matching/correlation_grid.h"
+#include "slamtune/slam/matching/reference_scan_matcher.h"
+#include "slamtune/slam/matching/scan_matcher.h"
 #include "slamtune/slam/occupancy_grid.h"
-#include "slamtune/slam/reference_scan_matcher.h"
-#include "slamtune/slam/scan_matcher.h"
 
 namespace {
 

@@ -28,12 +28,12 @@
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/relations.h"
 #include "slamtune/optim/candidate_selection.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/search_space.h"
-#include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/report/rank_correlation.h"
 #include "slamtune/sim/simulation.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace {
 

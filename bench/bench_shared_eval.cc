@@ -34,10 +34,10 @@
 #include <vector>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/optim/optimizer.h"
 #include "slamtune/optim/search_space.h"
-#include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/optim/tuning_problem.h"
 #include "slamtune/sim/simulation.h"
 

@@ -16,7 +16,7 @@
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/input_flags.h"
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/carmen/carmen_writer.h"
 #include "slamtune/io/log_summary.h"
 
 namespace slamtune::cli {

@@ -1,7 +1,7 @@
 // `slamtune optimize [LOG] --out DIR`: NSGA-III over the loop-closure parameters, scored by
 // the map objectives of each SLAM run, with a report an engineer can act on (the work:
 // tune/optimize_command.h). Under mpirun, rank 0 optimises and writes; the other ranks evaluate
-// (optim/mpi_evaluation.h).
+// (optim/evaluation/mpi_evaluation.h).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/slam/ros_params_section.h"
+#include "slamtune/slam/params/ros_params_section.h"
 #include "slamtune/tune/params_inspection.h"
 
 namespace slamtune::cli {

@@ -2,7 +2,7 @@
 // and the three map objectives (and errors, with relations) along one parameter — the seed
 // paper's Figures 14-15 (g = 6..20 at r = 2; r = 2..6 by 0.25 at g = 18); the work is
 // tune/sweep_command.h. Under mpirun, rank 0 writes and the other ranks evaluate, as for optimize
-// (optim/mpi_evaluation.h).
+// (optim/evaluation/mpi_evaluation.h).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>

@@ -18,7 +18,7 @@ enum class MaxScansFlag { kOffer, kOmit };
 // --lenient, --no-return, --max-scans, --beams and the ROS recording choices.
 void AddLogInputFlags(CLI::App& app, tune::LogInputOptions& options, MaxScansFlag max_scans = MaxScansFlag::kOffer);
 
-// --preset: the node and its defaults (slam/base_configuration.h).
+// --preset: the node and its defaults (slam/params/base_configuration.h).
 CLI::Option* AddPresetFlag(CLI::App& app, std::string& preset);
 
 // --relations, --world, --world-seed, --preset, --params, --set and the log's flags.

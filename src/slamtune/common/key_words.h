@@ -1,7 +1,7 @@
 // Exact cache keys as vectors of 64-bit words, shared by the caches that let SLAM runs reuse each
-// other's work (slam/sharing/match_cache.h, slam/sharing/solve_cache.h, optim/map_score_cache.h). A key holds the
-// bits of everything a result depends on and is compared word for word; KeyWordsHash only picks
-// a bucket, so a collision costs time, never a wrong result.
+// other's work (slam/sharing/match_cache.h, slam/sharing/solve_cache.h, optim/evaluation/map_score_cache.h). A key
+// holds the bits of everything a result depends on and is compared word for word; KeyWordsHash only picks a bucket, so
+// a collision costs time, never a wrong result.
 #pragma once
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 #include "slamtune/io/ros/recording_log.h"
 #include "slamtune/io/ros/ros_recording.h"
 

@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 
 namespace slamtune::io {
 namespace {

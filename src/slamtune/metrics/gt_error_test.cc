@@ -8,7 +8,7 @@
 #include <random>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 
 namespace slamtune::metrics {
 namespace {

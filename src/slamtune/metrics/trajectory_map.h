@@ -22,8 +22,8 @@
 #include "slamtune/io/trajectory.h"
 #include "slamtune/slam/laser_scan.h"
 #include "slamtune/slam/log_runner.h"
-#include "slamtune/slam/mapper_params.h"
 #include "slamtune/slam/occupancy_grid.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::metrics {
 

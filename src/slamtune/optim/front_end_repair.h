@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/optim/search_space.h"
-#include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/slam/front_end_evidence.h"
 
 namespace slamtune::optim {

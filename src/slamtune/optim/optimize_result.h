@@ -21,7 +21,7 @@
 #include "slamtune/optim/optimization_history.h"
 #include "slamtune/optim/search_space.h"
 #include "slamtune/slam/front_end_evidence.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::optim {
 

@@ -15,13 +15,13 @@
 
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/scan_losses.h"
-#include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/evaluation_store.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/optim/search_space.h"
 #include "slamtune/optim/settling.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::optim {
 

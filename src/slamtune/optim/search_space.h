@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::optim {
 

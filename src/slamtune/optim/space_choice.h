@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/slam/front_end_evidence.h"
 
 namespace slamtune::optim {

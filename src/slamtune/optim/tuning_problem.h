@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/search_space.h"
 

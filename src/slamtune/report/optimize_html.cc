@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "slamtune/io/log_summary.h"
+#include "slamtune/report/figures/optimize_figures.h"
 #include "slamtune/report/html_page.h"
-#include "slamtune/report/optimize_figures.h"
 #include "slamtune/report/optimize_tables.h"
 #include "slamtune/report/report_text.h"
 #include "slamtune/report/tables.h"

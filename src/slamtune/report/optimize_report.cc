@@ -9,9 +9,9 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/map_image.h"
-#include "slamtune/report/front_end_map.h"
-#include "slamtune/report/map_panels.h"
-#include "slamtune/report/optimize_figures.h"
+#include "slamtune/report/figures/front_end_map.h"
+#include "slamtune/report/figures/map_panels.h"
+#include "slamtune/report/figures/optimize_figures.h"
 #include "slamtune/report/optimize_html.h"
 #include "slamtune/report/optimize_tables.h"
 #include "slamtune/report/png_encoding.h"

@@ -22,7 +22,7 @@
 
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/report/error_correlation.h"
-#include "slamtune/report/optimize_figures.h"
+#include "slamtune/report/figures/optimize_figures.h"
 
 namespace slamtune::report {
 

@@ -12,7 +12,7 @@
 #include "slamtune/common/testing/temp_dir.h"
 #include "slamtune/common/text_file.h"
 #include "slamtune/io/map_image.h"
-#include "slamtune/report/front_end_map.h"
+#include "slamtune/report/figures/front_end_map.h"
 #include "slamtune/report/testing/fake_optimize_result.h"
 
 namespace slamtune::report {

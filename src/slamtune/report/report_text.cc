@@ -8,7 +8,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/report/tables.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::report {
 

@@ -40,7 +40,7 @@ std::vector<CandidateGroup> MergedCandidates(const optim::OptimizeResult& result
 // The short symbol of a known loop-closure parameter (the paper's r, g, p, q), else the ROS name.
 std::string ShortParamName(const std::string& ros_name);
 
-// The unit of a mapper parameter as its table gives it (slam/mapper_params.h: "m", "rad"), for
+// The unit of a mapper parameter as its table gives it (slam/params/mapper_params.h: "m", "rad"), for
 // axis labels; empty for unitless or unknown parameters.
 std::string ParamUnit(const std::string& ros_name);
 

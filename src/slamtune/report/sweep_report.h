@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "slamtune/optim/evaluation_record.h"
-#include "slamtune/report/optimize_figures.h"
+#include "slamtune/report/figures/optimize_figures.h"
 
 namespace slamtune::report {
 

@@ -7,7 +7,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
-#include "slamtune/io/carmen_records.h"
+#include "slamtune/io/carmen/carmen_records.h"
 #include "slamtune/sim/random.h"
 #include "slamtune/sim/ray_caster.h"
 #include "slamtune/sim/route.h"

@@ -7,7 +7,7 @@
 #include <system_error>
 
 #include "slamtune/common/error.h"
-#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/carmen/carmen_writer.h"
 
 namespace slamtune::sim {
 namespace {

@@ -1,5 +1,5 @@
 // Writes a simulation as the three files a benchmark dataset has:
-//   DIR/NAME.clf         CARMEN log (io/carmen_writer.h): header comments, PARAM lines (the
+//   DIR/NAME.clf         CARMEN log (io/carmen/carmen_writer.h): header comments, PARAM lines (the
 //                        no-return value is PARAM laser_front_laser_max_range), ODOM and FLASER
 //   DIR/NAME.relations   Freiburg relations `t1 t2 x y z roll pitch yaw` (io/relations.h)
 //   DIR/NAME.truth.txt   `timestamp x y theta`, the true laser pose of every scan (io/trajectory.h)

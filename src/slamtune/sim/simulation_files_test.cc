@@ -11,7 +11,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 
 namespace slamtune::sim {
 namespace {

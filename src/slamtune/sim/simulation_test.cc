@@ -9,7 +9,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
-#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/carmen/carmen_writer.h"
 #include "slamtune/sim/world_catalog.h"
 
 namespace slamtune::sim {

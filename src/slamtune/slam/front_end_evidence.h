@@ -40,7 +40,7 @@
 
 #include "slamtune/common/pose2.h"
 #include "slamtune/slam/mapper.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::slam {
 

@@ -9,7 +9,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 
 namespace slamtune::slam {
 namespace {

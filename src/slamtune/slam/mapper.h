@@ -37,10 +37,10 @@
 #include "slamtune/slam/fast_matching/response_bound.h"
 #include "slamtune/slam/front_end.h"
 #include "slamtune/slam/laser_scan.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/matching/scan_matcher.h"
+#include "slamtune/slam/params/mapper_params.h"
 #include "slamtune/slam/pose_graph.h"
 #include "slamtune/slam/run_trace.h"
-#include "slamtune/slam/scan_matcher.h"
 #include "slamtune/slam/scans_by_laser.h"
 #include "slamtune/slam/sharing/shared_work.h"
 

@@ -16,7 +16,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/testing/beam_counts.h"

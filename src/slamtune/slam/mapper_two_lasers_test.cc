@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper.h"

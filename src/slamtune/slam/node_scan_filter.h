@@ -23,7 +23,7 @@
 #include <cstdint>
 
 #include "slamtune/common/pose2.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::slam {
 

@@ -10,7 +10,7 @@
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/trajectory.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::slam {
 

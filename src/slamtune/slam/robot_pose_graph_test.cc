@@ -7,7 +7,7 @@
 
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::slam {
 namespace {

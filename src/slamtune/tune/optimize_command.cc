@@ -6,9 +6,9 @@
 #include <optional>
 
 #include "slamtune/common/signal_notice.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/optim/evaluation_store.h"
 #include "slamtune/optim/optimizer.h"
-#include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/report/optimize_report.h"
 
 namespace slamtune::tune {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "slamtune/common/progress.h"
-#include "slamtune/optim/batch_evaluator.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/tune/optimize_options.h"
 #include "slamtune/tune/optimize_plan.h"

@@ -8,7 +8,7 @@
 #include "slamtune/optim/front_end_repair.h"
 #include "slamtune/optim/objective_set.h"
 #include "slamtune/optim/space_choice.h"
-#include "slamtune/slam/params_yaml.h"
+#include "slamtune/slam/params/params_yaml.h"
 
 namespace slamtune::tune {
 namespace {

@@ -9,9 +9,9 @@
 #include <memory>
 #include <optional>
 
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/optim/optimizer.h"
-#include "slamtune/optim/slam_evaluation.h"
 #include "slamtune/tune/optimize_options.h"
 #include "slamtune/tune/run_folder.h"
 #include "slamtune/tune/tuning_inputs.h"

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "slamtune/common/text_file.h"
-#include "slamtune/slam/base_configuration.h"
+#include "slamtune/slam/params/base_configuration.h"
 
 namespace slamtune::tune {
 namespace {

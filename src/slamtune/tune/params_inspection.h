@@ -1,5 +1,5 @@
 // `slamtune params` as library work: what a stack of slam_toolbox or slam_karto parameter files
-// means to the engine, and whether their node would load each (slam/ros_node_files.h
+// means to the engine, and whether their node would load each (slam/params/ros_node_files.h
 // CheckNodeFile). The files are applied in order, as a launch file stacks them (your file, then
 // a change file), over the declared defaults of the first file's node.
 #pragma once
@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "slamtune/slam/mapper_params.h"
-#include "slamtune/slam/params_yaml.h"
-#include "slamtune/slam/ros_node_files.h"
+#include "slamtune/slam/params/mapper_params.h"
+#include "slamtune/slam/params/params_yaml.h"
+#include "slamtune/slam/params/ros_node_files.h"
 
 namespace slamtune::tune {
 

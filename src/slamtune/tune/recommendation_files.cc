@@ -54,7 +54,7 @@ std::string BehaviourWarning(const Target& target, const TuningInputs& inputs, c
 std::vector<std::string> Header(const Target& target, const TuningInputs& inputs, const optim::OptimizeResult& result,
                                 const std::string& recommended_summary) {
   std::vector<std::string> lines;
-  // "tuned for MODE" is read back by slam/base_configuration.h, so `run --params` runs that mode.
+  // "tuned for MODE" is read back by slam/params/base_configuration.h, so `run --params` runs that mode.
   const std::string tuned_for = fmt::format("slamtune optimize, tuned for {} ({})", slam::NameOf(inputs.base.node_mode),
                                             slam::LaunchOf(inputs.base.node_mode));
   if (result.verdict_kind == optim::VerdictKind::kBetter) {

@@ -1,5 +1,5 @@
 // The answer of `slamtune optimize` as parameter files the robot's node loads as they are
-// (slam/ros_node_files.h): for slam_toolbox (ROS 2) best.yaml (full) and best_change.yaml (only
+// (slam/params/ros_node_files.h): for slam_toolbox (ROS 2) best.yaml (full) and best_change.yaml (only
 // what differs from the base), for slam_karto (ROS 1) best_slam_karto.yaml and
 // best_slam_karto_change.yaml. Each file's first comment line says whether the recommendation
 // is better than the base; when it is not, the full file is the base unchanged and the change

@@ -7,7 +7,7 @@
 #include "slamtune/io/log_summary.h"
 #include "slamtune/report/json_number.h"
 #include "slamtune/report/scan_losses_json.h"
-#include "slamtune/slam/params_yaml.h"
+#include "slamtune/slam/params/params_yaml.h"
 #include "slamtune/slam/pose_graph.h"
 
 namespace slamtune::tune {

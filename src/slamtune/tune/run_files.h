@@ -12,7 +12,7 @@
 #include "slamtune/metrics/map_quality.h"
 #include "slamtune/slam/front_end_evidence.h"
 #include "slamtune/slam/log_runner.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::tune {
 

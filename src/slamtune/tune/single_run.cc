@@ -10,8 +10,8 @@
 #include "slamtune/common/output_dir.h"
 #include "slamtune/io/map_image.h"
 #include "slamtune/io/trajectory.h"
+#include "slamtune/report/figures/front_end_map.h"
 #include "slamtune/report/front_end_json.h"
-#include "slamtune/report/front_end_map.h"
 #include "slamtune/report/png_encoding.h"
 #include "slamtune/tune/run_files.h"
 

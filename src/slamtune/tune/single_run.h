@@ -9,7 +9,7 @@
 #include <string>
 
 #include "slamtune/common/progress.h"
-#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/tune/tuning_inputs.h"
 
 namespace slamtune::tune {

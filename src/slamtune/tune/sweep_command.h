@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "slamtune/optim/batch_evaluator.h"
-#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/report/sweep_report.h"
 #include "slamtune/tune/tuning_inputs.h"
 #include "slamtune/tune/tuning_process.h"

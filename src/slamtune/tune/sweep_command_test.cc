@@ -7,7 +7,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/temp_dir.h"
-#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/carmen/carmen_writer.h"
 #include "slamtune/sim/simulation.h"
 
 namespace slamtune::tune {

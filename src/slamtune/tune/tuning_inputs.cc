@@ -15,7 +15,7 @@
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
-#include "slamtune/slam/params_yaml.h"
+#include "slamtune/slam/params/params_yaml.h"
 
 namespace slamtune::tune {
 
@@ -61,7 +61,7 @@ TuningInputOptions TuningInputOptions::FromJson(const nlohmann::json& j) {
 
 namespace {
 
-// The base configuration (slam/base_configuration.h). Its file's warnings are said unless
+// The base configuration (slam/params/base_configuration.h). Its file's warnings are said unless
 // nothing is (a worker rank): they are about the user's input, like data the log loses.
 void LoadBase(const TuningInputOptions& options, InputNotes notes, TuningInputs* in) {
   slam::BaseConfiguration base =

@@ -18,12 +18,12 @@
 #include "slamtune/io/relations.h"
 #include "slamtune/io/scan_losses.h"
 #include "slamtune/metrics/relation_match.h"
-#include "slamtune/optim/batch_evaluator.h"
-#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/sim/simulation.h"
-#include "slamtune/slam/base_configuration.h"
-#include "slamtune/slam/mapper_params.h"
-#include "slamtune/slam/ros_node_files.h"
+#include "slamtune/slam/params/base_configuration.h"
+#include "slamtune/slam/params/mapper_params.h"
+#include "slamtune/slam/params/ros_node_files.h"
 #include "slamtune/tune/log_input.h"
 
 namespace slamtune::tune {
@@ -36,7 +36,7 @@ struct TuningInputOptions {
   std::string preset;
   std::string params_file;
   std::vector<std::string> sets;
-  // How --params and --preset combine (slam/base_configuration.h); folders written before the
+  // How --params and --preset combine (slam/params/base_configuration.h); folders written before the
   // rule resume with the old one (MigrateInvocation, tune/optimize_options.h).
   slam::BaseRule base_rule = slam::BaseRule::kNodeDefaults;
   LogInputOptions input;  // how the log is read (--lenient, --no-return, --beams, bag choices)

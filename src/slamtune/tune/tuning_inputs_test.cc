@@ -9,7 +9,7 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
-#include "slamtune/io/carmen_writer.h"
+#include "slamtune/io/carmen/carmen_writer.h"
 #include "slamtune/io/relations.h"
 #include "slamtune/sim/simulation.h"
 

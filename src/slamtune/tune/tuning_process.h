@@ -1,4 +1,4 @@
-// A tuning command's process and its part in an MPI job (optim/mpi_evaluation.h): started by
+// A tuning command's process and its part in an MPI job (optim/evaluation/mpi_evaluation.h): started by
 // mpirun with several ranks, rank 0 drives the command and hands SLAM runs to the others (the
 // workers), which wait for its WorkerSetup, build the same evaluation context and only evaluate;
 // an error on rank 0 before StopWorkers stops them too. Alone, the process does everything and
@@ -10,9 +10,9 @@
 #include <optional>
 #include <string>
 
-#include "slamtune/optim/batch_evaluator.h"
-#include "slamtune/optim/mpi_evaluation.h"
-#include "slamtune/optim/slam_evaluation.h"
+#include "slamtune/optim/evaluation/batch_evaluator.h"
+#include "slamtune/optim/evaluation/mpi_evaluation.h"
+#include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/tune/tuning_inputs.h"
 
 namespace slamtune::tune {

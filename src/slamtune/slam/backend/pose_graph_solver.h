@@ -62,7 +62,7 @@ enum class SolverKind { kSpa, kCeres };
 // The options of slam_toolbox's Ceres back-end, as its CeresSolver::Configure
 // (solvers/ceres_solver.cpp) reads them from ceres_loss_function, ceres_linear_solver,
 // ceres_preconditioner, ceres_trust_strategy and ceres_dogleg_type. The first value of each enum
-// is what the node uses for a text it does not know (slam/params_yaml.h reads them that way).
+// is what the node uses for a text it does not know (slam/params/params_yaml.h reads them that way).
 // The robust loss on every edge has scale 0.7.
 enum class CeresLoss { kNone, kHuber, kCauchy };
 enum class CeresLinearSolver { kSparseNormalCholesky, kSparseSchur, kIterativeSchur, kCgnr };

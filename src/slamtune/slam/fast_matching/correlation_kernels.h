@@ -21,7 +21,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "slamtune/slam/scan_lookup_table.h"
+#include "slamtune/slam/matching/scan_lookup_table.h"
 
 namespace slamtune::slam::internal {
 

@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "slamtune/slam/scan_lookup_table.h"
+#include "slamtune/slam/matching/scan_lookup_table.h"
 
 namespace slamtune::slam {
 

@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "slamtune/common/error.h"
-#include "slamtune/slam/correlation_grid.h"
 #include "slamtune/slam/fast_matching/correlation_kernels.h"
+#include "slamtune/slam/matching/correlation_grid.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

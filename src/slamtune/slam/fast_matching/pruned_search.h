@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "slamtune/slam/fast_matching/correlation_search.h"
-#include "slamtune/slam/scan_lookup_table.h"
+#include "slamtune/slam/matching/scan_lookup_table.h"
 
 namespace slamtune::slam {
 

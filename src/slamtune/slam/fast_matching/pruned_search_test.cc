@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "slamtune/slam/correlation_grid.h"
+#include "slamtune/slam/matching/correlation_grid.h"
 #include "slamtune/slam/testing/synthetic_room.h"
 
 namespace slamtune::slam {

@@ -35,9 +35,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "slamtune/slam/correlation_grid.h"
 #include "slamtune/slam/laser_scan.h"
-#include "slamtune/slam/scan_matcher.h"
+#include "slamtune/slam/matching/correlation_grid.h"
+#include "slamtune/slam/matching/scan_matcher.h"
 
 namespace slamtune::slam {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "slamtune/common/karto_math.h"
-#include "slamtune/slam/mapper_params.h"
-#include "slamtune/slam/scan_matcher.h"
+#include "slamtune/slam/matching/scan_matcher.h"
+#include "slamtune/slam/params/mapper_params.h"
 #include "slamtune/slam/testing/log_slice.h"
 #include "slamtune/slam/testing/synthetic_room.h"
 

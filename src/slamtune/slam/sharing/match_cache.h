@@ -48,7 +48,7 @@
 
 #include "slamtune/common/key_words.h"
 #include "slamtune/slam/laser_scan.h"
-#include "slamtune/slam/scan_matcher.h"
+#include "slamtune/slam/matching/scan_matcher.h"
 
 namespace slamtune::slam {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "slamtune/slam/log_runner.h"
-#include "slamtune/slam/mapper_params.h"
+#include "slamtune/slam/params/mapper_params.h"
 
 namespace slamtune::slam::testing {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "slamtune/io/carmen_reader.h"
+#include "slamtune/io/carmen/carmen_reader.h"
 
 namespace slamtune::slam::testing {
 
