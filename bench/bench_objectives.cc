@@ -50,7 +50,7 @@ struct Figure {
 // The objectives, then second figures worth knowing about.
 std::vector<Figure> Figures() {
   return {
-      {"u_h (unbacked hits)", [](const EvaluationRecord& r) { return ValueOf(r, Objective::kUnbackedHits); }},
+      {"u_h (unbacked hits)", [](const EvaluationRecord& r) { return ValueOf(r, Objective("unbacked_hits")); }},
       {"eta (paper)", [](const EvaluationRecord& r) { return r.occupied_ratio; }},
       {"n_c (corner pixels)", [](const EvaluationRecord& r) { return r.corner_pixels; }},
       {"n_e (enclosed areas)", [](const EvaluationRecord& r) { return r.enclosed_areas; }},

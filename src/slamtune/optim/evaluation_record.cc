@@ -17,26 +17,41 @@ double UnbackedHits(const EvaluationRecord& r) {
 }
 
 using R = EvaluationRecord;
-constexpr auto kObjectivesGroup = FigureStorage::kObjectivesGroup;
-constexpr auto kSecondGroup = FigureStorage::kSecondGroup;
+
+// A measured figure that is not an objective; `always`: in every stored record.
+constexpr RecordFigure Measured(const char* key, double R::*field, bool always) {
+  return {key, field, nullptr, always, nullptr, nullptr, 0.0};
+}
+// An objective read from a measured figure.
+constexpr RecordFigure MeasuredObjective(const char* key, double R::*field, bool always, const char* short_name,
+                                         const char* title, double failure_score) {
+  return {key, field, nullptr, always, short_name, title, failure_score};
+}
 
 const std::array<RecordFigure, 12> kFigures = {{
-    {"occupied_ratio", &R::occupied_ratio, nullptr, kObjectivesGroup, true},
-    {"corner_pixels", &R::corner_pixels, nullptr, kObjectivesGroup, true},
-    {"enclosed_areas", &R::enclosed_areas, nullptr, kObjectivesGroup, true},
-    {"occupied_ratio_known", &R::occupied_ratio_known, nullptr, kSecondGroup, true},
-    {"corners", &R::corners, nullptr, kSecondGroup, true},
-    {"contours", &R::contours, nullptr, kSecondGroup, true},
-    {"occupied_cells", &R::occupied_cells, nullptr, kSecondGroup, false},
-    {"hits", &R::hits, nullptr, kSecondGroup, false},
-    {"hits_in_free_cells", &R::hits_in_free_cells, nullptr, kSecondGroup, false},
-    {"hits_in_unknown_cells", &R::hits_in_unknown_cells, nullptr, kSecondGroup, false},
-    {"unbacked_hits", nullptr, &UnbackedHits, FigureStorage::kDerived, false},
-    {"drawn_wall_cells", &R::drawn_wall_cells, nullptr, kSecondGroup, false},
+    MeasuredObjective("occupied_ratio", &R::occupied_ratio, true, "eta", "occupied ratio (eta)", 1.0),
+    MeasuredObjective("corner_pixels", &R::corner_pixels, true, "n_c", "corner pixels (n_c)", 1e9),
+    MeasuredObjective("enclosed_areas", &R::enclosed_areas, true, "n_e", "enclosed areas (n_e)", 1e9),
+    Measured("occupied_ratio_known", &R::occupied_ratio_known, true),
+    Measured("corners", &R::corners, true),
+    Measured("contours", &R::contours, true),
+    MeasuredObjective("occupied_cells", &R::occupied_cells, false, "n_o", "occupied cells (n_o)", 1e12),
+    Measured("hits", &R::hits, false),
+    Measured("hits_in_free_cells", &R::hits_in_free_cells, false),
+    Measured("hits_in_unknown_cells", &R::hits_in_unknown_cells, false),
+    // A share lies in [0, 1]; 2 is worse than any map.
+    {"unbacked_hits", nullptr, &UnbackedHits, false, "u_h", "unbacked hits (u_h)", 2.0},
+    MeasuredObjective("drawn_wall_cells", &R::drawn_wall_cells, false, "n_w",
+                      "wall the log's scans draw along the path (n_w)", 1e12),
 }};
 
-const char* GroupName(FigureStorage storage) {
-  return storage == FigureStorage::kObjectivesGroup ? "objectives" : "second";
+// The measured figures of a record's JSON: "figures", or, in a record stored in the earlier
+// layout, "objectives" and "second" together.
+nlohmann::json StoredFigures(const nlohmann::json& j) {
+  if (j.contains("figures")) return j.at("figures");
+  nlohmann::json figures = j.at("objectives");
+  figures.update(j.at("second"));
+  return figures;
 }
 
 }  // namespace
@@ -87,14 +102,13 @@ void to_json(nlohmann::json& j, const EvaluationRecord& r) {
                      {"params", r.params},
                      {"status", NameOf(r.status)},
                      {"reason", r.reason},
-                     {"objectives", nlohmann::json::object()},
-                     {"second", nlohmann::json::object()},
+                     {"figures", nlohmann::json::object()},
                      {"nodes", r.nodes},
                      {"loop_closures", r.loop_closures},
                      {"loop_scans", r.loop_scans},
                      {"wall_s", r.wall_s}};
   for (const RecordFigure& figure : kFigures) {
-    if (figure.storage != FigureStorage::kDerived) j[GroupName(figure.storage)][figure.key] = r.*figure.field;
+    if (!figure.derived()) j["figures"][figure.key] = r.*figure.field;
   }
   if (r.has_gt) {
     j["gt_error"] = {{"trans_mean_m", r.trans_mean_m},
@@ -110,10 +124,11 @@ void from_json(const nlohmann::json& j, EvaluationRecord& r) {
   r.params = j.at("params").get<std::map<std::string, double>>();
   r.status = ParseRunStatus(j.at("status").get<std::string>());
   r.reason = j.at("reason").get<std::string>();
+  const nlohmann::json figures = StoredFigures(j);
   for (const RecordFigure& figure : kFigures) {
-    if (figure.storage == FigureStorage::kDerived) continue;
-    const nlohmann::json& group = j.at(GroupName(figure.storage));
-    r.*figure.field = figure.in_every_stored_record ? group.at(figure.key).get<double>() : group.value(figure.key, 0.0);
+    if (figure.derived()) continue;
+    r.*figure.field =
+        figure.in_every_stored_record ? figures.at(figure.key).get<double>() : figures.value(figure.key, 0.0);
   }
   r.nodes = j.at("nodes").get<int>();
   r.loop_closures = j.at("loop_closures").get<int>();

@@ -4,10 +4,11 @@
 // given. Stored one row per evaluation in the run's SQLite database, so it converts to and from
 // JSON.
 //
-// The figures are listed once, in RecordFigures(): their keys, where the record's JSON keeps
-// them, and how each is read off a record. The record's JSON, evaluations.csv, sweep.csv and the
-// objectives iterate that table, so a new figure is one row there and, when it is measured rather
-// than derived, one field of EvaluationRecord filled in slam_evaluation.cc.
+// The figures are listed once, in RecordFigures(): their keys, how each is read off a record and,
+// for those an objective set may minimise, the objective's names and failure score. The record's
+// JSON, evaluations.csv, sweep.csv, the objective sets and the report iterate that table, so a new
+// figure or objective is one row there and, when it is measured rather than derived, one field of
+// EvaluationRecord filled in evaluation/slam_evaluation.cc.
 #pragma once
 
 #include <map>
@@ -66,19 +67,23 @@ struct EvaluationRecord {
                                  const std::string& reason);
 };
 
-// Where the record's JSON keeps a figure. The two groups are the run database's layout since its
-// first version ("objectives" held the seed paper's three objectives, "second" everything else
-// measured), kept so that every stored run folder reads back; a derived figure is computed from
-// the others and not stored.
-enum class FigureStorage { kObjectivesGroup, kSecondGroup, kDerived };
-
+// One figure a record holds, and, for the figures an objective set may minimise, what makes it an
+// objective: its short name, title and the score of a failed run. The one list of figures and
+// objectives is RecordFigures(); the record's JSON, evaluations.csv, sweep.csv, the objective
+// sets (objective_set.h) and the report's figures iterate it.
 struct RecordFigure {
   const char* key;                                   // JSON and CSV name, e.g. "corner_pixels"
   double EvaluationRecord::*field;                   // the record's field; nullptr for a derived figure
   double (*derive)(const EvaluationRecord& record);  // a derived figure's value; nullptr otherwise
-  FigureStorage storage;
   // False for figures added after the first stored records: a record without it reads as 0.
   bool in_every_stored_record;
+  // An objective's names and failure score; nullptr / 0 for a figure no objective set minimises.
+  const char* short_name;  // in figures and table headers: "eta", "n_c", "n_e", "u_h"
+  const char* title;       // in prose: "corner pixels (n_c)"
+  double failure_score;    // a failed run's score: worse than any real map
+
+  bool derived() const { return field == nullptr; }
+  bool is_objective() const { return short_name != nullptr; }
 };
 
 // Every figure, in the column order of evaluations.csv and sweep.csv.
@@ -88,6 +93,10 @@ const RecordFigure& FigureNamed(std::string_view key);
 // The figure's value in `record` (no failure scoring: see ObjectiveSet::Score).
 double FigureValue(const RecordFigure& figure, const EvaluationRecord& record);
 
+// The record's JSON keeps its measured figures in one object, "figures" (derived figures are
+// computed on reading, not stored). Records stored before held the seed paper's three figures in
+// "objectives" and the rest in "second"; from_json reads both layouts, so every stored run folder
+// reads back.
 void to_json(nlohmann::json& j, const EvaluationRecord& r);
 void from_json(const nlohmann::json& j, EvaluationRecord& r);
 

@@ -11,16 +11,6 @@
 namespace slamtune::optim {
 namespace {
 
-constexpr std::array<ObjectiveInfo, 6> kInfos = {{
-    {Objective::kOccupiedRatio, "occupied_ratio", "eta", "occupied ratio (eta)", 1.0},
-    {Objective::kCornerPixels, "corner_pixels", "n_c", "corner pixels (n_c)", 1e9},
-    {Objective::kEnclosedAreas, "enclosed_areas", "n_e", "enclosed areas (n_e)", 1e9},
-    // A share lies in [0, 1]; 2 is worse than any map.
-    {Objective::kUnbackedHits, "unbacked_hits", "u_h", "unbacked hits (u_h)", 2.0},
-    {Objective::kOccupiedCells, "occupied_cells", "n_o", "occupied cells (n_o)", 1e12},
-    {Objective::kDrawnWallCells, "drawn_wall_cells", "n_w", "wall the log's scans draw along the path (n_w)", 1e12},
-}};
-
 constexpr std::array<ObjectiveSetKind, 4> kKinds = {ObjectiveSetKind::kDrawn, ObjectiveSetKind::kOccupied,
                                                     ObjectiveSetKind::kConsistency, ObjectiveSetKind::kPaper};
 
@@ -30,39 +20,33 @@ ObjectiveSetKind DefaultObjectiveSetKind(bool search_varies_map_sampling) {
   return search_varies_map_sampling ? ObjectiveSetKind::kDrawn : ObjectiveSetKind::kOccupied;
 }
 
-const ObjectiveInfo& InfoOf(Objective objective) {
-  for (const auto& info : kInfos)
-    if (info.id == objective) return info;
-  SLAMTUNE_CHECK(false);
-  return kInfos[0];
-}
+Objective::Objective(std::string_view key) : figure_(&FigureNamed(key)) { SLAMTUNE_CHECK(figure_->is_objective()); }
 
 const std::vector<Objective>& AllObjectives() {
   static const std::vector<Objective> all = [] {
     std::vector<Objective> out;
-    for (const auto& info : kInfos) out.push_back(info.id);
+    for (const RecordFigure& figure : RecordFigures())
+      if (figure.is_objective()) out.push_back(Objective(&figure));
     return out;
   }();
   return all;
 }
 
-double ValueOf(const EvaluationRecord& record, Objective objective) {
-  return FigureValue(FigureNamed(InfoOf(objective).key), record);
-}
+double ValueOf(const EvaluationRecord& record, Objective objective) { return FigureValue(objective.figure(), record); }
 
 ObjectiveSet::ObjectiveSet(ObjectiveSetKind kind) : kind_(kind) {
   switch (kind) {
     case ObjectiveSetKind::kConsistency:
-      objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kEnclosedAreas};
+      objectives_ = {Objective("unbacked_hits"), Objective("corner_pixels"), Objective("enclosed_areas")};
       break;
     case ObjectiveSetKind::kOccupied:
-      objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kOccupiedCells};
+      objectives_ = {Objective("unbacked_hits"), Objective("corner_pixels"), Objective("occupied_cells")};
       break;
     case ObjectiveSetKind::kDrawn:
-      objectives_ = {Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kDrawnWallCells};
+      objectives_ = {Objective("unbacked_hits"), Objective("corner_pixels"), Objective("drawn_wall_cells")};
       break;
     case ObjectiveSetKind::kPaper:
-      objectives_ = {Objective::kOccupiedRatio, Objective::kCornerPixels, Objective::kEnclosedAreas};
+      objectives_ = {Objective("occupied_ratio"), Objective("corner_pixels"), Objective("enclosed_areas")};
       break;
   }
   SLAMTUNE_CHECK(!objectives_.empty());

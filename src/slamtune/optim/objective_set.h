@@ -26,24 +26,35 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "slamtune/optim/evaluation_record.h"
 
 namespace slamtune::optim {
 
-enum class Objective { kOccupiedRatio, kCornerPixels, kEnclosedAreas, kUnbackedHits, kOccupiedCells, kDrawnWallCells };
+// One objective: a row of RecordFigures() (evaluation_record.h) that carries an objective's short
+// name, title and failure score. The table is the one list of objectives; an Objective only
+// points into it.
+class Objective {
+ public:
+  // The objective read from the figure called `key`; a broken invariant (SLAMTUNE_CHECK) when the
+  // table has no objective of that key.
+  explicit Objective(std::string_view key);
 
-struct ObjectiveInfo {
-  Objective id;
-  const char* key;         // JSON/CSV name: the record figure it reads (RecordFigures())
-  const char* short_name;  // in figures and table headers: "eta", "n_c", "n_e", "u_h"
-  const char* title;       // in prose
-  double failure_score;    // the score of a failed run: worse than any real map
+  const RecordFigure& figure() const { return *figure_; }
+  friend bool operator==(Objective a, Objective b) { return a.figure_ == b.figure_; }
+
+ private:
+  explicit Objective(const RecordFigure* figure) : figure_(figure) {}
+  friend const std::vector<Objective>& AllObjectives();
+
+  const RecordFigure* figure_;
 };
 
-const ObjectiveInfo& InfoOf(Objective objective);
-// Every objective any set may use.
+// The objective's row of RecordFigures(): key, short name, title, failure score.
+inline const RecordFigure& InfoOf(Objective objective) { return objective.figure(); }
+// Every objective any set may use, in the table's order.
 const std::vector<Objective>& AllObjectives();
 
 // The objective's value for an ok record (no failure scoring).
@@ -74,7 +85,7 @@ class ObjectiveSet {
   const char* name() const { return NameOf(kind_); }
   const std::vector<Objective>& objectives() const { return objectives_; }
   std::size_t size() const { return objectives_.size(); }
-  // Whether `objective` is one of the set's (kDrawnWallCells needs the evaluation's trajectory map).
+  // Whether `objective` is one of the set's (drawn_wall_cells needs the evaluation's trajectory map).
   bool Uses(Objective objective) const;
 
   // The vector NSGA-III minimises, in objectives() order. A failed record is scored worst on

@@ -24,12 +24,14 @@ EvaluationRecord Record(double hits, double in_free, double in_unknown) {
 
 TEST(ObjectiveSet, TheDefaultIsConsistencyAndThePaperKeepsEta) {
   EXPECT_EQ(ObjectiveSet().kind(), ObjectiveSetKind::kConsistency);
-  EXPECT_EQ(ObjectiveSet().objectives(),
-            (std::vector<Objective>{Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kEnclosedAreas}));
-  EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kPaper).objectives(),
-            (std::vector<Objective>{Objective::kOccupiedRatio, Objective::kCornerPixels, Objective::kEnclosedAreas}));
-  EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kOccupied).objectives(),
-            (std::vector<Objective>{Objective::kUnbackedHits, Objective::kCornerPixels, Objective::kOccupiedCells}));
+  EXPECT_EQ(ObjectiveSet().objectives(), (std::vector<Objective>{Objective("unbacked_hits"), Objective("corner_pixels"),
+                                                                 Objective("enclosed_areas")}));
+  EXPECT_EQ(
+      ObjectiveSet(ObjectiveSetKind::kPaper).objectives(),
+      (std::vector<Objective>{Objective("occupied_ratio"), Objective("corner_pixels"), Objective("enclosed_areas")}));
+  EXPECT_EQ(
+      ObjectiveSet(ObjectiveSetKind::kOccupied).objectives(),
+      (std::vector<Objective>{Objective("unbacked_hits"), Objective("corner_pixels"), Objective("occupied_cells")}));
 }
 
 TEST(ObjectiveSet, TheOccupiedSetCountsWallCellsSoATwiceMappedCorridorScoresWorse) {
@@ -48,8 +50,8 @@ TEST(ObjectiveSet, TheDrawnSetReadsTheWallDrawnAlongThePath) {
   r.drawn_wall_cells = 30500;
   const ObjectiveSet drawn(ObjectiveSetKind::kDrawn);
   EXPECT_EQ(drawn.Score(r), (std::vector<double>{0.05, 1200, 30500}));
-  EXPECT_TRUE(drawn.Uses(Objective::kDrawnWallCells));
-  EXPECT_FALSE(ObjectiveSet(ObjectiveSetKind::kOccupied).Uses(Objective::kDrawnWallCells));
+  EXPECT_TRUE(drawn.Uses(Objective("drawn_wall_cells")));
+  EXPECT_FALSE(ObjectiveSet(ObjectiveSetKind::kOccupied).Uses(Objective("drawn_wall_cells")));
 }
 
 TEST(ObjectiveSet, TheAutomaticChoiceCountsCellsOnlyWhenEveryRunDrawsTheSameScans) {
@@ -58,10 +60,10 @@ TEST(ObjectiveSet, TheAutomaticChoiceCountsCellsOnlyWhenEveryRunDrawsTheSameScan
 }
 
 TEST(ObjectiveSet, UnbackedHitsAreTheShareOfEndPointsInFreeOrUnknownCells) {
-  EXPECT_DOUBLE_EQ(ValueOf(Record(1000, 30, 20), Objective::kUnbackedHits), 0.05);
-  EXPECT_DOUBLE_EQ(ValueOf(Record(1000, 0, 0), Objective::kUnbackedHits), 0.0);
+  EXPECT_DOUBLE_EQ(ValueOf(Record(1000, 30, 20), Objective("unbacked_hits")), 0.05);
+  EXPECT_DOUBLE_EQ(ValueOf(Record(1000, 0, 0), Objective("unbacked_hits")), 0.0);
   // No end point on the map: nothing backs it.
-  EXPECT_DOUBLE_EQ(ValueOf(Record(0, 0, 0), Objective::kUnbackedHits), 1.0);
+  EXPECT_DOUBLE_EQ(ValueOf(Record(0, 0, 0), Objective("unbacked_hits")), 1.0);
   EXPECT_EQ(ObjectiveSet().Score(Record(1000, 30, 20)), (std::vector<double>{0.05, 1200, 7}));
   EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kPaper).Score(Record(1000, 30, 20)), (std::vector<double>{0.05, 1200, 7}));
 }
@@ -97,7 +99,7 @@ TEST(ObjectiveSet, ParsesNamesAndRefusesUnknownOnes) {
 
 TEST(ObjectiveSet, DescribesItselfInWords) {
   EXPECT_EQ(ObjectiveSet().Describe(), "unbacked hits (u_h), corner pixels (n_c) and enclosed areas (n_e)");
-  EXPECT_STREQ(InfoOf(Objective::kOccupiedRatio).key, "occupied_ratio");
+  EXPECT_STREQ(InfoOf(Objective("occupied_ratio")).key, "occupied_ratio");
   EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kOccupied).Describe(),
             "unbacked hits (u_h), corner pixels (n_c) and occupied cells (n_o)");
   EXPECT_EQ(ObjectiveSet(ObjectiveSetKind::kDrawn).Describe(),

@@ -225,7 +225,7 @@ TEST(Optimizer, TheObjectiveSetDecidesWhatIsMinimised) {
   for (std::size_t i = 0; i < snapshot.decisions.size(); ++i) {
     const EvaluationRecord rec = FakeSlam(settings.space.Assign(snapshot.decisions[i]));
     EXPECT_EQ(snapshot.objectives[i],
-              (std::vector<double>{ValueOf(rec, Objective::kUnbackedHits), rec.corner_pixels, rec.enclosed_areas}));
+              (std::vector<double>{ValueOf(rec, Objective("unbacked_hits")), rec.corner_pixels, rec.enclosed_areas}));
   }
   settings.objectives = ObjectiveSet(ObjectiveSetKind::kPaper);
   const OptimizeResult paper = Optimize(FreshStore("set_paper"), OptimizationStart::kNew, FakeSlam, 1, settings);

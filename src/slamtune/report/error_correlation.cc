@@ -108,7 +108,7 @@ ErrorCorrelationSummary CorrelateObjectivesWithError(const std::vector<optim::Ev
   std::vector<double> error;
   for (const auto& r : runs) error.push_back(r.trans_mean_m);
   for (optim::Objective objective : objectives) {
-    const optim::ObjectiveInfo& info = optim::InfoOf(objective);
+    const optim::RecordFigure& info = optim::InfoOf(objective);
     std::vector<double> values;
     for (const auto& r : runs) values.push_back(optim::ValueOf(r, objective));
     ObjectiveErrorCorrelation c;

@@ -29,8 +29,8 @@ struct CorrelationReadingOptions {
 enum class Tracking { kTracks, kWeakly, kNot, kAgainst, kUndecided };
 
 struct ObjectiveErrorCorrelation {
-  std::string objective;     // ObjectiveInfo key, e.g. "unbacked_hits"
-  std::string short_name;    // ObjectiveInfo short name, e.g. "u_h"
+  std::string objective;     // the objective's key in RecordFigures(), e.g. "unbacked_hits"
+  std::string short_name;    // its short name, e.g. "u_h"
   RankCorrelation spearman;  // objective vs translational mean error
   Tracking tracking = Tracking::kUndecided;
   std::string reading;  // one sentence in plain words

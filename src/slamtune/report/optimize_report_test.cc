@@ -91,9 +91,13 @@ TEST(WriteOptimizeReport, ResultsJsonHasTheStableKeysAndValues) {
   EXPECT_DOUBLE_EQ(rec["params"]["loop_search_maximum_distance"].get<double>(), 3.0);
   EXPECT_DOUBLE_EQ(rec["params"]["loop_match_minimum_chain_size"].get<double>(), 12.0);
   const auto expected = testing::FakeRecord(3.0, 12, 0.1, true);
-  EXPECT_DOUBLE_EQ(rec["objectives"]["occupied_ratio"].get<double>(), expected.occupied_ratio);
-  EXPECT_DOUBLE_EQ(rec["objectives"]["corner_pixels"].get<double>(), expected.corner_pixels);
-  EXPECT_DOUBLE_EQ(rec["objectives"]["enclosed_areas"].get<double>(), expected.enclosed_areas);
+  EXPECT_DOUBLE_EQ(rec["figures"]["occupied_ratio"].get<double>(), expected.occupied_ratio);
+  EXPECT_DOUBLE_EQ(rec["figures"]["corner_pixels"].get<double>(), expected.corner_pixels);
+  EXPECT_DOUBLE_EQ(rec["figures"]["enclosed_areas"].get<double>(), expected.enclosed_areas);
+  // Every figure of the table, the derived ones too, under "figures".
+  EXPECT_EQ(rec["figures"].size(), optim::RecordFigures().size());
+  EXPECT_DOUBLE_EQ(rec["figures"]["unbacked_hits"].get<double>(),
+                   optim::FigureValue(optim::FigureNamed("unbacked_hits"), expected));
   EXPECT_EQ(rec["loop_closures"].get<int>(), expected.loop_closures);
   EXPECT_EQ(rec["loop_scans"].get<std::vector<int>>(), expected.loop_scans);
   EXPECT_DOUBLE_EQ(rec["gt_error"]["trans_mean_m"].get<double>(), expected.trans_mean_m);

@@ -76,7 +76,7 @@ CsvTable ObjectivesTable(const optim::OptimizeResult& result) {
     const auto& r = c->record;
     t.AddRow({c->label, FigureCell(r, r.occupied_ratio), FigureCell(r, r.occupied_ratio_known),
               FigureCell(r, r.corner_pixels), FigureCell(r, r.corners), FigureCell(r, r.enclosed_areas),
-              FigureCell(r, r.contours), FigureCell(r, optim::ValueOf(r, optim::Objective::kUnbackedHits))});
+              FigureCell(r, r.contours), FigureCell(r, optim::ValueOf(r, optim::Objective("unbacked_hits")))});
   }
   return t;
 }

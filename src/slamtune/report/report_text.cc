@@ -12,7 +12,7 @@
 
 namespace slamtune::report {
 
-const optim::ObjectiveInfo& ObjectiveAt(const optim::OptimizeResult& result, std::size_t k) {
+const optim::RecordFigure& ObjectiveAt(const optim::OptimizeResult& result, std::size_t k) {
   SLAMTUNE_CHECK(k < result.objectives.size());
   return optim::InfoOf(result.objectives.objectives()[k]);
 }
@@ -20,7 +20,7 @@ const optim::ObjectiveInfo& ObjectiveAt(const optim::OptimizeResult& result, std
 std::string ObjectiveLegend(const optim::ObjectiveSet& objectives) {
   std::string out;
   for (optim::Objective o : objectives.objectives()) {
-    const optim::ObjectiveInfo& info = optim::InfoOf(o);
+    const optim::RecordFigure& info = optim::InfoOf(o);
     std::string title = info.title;
     title = title.substr(0, title.find(" ("));
     out += fmt::format("{}{} = {}", out.empty() ? "" : ", ", info.short_name, title);

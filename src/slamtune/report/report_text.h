@@ -16,7 +16,7 @@
 namespace slamtune::report {
 
 // The names of the k-th objective of `result` (k < result.objectives.size()).
-const optim::ObjectiveInfo& ObjectiveAt(const optim::OptimizeResult& result, std::size_t k);
+const optim::RecordFigure& ObjectiveAt(const optim::OptimizeResult& result, std::size_t k);
 
 // "eta = occupied ratio, n_c = corner pixels, ..." for the objectives of `objectives`.
 std::string ObjectiveLegend(const optim::ObjectiveSet& objectives);

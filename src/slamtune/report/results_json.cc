@@ -13,10 +13,10 @@ nlohmann::json CandidateJson(const optim::Candidate& candidate) {
   const optim::EvaluationRecord& r = candidate.record;
   nlohmann::json j = r;  // the record's own JSON (optim/evaluation_record.h), then the report's fields
   j.erase("key");
-  // The derived figures (not stored in the run database) beside the seed paper's objectives.
+  // The derived figures (not stored in the run database) beside the measured ones.
   if (r.status == optim::RunStatus::kOk) {
     for (const optim::RecordFigure& figure : optim::RecordFigures()) {
-      if (figure.storage == optim::FigureStorage::kDerived) j["objectives"][figure.key] = optim::FigureValue(figure, r);
+      if (figure.derived()) j["figures"][figure.key] = optim::FigureValue(figure, r);
     }
   }
   j["label"] = candidate.label;

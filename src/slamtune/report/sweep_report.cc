@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 std::string Title(optim::Objective objective) { return optim::InfoOf(objective).title; }
 
-double Unbacked(const optim::EvaluationRecord& r) { return optim::ValueOf(r, optim::Objective::kUnbackedHits); }
+double Unbacked(const optim::EvaluationRecord& r) { return optim::ValueOf(r, optim::Objective("unbacked_hits")); }
 
 CsvTable SweepTable(const std::string& parameter, const std::vector<SweepPoint>& points, bool gt) {
   CsvTable t;
@@ -69,10 +69,10 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
                     const SweepReportOptions& options) {
   const std::vector<Quantity> quantities = {
       {"loop closures", [](const optim::EvaluationRecord& r) { return static_cast<double>(r.loop_closures); }, false},
-      ObjectiveQuantity(optim::Objective::kUnbackedHits),
-      ObjectiveQuantity(optim::Objective::kOccupiedRatio),
-      ObjectiveQuantity(optim::Objective::kCornerPixels),
-      ObjectiveQuantity(optim::Objective::kEnclosedAreas),
+      ObjectiveQuantity(optim::Objective("unbacked_hits")),
+      ObjectiveQuantity(optim::Objective("occupied_ratio")),
+      ObjectiveQuantity(optim::Objective("corner_pixels")),
+      ObjectiveQuantity(optim::Objective("enclosed_areas")),
       {"mean translational error (m)", [](const optim::EvaluationRecord& r) { return r.trans_mean_m; }, true},
       {"mean rotational error (deg)", [](const optim::EvaluationRecord& r) { return r.rot_mean_deg; }, true},
   };

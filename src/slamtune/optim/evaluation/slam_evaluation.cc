@@ -204,7 +204,7 @@ CandidateMap RenderSlamMap(const SlamEvaluationContext& context, const Assignmen
 }
 
 WallDrawing WallDrawingFor(const ObjectiveSet& objectives) {
-  return objectives.Uses(Objective::kDrawnWallCells) ? WallDrawing::kDraw : WallDrawing::kSkip;
+  return objectives.Uses(Objective("drawn_wall_cells")) ? WallDrawing::kDraw : WallDrawing::kSkip;
 }
 
 void DrawWall(SlamEvaluationContext& context, WallDrawing drawing) {
