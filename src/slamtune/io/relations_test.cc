@@ -3,8 +3,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
@@ -14,19 +12,14 @@ namespace {
 
 using slamtune::testing::ErrorMessageOf;
 using slamtune::testing::TempFilePath;
+using slamtune::testing::WriteTempFile;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-std::string TempRelationsFile(const std::string& name, const std::string& text) {
-  const std::string path = TempFilePath("relations_test", name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
-  const std::string path = TempRelationsFile("ok",
-                                             "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
-                                             "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
+  const std::string path = WriteTempFile("relations_test", "ok",
+                                         "# a comment\n\n976052896.784509 976052900.5 1.5 -0.25 0 0 0 0.125\n"
+                                         "1 2 0.1 0.2 0.0 0.0 0.0 -3.0\n");
   const auto relations = ReadRelations(path);
   ASSERT_EQ(relations.size(), 2u);
   EXPECT_DOUBLE_EQ(relations[0].t1, 976052896.784509);
@@ -38,9 +31,9 @@ TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
 }
 
 TEST(RelationsTest, ByteOrderMarkDoesNotHideTheFirstRelation) {
-  const auto relations = ReadRelations(TempRelationsFile("bom",
-                                                         "\xEF\xBB\xBF"
-                                                         "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
+  const auto relations = ReadRelations(WriteTempFile("relations_test", "bom",
+                                                     "\xEF\xBB\xBF"
+                                                     "1 2 0.5 0 0 0 0 0\n2 3 1 0 0 0 0 0\n"));
   ASSERT_EQ(relations.size(), 2u);
   EXPECT_EQ(relations[0].delta.x, 0.5);
   EXPECT_EQ(relations[0].line, 1u);
@@ -61,28 +54,30 @@ TEST(RelationsTest, RoundTripIsExact) {
   }
 }
 
-TEST(RelationsTest, EmptyFileGivesEmptyList) { EXPECT_TRUE(ReadRelations(TempRelationsFile("empty", "")).empty()); }
+TEST(RelationsTest, EmptyFileGivesEmptyList) {
+  EXPECT_TRUE(ReadRelations(WriteTempFile("relations_test", "empty", "")).empty());
+}
 
 TEST(RelationsTest, WrongColumnCountNamesFileAndLine) {
-  const std::string path = TempRelationsFile("cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
+  const std::string path = WriteTempFile("relations_test", "cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }),
             path + ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
 }
 
 TEST(RelationsTest, NonNumberIsRejected) {
-  const std::string path = TempRelationsFile("nonnum", "1 2 abc 0 0 0 0 0\n");
+  const std::string path = WriteTempFile("relations_test", "nonnum", "1 2 abc 0 0 0 0 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }), path + ":1: column 3 (x) is not a number: 'abc'");
 }
 
 TEST(RelationsTest, NanAndInfAreRejected) {
-  const std::string nan_path = TempRelationsFile("nan", "1 2 0 0 0 0 0 nan\n");
+  const std::string nan_path = WriteTempFile("relations_test", "nan", "1 2 0 0 0 0 0 nan\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(nan_path); }), nan_path + ":1: column 8 (yaw) is not finite: nan");
-  const std::string inf_path = TempRelationsFile("inf", "# c\ninf 2 0 0 0 0 0 0\n");
+  const std::string inf_path = WriteTempFile("relations_test", "inf", "# c\ninf 2 0 0 0 0 0 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(inf_path); }), inf_path + ":2: column 1 (t1) is not finite: inf");
 }
 
 TEST(RelationsTest, TruncatedLastLineIsReported) {
-  const std::string path = TempRelationsFile("trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
+  const std::string path = WriteTempFile("relations_test", "trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
   const std::string error = ErrorMessageOf([&] { ReadRelations(path); });
   EXPECT_THAT(error, HasSubstr(":2: expected 8 columns"));
   EXPECT_THAT(error, HasSubstr("truncated last line"));

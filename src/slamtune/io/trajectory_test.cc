@@ -3,8 +3,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
@@ -14,18 +12,13 @@ namespace {
 
 using slamtune::testing::ErrorMessageOf;
 using slamtune::testing::TempFilePath;
+using slamtune::testing::WriteTempFile;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-std::string TempTrajectoryFile(const std::string& name, const std::string& text) {
-  const std::string path = TempFilePath("trajectory_test", name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 TEST(TrajectoryTest, ReadsPosesAndSkipsComments) {
   const auto poses = ReadTrajectory(
-      TempTrajectoryFile("ok", "# t x y theta\n  \n10.5 1 2 0.5\n\t# indented comment\n11 -1 -2 -0.5\n"));
+      WriteTempFile("trajectory_test", "ok", "# t x y theta\n  \n10.5 1 2 0.5\n\t# indented comment\n11 -1 -2 -0.5\n"));
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[0].time, 10.5);
   EXPECT_EQ(poses[0].pose, (Pose2{1, 2, 0.5}));
@@ -48,26 +41,28 @@ TEST(TrajectoryTest, RoundTripKeepsMicrosecondsAndNineDigits) {
 }
 
 TEST(TrajectoryTest, ErrorsNameFileLineAndProblem) {
-  const std::string cols = TempTrajectoryFile("cols", "1 0 0 0\n2 0 0\n");
+  const std::string cols = WriteTempFile("trajectory_test", "cols", "1 0 0 0\n2 0 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(cols); }),
             cols + ":2: expected 4 columns (timestamp x y theta), found 3");
-  const std::string text = TempTrajectoryFile("text", "1 0 zero 0\n");
+  const std::string text = WriteTempFile("trajectory_test", "text", "1 0 zero 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(text); }), text + ":1: column 3 (y) is not a number: 'zero'");
-  const std::string nan = TempTrajectoryFile("nan", "1 0 0 0\n2 0 0 -nan\n");
+  const std::string nan = WriteTempFile("trajectory_test", "nan", "1 0 0 0\n2 0 0 -nan\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(nan); }), nan + ":2: column 4 (theta) is not finite: -nan");
-  const std::string inf = TempTrajectoryFile("inf", "-inf 0 0 0\n");
+  const std::string inf = WriteTempFile("trajectory_test", "inf", "-inf 0 0 0\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(inf); }), inf + ":1: column 1 (timestamp) is not finite: -inf");
   EXPECT_THAT([] { ReadTrajectory("/nonexistent/t.txt"); },
               ThrowsMessage<InputError>(HasSubstr("/nonexistent/t.txt: cannot open")));
 }
 
 TEST(TrajectoryTest, TwoDifferentPosesWithOneTimestampNameTheSecondLine) {
-  const std::string two = TempTrajectoryFile("two", "# t x y theta\n10.5 1 2 0.5\n11 0 0 0\n10.5 1 2.5 0.5\n");
+  const std::string two =
+      WriteTempFile("trajectory_test", "two", "# t x y theta\n10.5 1 2 0.5\n11 0 0 0\n10.5 1 2.5 0.5\n");
   EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(two); }),
             two +
                 ":4: second pose for timestamp 10.5 (line 2 has 1 2 0.5, this line 1 2.5 0.5): a "
                 "trajectory needs one pose per timestamp");
-  const std::string spelled = TempTrajectoryFile("spelled", "7.000000 0 0 0\n7 0 0 0.25\n");  // same time, other text
+  const std::string spelled =
+      WriteTempFile("trajectory_test", "spelled", "7.000000 0 0 0\n7 0 0 0.25\n");  // same time, other text
   EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(spelled); }),
             spelled +
                 ":2: second pose for timestamp 7 (line 1 has 0 0 0, this line 0 0 0.25): a "
@@ -75,21 +70,21 @@ TEST(TrajectoryTest, TwoDifferentPosesWithOneTimestampNameTheSecondLine) {
 }
 
 TEST(TrajectoryTest, AnExactlyRepeatedPoseIsReadOnce) {
-  const auto poses = ReadTrajectory(TempTrajectoryFile("repeat", "1 0 0 0\n2 1 0 0\n2 1 0 0\n3 2 0 0\n"));
+  const auto poses = ReadTrajectory(WriteTempFile("trajectory_test", "repeat", "1 0 0 0\n2 1 0 0\n2 1 0 0\n3 2 0 0\n"));
   ASSERT_EQ(poses.size(), 3u);
   EXPECT_EQ(poses[2].time, 3.0);
 }
 
 TEST(TrajectoryTest, ByteOrderMarkDoesNotHideTheFirstPose) {
-  const auto poses = ReadTrajectory(TempTrajectoryFile("bom",
-                                                       "\xEF\xBB\xBF"
-                                                       "1 0.5 0 0\n2 1 0 0\n"));
+  const auto poses = ReadTrajectory(WriteTempFile("trajectory_test", "bom",
+                                                  "\xEF\xBB\xBF"
+                                                  "1 0.5 0 0\n2 1 0 0\n"));
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[0].pose.x, 0.5);
 }
 
 TEST(TrajectoryTest, EmptyFileIsEmptyTrajectory) {
-  EXPECT_TRUE(ReadTrajectory(TempTrajectoryFile("empty", "# only\n")).empty());
+  EXPECT_TRUE(ReadTrajectory(WriteTempFile("trajectory_test", "empty", "# only\n")).empty());
 }
 
 TEST(TrajectoryTest, UnwritablePathThrows) {

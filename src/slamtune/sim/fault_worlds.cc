@@ -29,28 +29,15 @@
 #include "slamtune/sim/world_catalog.h"
 
 namespace slamtune::sim {
-namespace {
-
-OdometryFault Fault(OdometryFaultKind kind, double start_m, double length_m, double magnitude) {
-  OdometryFault fault;
-  fault.kind = kind;
-  fault.start_m = start_m;
-  fault.length_m = length_m;
-  fault.magnitude = magnitude;
-  return fault;
-}
-
-}  // namespace
-
 World MakeOfficeSlipWorld() {
   World world = MakeOfficeWorld();
-  world.odometry_faults = {Fault(OdometryFaultKind::kSpin, 45.0, 0.1, DegToRad(60.0))};
+  world.odometry_faults = {OdometryFault{OdometryFaultKind::kSpin, 45.0, 0.1, DegToRad(60.0)}};
   return world;
 }
 
 World MakeOfficeJumpWorld() {
   World world = MakeOfficeWorld();
-  world.odometry_faults = {Fault(OdometryFaultKind::kJump, 20.0, 0.1, 1.0)};
+  world.odometry_faults = {OdometryFault{OdometryFaultKind::kJump, 20.0, 0.1, 1.0}};
   return world;
 }
 
@@ -82,14 +69,14 @@ World MakeCorridorLongWorld() {
   world.walls = walls.Take();
   world.waypoints = route.Take();
   world.turn_radius = 0.6;
-  world.odometry_faults = {Fault(OdometryFaultKind::kJump, 13.0, 30.0, 1.5)};
+  world.odometry_faults = {OdometryFault{OdometryFaultKind::kJump, 13.0, 30.0, 1.5}};
   return world;
 }
 
 World MakeBuildingBrokenWorld() {
   World world = MakeBuildingWorld();
-  world.odometry_faults = {Fault(OdometryFaultKind::kSpin, 120.0, 0.1, DegToRad(50.0)),
-                           Fault(OdometryFaultKind::kReverse, 245.0, 3.0, 0.0)};
+  world.odometry_faults = {OdometryFault{OdometryFaultKind::kSpin, 120.0, 0.1, DegToRad(50.0)},
+                           OdometryFault{OdometryFaultKind::kReverse, 245.0, 3.0, 0.0}};
   return world;
 }
 

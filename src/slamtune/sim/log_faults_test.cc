@@ -7,12 +7,9 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
-#include "slamtune/sim/testing/odometry_faults.h"
 
 namespace slamtune::sim {
 namespace {
-
-using testing::Fault;
 
 constexpr double kStep = 0.05;  // m between consecutive robot poses
 
@@ -69,7 +66,7 @@ void ExpectNear(const Pose2& a, const Pose2& b, double tolerance, const std::str
 TEST(PlantLogFaults, JumpMovesEverythingAfterTheStretchOnByItsMagnitude) {
   const io::LaserLog plain = SyntheticLog(200);  // 9.95 m
   io::LaserLog log = plain;
-  const LogFaultSummary summary = PlantLogFaults(log, {Fault(OdometryFaultKind::kJump, 2.01, 0.5, 1.0)});
+  const LogFaultSummary summary = PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kJump, 2.01, 0.5, 1.0}});
   EXPECT_NEAR(summary.travel_m, 199 * kStep, 1e-9);
   EXPECT_EQ(summary.poses, 200u);
   EXPECT_EQ(summary.order, "file order");
@@ -102,7 +99,7 @@ TEST(PlantLogFaults, JumpMovesEverythingAfterTheStretchOnByItsMagnitude) {
 TEST(PlantLogFaults, KeepsReadingsTimesAndEverythingButThePoses) {
   const io::LaserLog plain = SyntheticLog(120, 0.3, Pose2{0.2, -0.1, 0.05});
   io::LaserLog log = plain;
-  PlantLogFaults(log, {Fault(OdometryFaultKind::kReverse, 1.0, 2.0)});
+  PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kReverse, 1.0, 2.0}});
   ASSERT_EQ(log.scans.size(), plain.scans.size());
   ASSERT_EQ(log.odometry.size(), plain.odometry.size());
   for (std::size_t i = 0; i < plain.scans.size(); ++i) {
@@ -126,7 +123,7 @@ TEST(PlantLogFaults, SpinTurnsThePathAfterTheStretchAboutIt) {
   const io::LaserLog plain = SyntheticLog(100);
   io::LaserLog log = plain;
   const double spin = DegToRad(60.0);
-  const LogFaultSummary summary = PlantLogFaults(log, {Fault(OdometryFaultKind::kSpin, 1.0, 0.1, spin)});
+  const LogFaultSummary summary = PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kSpin, 1.0, 0.1, spin}});
   const std::vector<Pose2> before = RobotPoses(plain), after = RobotPoses(log);
   // The stretch covers the steps to poses 21 and 22 (1.0 .. 1.1 m): half the turn in each.
   const Pose2 pivot = after[22];
@@ -144,7 +141,7 @@ TEST(PlantLogFaults, SpinTurnsThePathAfterTheStretchAboutIt) {
 TEST(PlantLogFaults, ReverseReportsTheStretchBackwards) {
   const io::LaserLog plain = SyntheticLog(100);
   io::LaserLog log = plain;
-  const LogFaultSummary summary = PlantLogFaults(log, {Fault(OdometryFaultKind::kReverse, 1.5, 1.0)});
+  const LogFaultSummary summary = PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kReverse, 1.5, 1.0}});
   const std::vector<Pose2> before = RobotPoses(plain), after = RobotPoses(log);
   for (std::size_t k = 0; k < before.size(); ++k) {
     const double travel = kStep * static_cast<double>(k);
@@ -159,7 +156,7 @@ TEST(PlantLogFaults, ReverseReportsTheStretchBackwards) {
 TEST(PlantLogFaults, OnACurveThePathAfterTheStretchIsTheOriginalMovedRigidly) {
   const io::LaserLog plain = SyntheticLog(300, 0.4);
   io::LaserLog log = plain;
-  const LogFaultSummary summary = PlantLogFaults(log, {Fault(OdometryFaultKind::kJump, 3.01, 0.2, 0.8)});
+  const LogFaultSummary summary = PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kJump, 3.01, 0.2, 0.8}});
   const std::vector<Pose2> before = RobotPoses(plain), after = RobotPoses(log);
   const Pose2& d = summary.faults[0].displacement;
   EXPECT_GT(std::hypot(d.x, d.y), 0.5);
@@ -174,8 +171,8 @@ TEST(PlantLogFaults, OnACurveThePathAfterTheStretchIsTheOriginalMovedRigidly) {
 TEST(PlantLogFaults, SeveralFaultsAddTheirEffects) {
   const io::LaserLog plain = SyntheticLog(200);
   io::LaserLog log = plain;
-  const LogFaultSummary summary = PlantLogFaults(
-      log, {Fault(OdometryFaultKind::kJump, 1.0, 0.1, 0.5), Fault(OdometryFaultKind::kJump, 4.0, 0.1, -0.5)});
+  const LogFaultSummary summary = PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kJump, 1.0, 0.1, 0.5},
+                                                       OdometryFault{OdometryFaultKind::kJump, 4.0, 0.1, -0.5}});
   ASSERT_EQ(summary.faults.size(), 2u);
   EXPECT_NEAR(summary.faults[0].shift_m, 0.5, 1e-9);
   EXPECT_NEAR(summary.faults[1].shift_m, 0.0, 1e-9);
@@ -190,12 +187,12 @@ TEST(PlantLogFaults, FollowsFileOrderInACarmenLogAndTimeOrderInARecording) {
   io::LaserLog plain = SyntheticLog(100);
   plain.scans[10].ipc_time -= 0.5;  // a scan stamped before the three records before it
   io::LaserLog log = plain;
-  const LogFaultSummary by_file = PlantLogFaults(log, {Fault(OdometryFaultKind::kJump, 3.0, 0.1, 1.0)});
+  const LogFaultSummary by_file = PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kJump, 3.0, 0.1, 1.0}});
   EXPECT_EQ(by_file.order, "file order");
   EXPECT_NEAR(by_file.travel_m, 99 * kStep, 1e-9);
   io::LaserLog recording = plain;
   recording.recording.emplace();
-  const LogFaultSummary by_time = PlantLogFaults(recording, {Fault(OdometryFaultKind::kJump, 3.0, 0.1, 1.0)});
+  const LogFaultSummary by_time = PlantLogFaults(recording, {OdometryFault{OdometryFaultKind::kJump, 3.0, 0.1, 1.0}});
   EXPECT_EQ(by_time.order, "time order");
   EXPECT_GT(by_time.travel_m, 99 * kStep + 0.1);  // the out-of-order scan is a step back and forth
 }
@@ -204,17 +201,18 @@ TEST(PlantLogFaults, RefusesAStretchBeyondTheTravelAndLogsWithoutAPath) {
   io::LaserLog log = SyntheticLog(100);  // 4.95 m
   const io::LaserLog plain = log;
   try {
-    PlantLogFaults(log, {Fault(OdometryFaultKind::kJump, 1.0, 0.1, 1.0), Fault(OdometryFaultKind::kReverse, 4.0, 1.0)});
+    PlantLogFaults(log, {OdometryFault{OdometryFaultKind::kJump, 1.0, 0.1, 1.0},
+                         OdometryFault{OdometryFaultKind::kReverse, 4.0, 1.0}});
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("fault 2 (reverse at 4 m over 1 m"));
     EXPECT_THAT(e.what(), ::testing::HasSubstr("ends at 5 m, beyond the log's odometric travel of 4.95 m"));
   }
   EXPECT_EQ(RobotPoses(log), RobotPoses(plain)) << "nothing changed";
-  EXPECT_THROW(PlantLogFaults(log, {Fault(OdometryFaultKind::kSpin, 1.0, 0.0, 1.0)}), InputError);
+  EXPECT_THROW(PlantLogFaults(log, {(OdometryFault{OdometryFaultKind::kSpin, 1.0, 0.0, 1.0})}), InputError);
   io::LaserLog single = SyntheticLog(1);
   try {
-    PlantLogFaults(single, {Fault(OdometryFaultKind::kJump, 0.0, 0.1, 1.0)});
+    PlantLogFaults(single, {OdometryFault{OdometryFaultKind::kJump, 0.0, 0.1, 1.0}});
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("1 robot poses"));

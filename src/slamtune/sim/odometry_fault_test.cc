@@ -7,12 +7,10 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
-#include "slamtune/sim/testing/odometry_faults.h"
 
 namespace slamtune::sim {
 namespace {
 
-using testing::Fault;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
@@ -24,7 +22,7 @@ TEST(OdometryFault, KindNamesRoundTrip) {
 }
 
 TEST(OdometryFault, StepsOutsideTheStretchAreUntouched) {
-  const std::vector<OdometryFault> faults = {Fault(OdometryFaultKind::kSpin, 10.0, 1.0, 0.5)};
+  const std::vector<OdometryFault> faults = {OdometryFault{OdometryFaultKind::kSpin, 10.0, 1.0, 0.5}};
   EXPECT_FALSE(FaultEffectOnStep(faults, 9.95, 0.05).active);  // ends where the fault starts
   EXPECT_FALSE(FaultEffectOnStep(faults, 11.0, 0.05).active);  // starts where it ends
   EXPECT_FALSE(FaultEffectOnStep(faults, 10.5, 0.0).active);   // no motion
@@ -33,26 +31,27 @@ TEST(OdometryFault, StepsOutsideTheStretchAreUntouched) {
 
 TEST(OdometryFault, EachKindAddsItsShareOfTheStretch) {
   const double half = 0.5;
-  const FaultEffect spin = FaultEffectOnStep({Fault(OdometryFaultKind::kSpin, 10.0, 1.0, 0.6)}, 9.75, half);
+  const FaultEffect spin = FaultEffectOnStep({OdometryFault{OdometryFaultKind::kSpin, 10.0, 1.0, 0.6}}, 9.75, half);
   EXPECT_TRUE(spin.active);
   EXPECT_NEAR(spin.extra_rotation, 0.6 * 0.25, 1e-12);  // a quarter of the stretch lies in the step
   EXPECT_EQ(spin.extra_distance, 0.0);
-  const FaultEffect jump = FaultEffectOnStep({Fault(OdometryFaultKind::kJump, 10.0, 0.2, 0.5)}, 9.9, half);
+  const FaultEffect jump = FaultEffectOnStep({OdometryFault{OdometryFaultKind::kJump, 10.0, 0.2, 0.5}}, 9.9, half);
   EXPECT_NEAR(jump.extra_distance, 0.5, 1e-12);  // the whole stretch lies in the step
   EXPECT_EQ(jump.extra_rotation, 0.0);
-  const FaultEffect reverse = FaultEffectOnStep({Fault(OdometryFaultKind::kReverse, 10.0, 2.0, 0.0)}, 10.2, half);
+  const FaultEffect reverse =
+      FaultEffectOnStep({OdometryFault{OdometryFaultKind::kReverse, 10.0, 2.0, 0.0}}, 10.2, half);
   EXPECT_NEAR(reverse.extra_distance, -2.0 * half, 1e-12);  // reported = true - 2 true = -true
 }
 
 TEST(OdometryFault, OverlappingFaultsAdd) {
-  const std::vector<OdometryFault> faults = {Fault(OdometryFaultKind::kSpin, 0.0, 1.0, 0.2),
-                                             Fault(OdometryFaultKind::kSpin, 0.5, 1.0, 0.4)};
+  const std::vector<OdometryFault> faults = {OdometryFault{OdometryFaultKind::kSpin, 0.0, 1.0, 0.2},
+                                             OdometryFault{OdometryFaultKind::kSpin, 0.5, 1.0, 0.4}};
   EXPECT_NEAR(FaultEffectOnStep(faults, 0.5, 0.5).extra_rotation, 0.1 + 0.2, 1e-12);
 }
 
 TEST(OdometryFault, SummedOverStepsTheWholeMagnitudeIsReported) {
-  const std::vector<OdometryFault> faults = {Fault(OdometryFaultKind::kJump, 3.01, 0.37, 0.8),
-                                             Fault(OdometryFaultKind::kSpin, 3.2, 0.3, DegToRad(30))};
+  const std::vector<OdometryFault> faults = {OdometryFault{OdometryFaultKind::kJump, 3.01, 0.37, 0.8},
+                                             OdometryFault{OdometryFaultKind::kSpin, 3.2, 0.3, DegToRad(30)}};
   double distance = 0.0, rotation = 0.0;
   for (int i = 0; i < 200; ++i) {
     const FaultEffect e = FaultEffectOnStep(faults, 0.03 * i, 0.03);
@@ -64,17 +63,32 @@ TEST(OdometryFault, SummedOverStepsTheWholeMagnitudeIsReported) {
 }
 
 TEST(OdometryFault, ValidateNamesFieldValueAndRule) {
-  EXPECT_NO_THROW(Fault(OdometryFaultKind::kSpin, 1.0, 0.1, 0.5).Validate("faults[2]"));
-  EXPECT_THAT([] { Fault(OdometryFaultKind::kSpin, -1.0, 0.1, 0.5).Validate("faults[2]"); },
-              ThrowsMessage<InputError>(HasSubstr("faults[2] (spin) start_m = -1: must be")));
-  EXPECT_THAT([] { Fault(OdometryFaultKind::kJump, 1.0, 0.0, 0.5).Validate("faults[2]"); },
-              ThrowsMessage<InputError>(HasSubstr("faults[2] (jump) length_m = 0: must be")));
-  EXPECT_THAT([] { Fault(OdometryFaultKind::kJump, 1.0, 0.1, 11.0).Validate("faults[2]"); },
-              ThrowsMessage<InputError>(HasSubstr("magnitude = 11: must be in [-10, 10] m")));
-  EXPECT_THAT([] { Fault(OdometryFaultKind::kSpin, 1.0, 0.1, 7.0).Validate("faults[2]"); },
-              ThrowsMessage<InputError>(HasSubstr("(spin) magnitude = 7")));
-  EXPECT_THAT([] { Fault(OdometryFaultKind::kReverse, 1.0, 0.1, 0.5).Validate("faults[2]"); },
-              ThrowsMessage<InputError>(HasSubstr("(reverse) magnitude = 0.5: must be 0")));
+  EXPECT_NO_THROW((OdometryFault{OdometryFaultKind::kSpin, 1.0, 0.1, 0.5}).Validate("faults[2]"));
+  EXPECT_THAT(
+      [] {
+        (OdometryFault{OdometryFaultKind::kSpin, -1.0, 0.1, 0.5}).Validate("faults[2]");
+      },
+      ThrowsMessage<InputError>(HasSubstr("faults[2] (spin) start_m = -1: must be")));
+  EXPECT_THAT(
+      [] {
+        (OdometryFault{OdometryFaultKind::kJump, 1.0, 0.0, 0.5}).Validate("faults[2]");
+      },
+      ThrowsMessage<InputError>(HasSubstr("faults[2] (jump) length_m = 0: must be")));
+  EXPECT_THAT(
+      [] {
+        (OdometryFault{OdometryFaultKind::kJump, 1.0, 0.1, 11.0}).Validate("faults[2]");
+      },
+      ThrowsMessage<InputError>(HasSubstr("magnitude = 11: must be in [-10, 10] m")));
+  EXPECT_THAT(
+      [] {
+        (OdometryFault{OdometryFaultKind::kSpin, 1.0, 0.1, 7.0}).Validate("faults[2]");
+      },
+      ThrowsMessage<InputError>(HasSubstr("(spin) magnitude = 7")));
+  EXPECT_THAT(
+      [] {
+        (OdometryFault{OdometryFaultKind::kReverse, 1.0, 0.1, 0.5}).Validate("faults[2]");
+      },
+      ThrowsMessage<InputError>(HasSubstr("(reverse) magnitude = 0.5: must be 0")));
 }
 
 TEST(OdometryFault, ParsesTheCommandLineForm) {

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <stdexcept>
 #include <vector>
 
@@ -19,6 +20,12 @@ std::filesystem::path UniqueTempDir(const std::string& stem) {
 std::string TempFilePath(const std::string& stem, const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("slamtune_" + stem + "_" + std::to_string(::getpid()) + "_" + name))
       .string();
+}
+
+std::string WriteTempFile(const std::string& stem, const std::string& name, const std::string& text) {
+  const std::string path = TempFilePath(stem, name);
+  std::ofstream(path) << text;
+  return path;
 }
 
 }  // namespace slamtune::testing

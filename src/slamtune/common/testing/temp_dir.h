@@ -14,4 +14,7 @@ std::filesystem::path UniqueTempDir(const std::string& stem);
 // "<tmp>/slamtune_<stem>_<pid>_<name>": a file path of this process (nothing is created).
 std::string TempFilePath(const std::string& stem, const std::string& name);
 
+// Writes `text` to TempFilePath(stem, name) and returns that path.
+std::string WriteTempFile(const std::string& stem, const std::string& name, const std::string& text);
+
 }  // namespace slamtune::testing

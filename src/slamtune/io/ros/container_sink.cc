@@ -60,4 +60,19 @@ void ContainerSink::DropTail(std::uint64_t bytes, std::uint64_t file_bytes, cons
       fmt::format("{}, the last {} bytes ({:.1f} % of the file) not read ({})", what, bytes, share, reason);
 }
 
+void ContainerSink::EndAtBadRecord(const InputError& error, const BadRecord& bad) {
+  if (in_callback()) throw;
+  const std::uint64_t rest = bad.file_bytes - bad.offset;
+  if (bad.ends_inside_record) {  // cut off: what is whole is read, and said
+    DropTail(rest, bad.file_bytes, error.what(), TailKind::kCutOff);
+    return;
+  }
+  if (!bad.lenient) {
+    if (!bad.header_seen) throw;  // nothing to read up to
+    throw InputError(error.file(), error.line(),
+                     error.message() + " (--lenient reads the recording up to this record)");
+  }
+  DropTail(rest, bad.file_bytes, error.what(), TailKind::kCorrupt);
+}
+
 }  // namespace slamtune::io

@@ -15,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "slamtune/common/error.h"
 #include "slamtune/io/ros/recording_container.h"
 
 namespace slamtune::io {
@@ -46,6 +47,20 @@ class ContainerSink {
   // not), or a record is corrupt (--lenient).
   enum class TailKind { kCutOff, kCorrupt };
   void DropTail(std::uint64_t bytes, std::uint64_t file_bytes, const std::string& reason, TailKind kind);
+
+  // Where a top-level record of a single-file container failed to read.
+  struct BadRecord {
+    std::uint64_t offset;      // where the record starts
+    std::uint64_t file_bytes;  // the file's size
+    bool ends_inside_record;   // the file ends inside it (cut off)
+    bool header_seen;          // the file's header was read, so there is something to read up to
+    bool lenient;              // --lenient
+  };
+  // Called from the reader's handler of `error`, for the record `bad`: an error the callback threw
+  // passes unchanged; a cut-off file is read up to the record; a corrupt record ends the reading
+  // under --lenient and is otherwise an error that names --lenient once the header was read. On
+  // return the reader stops.
+  void EndAtBadRecord(const InputError& error, const BadRecord& bad);
 
  private:
   using TopicKey = std::tuple<std::string, std::string, MessageSerialization>;

@@ -60,16 +60,8 @@ void Rosbag1Reader::Read() {
       const Record record = NextRecord(cursor);
       HandleTopLevel(record, cursor);
     } catch (const InputError& e) {
-      if (sink_->in_callback()) throw;
-      if (EndsInsideRecord(bytes_, record_offset)) {  // cut off: what is whole is read, and said
-        sink_->DropTail(bytes_.size() - record_offset, bytes_.size(), e.what(), ContainerSink::TailKind::kCutOff);
-        return;
-      }
-      if (!options_.lenient) {
-        if (!bag_header_seen_) throw;  // nothing to read up to
-        throw InputError(e.file(), e.line(), e.message() + " (--lenient reads the recording up to this record)");
-      }
-      sink_->DropTail(bytes_.size() - record_offset, bytes_.size(), e.what(), ContainerSink::TailKind::kCorrupt);
+      sink_->EndAtBadRecord(e, {record_offset, bytes_.size(), EndsInsideRecord(bytes_, record_offset), bag_header_seen_,
+                                options_.lenient});
       return;
     }
   }

@@ -17,20 +17,8 @@ using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using namespace testing;  // NOLINT: the bag builders
 
-struct DbRead {
-  ContainerSummary summary;
-  std::vector<Delivered> messages;
-  std::string error;
-};
-
-DbRead ReadDb(const std::string& path, ContainerReadOptions options = {}) {
-  DbRead read;
-  try {
-    read.summary = ReadContainerFile(ContainerFormat::kRosbag2Sqlite, path, options, Collect(&read.messages));
-  } catch (const InputError& e) {
-    read.error = e.what();
-  }
-  return read;
+ContainerRead ReadDb(const std::string& path, ContainerReadOptions options = {}) {
+  return ReadFileAs(ContainerFormat::kRosbag2Sqlite, path, options);
 }
 
 // The messages of every variant below: given out of order, two at timestamp 200.
@@ -96,7 +84,7 @@ TEST(Rosbag2SqliteReaderTest, ReadsEachSchemaVariantInTimestampThenIdOrder) {
     SCOPED_TRACE(variant.name);
     const std::string path = dir + "/" + variant.name + ".db3";
     variant.write(path);
-    const DbRead read = ReadDb(path);
+    const ContainerRead read = ReadDb(path);
     ASSERT_EQ(read.error, "");
     std::vector<std::string> order;
     for (const Delivered& m : read.messages)
@@ -159,7 +147,7 @@ TEST(Rosbag2SqliteReaderTest, AMessageOnAnUnknownTopicIdNamesItsRow) {
   WriteHumbleDb3(path);
   TestDatabase(path).InsertMessage(5, 9, 250, ToBytes("orphan"));
   EXPECT_EQ(ReadDb(path).error, path + ": row 5: message on topic id 9, which is not in the topics table");
-  const DbRead lenient = ReadDb(path, {.lenient = true});
+  const ContainerRead lenient = ReadDb(path, {.lenient = true});
   ASSERT_EQ(lenient.error, "");
   EXPECT_EQ(lenient.messages.size(), 3u);  // up to timestamp 200
   EXPECT_FALSE(lenient.summary.complete);
@@ -175,7 +163,7 @@ TEST(Rosbag2SqliteReaderTest, OtherSerializationFormatsAreMarkedInTheType) {
             kMessagesTable);
     db.Exec("INSERT INTO topics VALUES (1, '/a', 'std_msgs/String', 'ros1'), (2, '/b', 'x/msg/Y', 'json');");
   }
-  const DbRead read = ReadDb(path);
+  const ContainerRead read = ReadDb(path);
   ASSERT_EQ(read.summary.topics.size(), 2u);
   EXPECT_EQ(read.summary.topics[0].serialization, MessageSerialization::kRos1);
   EXPECT_EQ(read.summary.topics[1].type, "x/msg/Y (json encoding)");

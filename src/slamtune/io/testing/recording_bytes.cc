@@ -1,6 +1,8 @@
 #include "slamtune/io/testing/recording_bytes.h"
 
 #include <bzlib.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 #include <lz4frame.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -14,6 +16,7 @@
 #include <stdexcept>
 
 #include "slamtune/common/error.h"
+#include "slamtune/io/ros/ros_recording.h"
 
 namespace slamtune::io::testing {
 namespace {
@@ -374,6 +377,42 @@ FuzzOutcome FuzzReader(const Bytes& bytes, std::size_t corruptions, const std::f
     attempt(corrupt, "byte " + std::to_string(at) + " set to " + std::to_string(corrupt[at]));
   }
   return outcome;
+}
+
+void ExpectEveryDamageReadOrRefused(ContainerFormat format, const Bytes& bytes, const std::string& name) {
+  for (const bool lenient : {false, true}) {
+    SCOPED_TRACE(lenient ? "lenient" : "strict");
+    const FuzzOutcome outcome = FuzzReader(bytes, 400, [&](const Bytes& damaged) {
+      ReadContainerBytes(format, damaged, name, {.lenient = lenient},
+                         [](const RecordedTopic&, const RecordedMessage&) {});
+    });
+    EXPECT_THAT(outcome.other_failures, ::testing::IsEmpty());
+    EXPECT_GT(outcome.succeeded, 0u);
+    if (!lenient) {
+      EXPECT_GT(outcome.input_errors, 0u);
+    }
+  }
+}
+
+ContainerRead ReadBytesAs(ContainerFormat format, const Bytes& bytes, const std::string& name,
+                          ContainerReadOptions options) {
+  ContainerRead read;
+  try {
+    read.summary = ReadContainerBytes(format, bytes, name, options, Collect(&read.messages));
+  } catch (const InputError& e) {
+    read.error = e.what();
+  }
+  return read;
+}
+
+ContainerRead ReadFileAs(ContainerFormat format, const std::string& path, ContainerReadOptions options) {
+  ContainerRead read;
+  try {
+    read.summary = ReadContainerFile(format, path, options, Collect(&read.messages));
+  } catch (const InputError& e) {
+    read.error = e.what();
+  }
+  return read;
 }
 
 }  // namespace slamtune::io::testing

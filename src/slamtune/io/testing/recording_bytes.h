@@ -145,5 +145,20 @@ struct FuzzOutcome {
 };
 FuzzOutcome FuzzReader(const Bytes& bytes, std::size_t corruptions, const std::function<void(const Bytes&)>& read,
                        std::size_t truncation_step = 1);
+// Expects the reader of `format`, strict and lenient, to read or refuse with an InputError every
+// truncation of `bytes` and 400 corrupted copies, never anything else; strict, to refuse some.
+void ExpectEveryDamageReadOrRefused(ContainerFormat format, const Bytes& bytes, const std::string& name);
+
+// A container's reading in a test, and the error it gave ("" when none).
+struct ContainerRead {
+  ContainerSummary summary;
+  std::vector<Delivered> messages;
+  std::string error;
+};
+// `bytes` read as the file `name` of `format`.
+ContainerRead ReadBytesAs(ContainerFormat format, const Bytes& bytes, const std::string& name,
+                          ContainerReadOptions options = {});
+// The file at `path` read as `format`.
+ContainerRead ReadFileAs(ContainerFormat format, const std::string& path, ContainerReadOptions options = {});
 
 }  // namespace slamtune::io::testing

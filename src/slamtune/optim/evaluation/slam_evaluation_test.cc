@@ -178,7 +178,7 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
     final_states.insert(state);
   }
   EXPECT_EQ(m.entries, final_states.size()) << label << ": one entry per distinct final state";
-  const slam::SolveCacheCounters sc = shared.shared_work.solve_cache->counters();
+  const slam::CacheCounters sc = shared.shared_work.solve_cache->counters();
   if (loops > 0) {
     EXPECT_GT(sc.hits, 0u) << label << ": no solve was shared";
   }

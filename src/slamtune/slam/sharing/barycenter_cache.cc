@@ -1,7 +1,5 @@
 #include "slamtune/slam/sharing/barycenter_cache.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 
 #include "slamtune/common/error.h"
@@ -13,11 +11,6 @@ namespace {
 constexpr std::size_t kEntryBytes = sizeof(std::array<std::uint64_t, kGeometryKeyWords + 4>) + sizeof(Pose2) + 8 + 32;
 
 }  // namespace
-
-std::string BarycenterCacheCounters::ToString() const {
-  return fmt::format("barycentre cache: {} hits, {} misses, {} evictions, {} entries, {:.1f} MB", hits, misses,
-                     evictions, entries, static_cast<double>(bytes) / (1 << 20));
-}
 
 BarycenterCache::BarycenterCache(std::size_t byte_budget) : byte_budget_(byte_budget) {
   if (byte_budget_ == 0) throw InputError("barycentre cache byte_budget = 0 is out of range: must be > 0");
@@ -67,7 +60,7 @@ void BarycenterCache::EvictLeastRecentlyUsedHalfLocked() {
   counters_.entries = entries_.size();
 }
 
-BarycenterCacheCounters BarycenterCache::counters() const {
+CacheCounters BarycenterCache::counters() const {
   std::lock_guard guard(mutex_);
   return counters_;
 }

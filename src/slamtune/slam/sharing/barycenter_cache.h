@@ -29,19 +29,9 @@
 #include "slamtune/common/key_words.h"
 #include "slamtune/common/pose2.h"
 #include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/sharing/cache_counters.h"
 
 namespace slamtune::slam {
-
-struct BarycenterCacheCounters {
-  std::uint64_t hits = 0;
-  std::uint64_t misses = 0;
-  std::uint64_t evictions = 0;
-  std::size_t entries = 0;
-  std::size_t bytes = 0;
-
-  // One line: "barycentre cache: H hits, M misses, E evictions, N entries, B MB".
-  std::string ToString() const;
-};
 
 class BarycenterCache {
  public:
@@ -55,7 +45,7 @@ class BarycenterCache {
   // otherwise computed by the scan and stored. A scan whose barycentre is already known is left
   // as it is.
   void Provide(LaserScan& scan);
-  BarycenterCacheCounters counters() const;
+  CacheCounters counters() const;
 
  private:
   struct Entry {
@@ -72,7 +62,7 @@ class BarycenterCache {
   std::unordered_map<Key, Entry, KeyWordsHash> entries_;
   std::map<std::uint64_t, std::shared_ptr<const std::vector<double>>> readings_;  // by address
   std::uint64_t next_sequence_ = 0;
-  BarycenterCacheCounters counters_;
+  CacheCounters counters_{"barycentre cache"};
 };
 
 }  // namespace slamtune::slam

@@ -86,7 +86,7 @@ TEST(BarycenterCache, StaysWithinItsBudgetAndKeepsServingCorrectValues) {
       ASSERT_TRUE(SameBits(s.barycenter(), OwnBarycenter(scan, pose))) << k;
     }
   }
-  const BarycenterCacheCounters c = cache.counters();
+  const CacheCounters c = cache.counters();
   EXPECT_GT(c.evictions, 0u);
   EXPECT_LE(c.bytes, 2048u);
   EXPECT_EQ(c.hits + c.misses, 100u);

@@ -1,7 +1,5 @@
 #include "slamtune/slam/sharing/solve_cache.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 
 #include "slamtune/common/error.h"
@@ -13,11 +11,6 @@ namespace {
 constexpr std::size_t kSolveEntryOverheadBytes = 256;
 
 }  // namespace
-
-std::string SolveCacheCounters::ToString() const {
-  return fmt::format("solve cache: {} hits, {} misses, {} evictions, {} entries, {:.1f} MB", hits, misses, evictions,
-                     entries, static_cast<double>(bytes) / (1 << 20));
-}
 
 SolveCache::SolveCache(std::size_t byte_budget) : byte_budget_(byte_budget) {
   if (byte_budget_ == 0) throw InputError("solve cache byte_budget = 0 is out of range: must be > 0");
@@ -74,7 +67,7 @@ void SolveCache::EvictLeastRecentlyUsedHalfLocked() {
   counters_.entries = entries_.size();
 }
 
-SolveCacheCounters SolveCache::counters() const {
+CacheCounters SolveCache::counters() const {
   std::lock_guard guard(mutex_);
   return counters_;
 }

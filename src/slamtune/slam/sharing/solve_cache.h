@@ -34,19 +34,9 @@
 #include "slamtune/common/pose2.h"
 #include "slamtune/slam/backend/pose_graph_solver.h"
 #include "slamtune/slam/pose_graph.h"
+#include "slamtune/slam/sharing/cache_counters.h"
 
 namespace slamtune::slam {
-
-struct SolveCacheCounters {
-  std::uint64_t hits = 0;
-  std::uint64_t misses = 0;
-  std::uint64_t evictions = 0;
-  std::size_t entries = 0;
-  std::size_t bytes = 0;
-
-  // One line: "solve cache: H hits, M misses, E evictions, N entries, B MB".
-  std::string ToString() const;
-};
 
 class SolveCache {
  public:
@@ -67,7 +57,7 @@ class SolveCache {
   // The stored solve of `key`, if any (counted as a hit or a miss).
   std::optional<Solved> Find(const std::vector<std::uint64_t>& key);
   void Store(std::vector<std::uint64_t> key, Solved solved);
-  SolveCacheCounters counters() const;
+  CacheCounters counters() const;
 
  private:
   struct Entry {
@@ -81,7 +71,7 @@ class SolveCache {
   mutable std::mutex mutex_;
   std::unordered_map<std::vector<std::uint64_t>, Entry, KeyWordsHash> entries_;
   std::uint64_t next_sequence_ = 0;
-  SolveCacheCounters counters_;
+  CacheCounters counters_{"solve cache"};
 };
 
 }  // namespace slamtune::slam
