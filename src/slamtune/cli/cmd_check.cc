@@ -1,52 +1,31 @@
-// `slamtune check RECORDING`: what to know about a log or bag before tuning on it
-// (io/log_check.h): its topics and choices, and each problem with its scans and times.
+// `slamtune check RECORDING`: what to know about a log or bag before tuning on it (io/log_check.h,
+// tune/recording_check.h): its topics and choices, and each problem with its scans and times.
 // Exit 0; with --strict, 1 when a problem is found; 2 for an unreadable file.
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <string>
 
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/input_flags.h"
-#include "slamtune/io/log_check.h"
-#include "slamtune/report/scan_losses_json.h"
+#include "slamtune/tune/recording_check.h"
 
 namespace slamtune::cli {
 namespace {
 
 struct CheckArgs {
-  std::string log;
+  tune::RecordingCheckOptions options;
   bool json = false;
   bool strict = false;
-  tune::LogInputOptions input;
-  io::CheckOptions check;
 };
-
-nlohmann::ordered_json ToJson(const io::CheckReport& report) {
-  nlohmann::ordered_json problems = nlohmann::ordered_json::array();
-  for (const io::CheckProblem& p : report.problems) {
-    problems.push_back({{"kind", io::ProblemKindName(p.kind)},
-                        {"what", p.what},
-                        {"count", p.count},
-                        {"scans", p.scans},
-                        {"times_s", p.times_s}});
-  }
-  return {{"path", report.path},
-          {"ok", report.ok()},
-          {"facts", report.facts},
-          {"problems", problems},
-          {"scans_not_used", report::ScanLossesJson(report.scans_not_used)}};
-}
 
 const SubcommandRegistrar kCheck(Subcommand{
     "check", "Check a log or bag before tuning: scan stamps, beams, range_max, odometry, tf, laser offset; a verdict",
     12, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<CheckArgs>();
-      app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag or CARMEN log")->required();
+      app.add_option("RECORDING", args->options.log, "ROS 2 / ROS 1 bag or CARMEN log")->required();
       app.add_flag("--json", args->json, "Print the report as one JSON object");
       app.add_flag("--strict", args->strict, "Exit 1 when a problem is found");
-      AddLogInputFlags(app, args->input, MaxScansFlag::kOmit);
-      io::CheckOptions& c = args->check;
+      AddLogInputFlags(app, args->options.input, MaxScansFlag::kOmit);
+      io::CheckOptions& c = args->options.check;
       const char* limits = "Check limits";
       app.add_option("--gap-factor", c.gap_factor, "a scan gap is longer than this x the median period")
           ->capture_default_str()
@@ -66,9 +45,9 @@ const SubcommandRegistrar kCheck(Subcommand{
           "  slamtune check drive_bag/ --scan-topic /scan_front --strict\n"
           "  slamtune check intel.clf.gz --json");
       return [args]() -> int {
-        const io::CheckReport report = io::CheckRecording(args->log, args->input.ToReadOptions(), args->check);
+        const io::CheckReport report = tune::CheckRecordingFile(args->options);
         if (args->json) {
-          std::printf("%s\n", ToJson(report).dump(2).c_str());
+          std::printf("%s\n", tune::ToJson(report).dump(2).c_str());
         } else {
           std::printf("%s", io::FormatCheckReport(report).c_str());
         }

@@ -1,16 +1,12 @@
 // `slamtune params FILE...`: what a slam_toolbox or slam_karto parameter file means to the
 // engine, and whether its node would load it (tune/params_inspection.h). Several files are
 // applied in order, as a launch file stacks them (your file, then a change file).
-#include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
-
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/slam/params/ros_params_section.h"
 #include "slamtune/tune/params_inspection.h"
 
 namespace slamtune::cli {
@@ -24,30 +20,13 @@ struct ParamsArgs {
   bool json = false;
 };
 
-std::string ValueText(const slam::ParamValue& value) {
-  return std::visit(
-      [](const auto& v) -> std::string {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) {
-          return v;
-        } else if constexpr (std::is_same_v<T, bool>) {
-          return v ? "true" : "false";
-        } else {
-          return fmt::format("{}", v);
-        }
-      },
-      value);
-}
-
 // One line per key: name, value as written, what it means to the engine.
-void PrintKeys(const slam::ParamsYamlReport& report, const std::string& text) {
-  YAML::Node root = YAML::Load(text);
-  const YAML::Node map = slam::FindParamsSection(root, "file").map;
-  for (const slam::KeyReport& k : report.keys) {
-    const YAML::Node value = map[k.key];
-    const std::string shown = value.IsScalar() ? value.Scalar() : "[...]";
-    std::printf("  %-42s %-24s %s%s%s\n", k.key.c_str(), shown.c_str(), slam::NameOf(k.use), k.note.empty() ? "" : ": ",
-                k.note.c_str());
+void PrintKeys(const tune::ParamsFileCheck& check) {
+  const std::vector<std::string> written = tune::WrittenValues(check);
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    const slam::KeyReport& k = check.report.keys[i];
+    std::printf("  %-42s %-24s %s%s%s\n", k.key.c_str(), written[i].c_str(), slam::NameOf(k.use),
+                k.note.empty() ? "" : ": ", k.note.c_str());
   }
 }
 
@@ -59,7 +38,7 @@ void PrintFiles(const tune::ParamsInspection& inspection) {
     for (const std::string& p : c.problems) std::printf("  %s\n", p.c_str());
     if (!c.report.keys.empty()) {
       std::printf("what each key means here:\n");
-      PrintKeys(c.report, c.text);
+      PrintKeys(c);
     }
   }
 }
@@ -74,13 +53,8 @@ int RunParams(const ParamsArgs& args) {
   PrintFiles(inspection);
   std::printf("engine parameters over %s (%s):\n", inspection.defaults_label.c_str(),
               args.all ? "all; * = differs" : "those that differ");
-  const std::vector<slam::NamedParam> values = slam::ToNamedValues(inspection.params);
-  const std::vector<slam::NamedParam> defaults = slam::ToNamedValues(inspection.defaults);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const bool differs = values[i].value != defaults[i].value;
-    if (!args.all && !differs) continue;
-    std::printf("  %-42s %s%s\n", values[i].name.c_str(), ValueText(values[i].value).c_str(),
-                args.all && differs ? " *" : "");
+  for (const tune::ListedParam& p : tune::ListedParams(inspection, args.all)) {
+    std::printf("  %-42s %s%s\n", p.name.c_str(), p.value.c_str(), args.all && p.differs ? " *" : "");
   }
   return status;
 }

@@ -6,7 +6,6 @@
 // world's relations give the error against its true trajectory unless --relations names others.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -19,39 +18,6 @@
 namespace slamtune::cli {
 namespace {
 
-// "; slam_toolbox online_sync_launch.py (synchronous node) kept 120 scans from Karto (100 not
-// moved, 16 too soon, 4 warming up)", or "" when the node handed every scan on.
-std::string RefusedByNodeText(const slam::RunSummary& summary, slam::NodeMode mode) {
-  if (summary.scans_refused_by_node_total() == 0) return "";
-  std::string reasons;
-  for (int v = 1; v < slam::kNumNodeVerdicts; ++v) {
-    if (summary.scans_refused_by_node[v] == 0) continue;
-    std::string name = slam::NameOf(static_cast<slam::NodeVerdict>(v));
-    std::replace(name.begin(), name.end(), '_', ' ');
-    reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", summary.scans_refused_by_node[v], name);
-  }
-  return fmt::format("; {} kept {} scans from Karto ({})", slam::LaunchOf(mode), summary.scans_refused_by_node_total(),
-                     reasons);
-}
-
-// "lasers: laser_0 (180 readings) 2412 nodes, laser_1 (179 readings) 1207 nodes ...", or "" with one laser.
-std::string LasersText(const slam::LogLasers& lasers, const slam::RunSummary& summary) {
-  if (lasers.geometries.size() < 2) return "";
-  std::string text;
-  for (std::size_t k = 0; k < lasers.geometries.size(); ++k) {
-    text += fmt::format("{}{} ({} readings) {} nodes", text.empty() ? "" : ", ", lasers.names[k],
-                        lasers.geometries[k]->num_readings, summary.nodes_per_laser[k]);
-  }
-  return "lasers: " + text + " (--beams per-geometry: one Karto laser per beam geometry, which the node does not do)";
-}
-
-// ", error 0.0123 +- 0.0100 m, 0.52 +- 0.40 deg (812 relations)", or "" without relations.
-std::string ErrorText(const std::optional<metrics::GtError>& e) {
-  if (!e) return "";
-  return fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e->trans_mean_m, e->trans_std_m,
-                     e->rot_mean_deg, e->rot_std_deg, e->relations_used);
-}
-
 void PrintRunSummary(const slam::RunSummary& summary, slam::NodeMode mode, const std::string& gt_line,
                      const std::string& out, const slam::FrontEndEvidence& front_end) {
   const std::string dropped = summary.scans_wrong_reading_count > 0
@@ -60,7 +26,7 @@ void PrintRunSummary(const slam::RunSummary& summary, slam::NodeMode mode, const
                                   : "";
   std::printf("run: %d scans, %d nodes, %zu loop closures, %d edges, %.1f s wall%s%s%s; wrote %s\n", summary.scans_read,
               summary.nodes, summary.loop_closures.size(), summary.total_edges(), summary.wall_s,
-              RefusedByNodeText(summary, mode).c_str(), dropped.c_str(), gt_line.c_str(), out.c_str());
+              tune::NodeRefusalsText(summary, mode).c_str(), dropped.c_str(), gt_line.c_str(), out.c_str());
   std::printf("%s\n", front_end.Summary().c_str());
   if (front_end.points_at_front_end()) {
     std::printf(
@@ -74,8 +40,8 @@ int Run(const tune::RunOptions& options) {
   const tune::RunOutcome outcome = tune::RunAndWrite(options, progress);
   progress.Finish();
   const optim::SlamRun& run = outcome.run;
-  PrintRunSummary(run.summary, outcome.node_mode, ErrorText(outcome.error), options.out, run.front_end);
-  const std::string lasers = LasersText(run.lasers, run.summary);
+  PrintRunSummary(run.summary, outcome.node_mode, tune::RelationErrorText(outcome.error), options.out, run.front_end);
+  const std::string lasers = tune::LasersText(run.lasers, run.summary);
   if (!lasers.empty()) std::printf("%s\n", lasers.c_str());
   return 0;
 }

@@ -1,31 +1,25 @@
-// `slamtune simulate`: writes a simulated CARMEN log with ground truth (sim/simulation.h).
+// `slamtune simulate`: writes a simulated CARMEN log with ground truth (sim/simulation.h; the work:
+// tune/simulate_command.h).
 //
 //   slamtune simulate [--world NAME] [--seed N] --out DIR [laser/odometry options]
 //   slamtune simulate --list
 //
 // Writes DIR/NAME.clf, DIR/NAME.relations and DIR/NAME.truth.txt (sim/simulation_files.h).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <vector>
 
 #include "slamtune/cli/command_registry.h"
-#include "slamtune/common/error.h"
-#include "slamtune/sim/simulation.h"
-#include "slamtune/sim/simulation_files.h"
 #include "slamtune/sim/world_catalog.h"
+#include "slamtune/tune/simulate_command.h"
 
 namespace slamtune::cli {
 namespace {
 
 struct SimulateState {
-  sim::SimulationOptions options;
-  std::string out;
+  tune::SimulateOptions options;
   bool list = false;
-  std::vector<double> laser_offset;   // X,Y,YAW when given
-  std::vector<std::string> faults;    // --fault KIND,START_M,LENGTH_M[,MAGNITUDE], in order
-  bool without_world_faults = false;  // --without-world-faults
 };
 
 int ListWorlds() {
@@ -40,29 +34,19 @@ int ListWorlds() {
 
 int Run(const SimulateState& state) {
   if (state.list) return ListWorlds();
-  if (state.out.empty())
-    throw InputError("--out: required (the folder to write NAME.clf, NAME.relations, NAME.truth.txt)");
-  sim::SimulationOptions options = state.options;
-  if (!state.laser_offset.empty()) {
-    options.laser_offset = Pose2{state.laser_offset[0], state.laser_offset[1], state.laser_offset[2]};
-  }
-  options.plant_world_faults = !state.without_world_faults;
-  for (const std::string& fault : state.faults) options.odometry.faults.push_back(sim::ParseOdometryFault(fault));
-  const auto start = std::chrono::steady_clock::now();
-  const sim::Simulation simulation = sim::Simulate(options);
-  const sim::SimulationFiles files = sim::WriteSimulation(state.out, simulation, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s\n", simulation.summary.Report().c_str());
+  const tune::SimulateOutcome outcome = tune::SimulateAndWrite(state.options);
+  const sim::SimulationFiles& files = outcome.files;
+  std::printf("%s\n", outcome.summary.Report().c_str());
   std::printf("wrote %s\n      %s\n      %s\n", files.log.c_str(), files.relations.c_str(), files.truth.c_str());
-  std::printf("simulated and written in %.2f s\n", seconds);
+  std::printf("simulated and written in %.2f s\n", outcome.seconds);
   return 0;
 }
 
 std::function<int()> Setup(CLI::App& app) {
   auto state = std::make_shared<SimulateState>();
-  sim::SimulationOptions& o = state->options;
+  sim::SimulationOptions& o = state->options.simulation;
   app.add_flag("--list", state->list, "List the built-in worlds and exit");
-  app.add_option("--out", state->out, "Output folder (created if missing)");
+  app.add_option("--out", state->options.out, "Output folder (created if missing)");
   app.add_option("--world", o.world, "World name (see --list)")->capture_default_str();
   app.add_option("--seed", o.seed, "Random seed; same seed, same files")
       ->check(CLI::NonNegativeNumber)
@@ -78,7 +62,7 @@ std::function<int()> Setup(CLI::App& app) {
   app.add_option("--range-resolution", o.laser.range_resolution_m, "Range quantum (m)")->capture_default_str();
   app.add_flag("--float32-scans", o.laser.float32_values,
                "Beam angles, max range and readings as float32 values, as a ROS LaserScan holds them");
-  app.add_option("--laser-offset", state->laser_offset,
+  app.add_option("--laser-offset", state->options.laser_offset,
                  "Laser mounting pose in the robot frame, X,Y,YAW (m, m, rad), e.g. 0.12,-0.04,0.05")
       ->expected(3)
       ->delimiter(',');
@@ -95,11 +79,11 @@ std::function<int()> Setup(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--odom-heading-drift", o.odometry.heading_drift_per_m, "Systematic heading drift (rad/m)")
       ->capture_default_str();
-  app.add_option("--fault", state->faults,
+  app.add_option("--fault", state->options.faults,
                  "Plant an odometry fault, KIND,START_M,LENGTH_M[,MAGNITUDE] (repeatable): spin (MAGNITUDE deg "
                  "reported, not turned), jump (MAGNITUDE m reported, not travelled) or reverse (travel reported "
                  "backwards), over LENGTH_M of true travel from START_M along the route");
-  app.add_flag("--without-world-faults", state->without_world_faults,
+  app.add_flag("--without-world-faults", state->options.without_world_faults,
                "Leave out the world's planted faults (e.g. corridor-long's odometry scale error): the healthy "
                "twin of a fault world, for the error it would have without its failure");
   app.add_option("--relation-stride", o.relations.stride, "Scans between relation samples")->capture_default_str();

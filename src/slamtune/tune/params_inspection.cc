@@ -1,9 +1,13 @@
 #include "slamtune/tune/params_inspection.h"
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <type_traits>
 
 #include "slamtune/common/text_file.h"
 #include "slamtune/slam/params/base_configuration.h"
+#include "slamtune/slam/params/ros_params_section.h"
 
 namespace slamtune::tune {
 namespace {
@@ -14,6 +18,21 @@ nlohmann::ordered_json KeysJson(const slam::ParamsYamlReport& report) {
     keys.push_back({{"key", k.key}, {"line", k.line}, {"use", slam::NameOf(k.use)}, {"note", k.note}});
   }
   return keys;
+}
+
+std::string ListedValueText(const slam::ParamValue& value) {
+  return std::visit(
+      [](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          return v;
+        } else if constexpr (std::is_same_v<T, bool>) {
+          return v ? "true" : "false";
+        } else {
+          return fmt::format("{}", v);
+        }
+      },
+      value);
 }
 
 }  // namespace
@@ -71,6 +90,28 @@ nlohmann::ordered_json ToJson(const ParamsInspection& inspection, bool all) {
   }
   j["params"] = params;
   return j;
+}
+
+std::vector<ListedParam> ListedParams(const ParamsInspection& inspection, bool all) {
+  const std::vector<slam::NamedParam> values = slam::ToNamedValues(inspection.params);
+  const std::vector<slam::NamedParam> defaults = slam::ToNamedValues(inspection.defaults);
+  std::vector<ListedParam> out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const bool differs = values[i].value != defaults[i].value;
+    if (all || differs) out.push_back({values[i].name, ListedValueText(values[i].value), differs});
+  }
+  return out;
+}
+
+std::vector<std::string> WrittenValues(const ParamsFileCheck& check) {
+  const YAML::Node root = YAML::Load(check.text);
+  const YAML::Node map = slam::FindParamsSection(root, "file").map;
+  std::vector<std::string> out;
+  for (const slam::KeyReport& k : check.report.keys) {
+    const YAML::Node value = map[k.key];
+    out.push_back(value.IsScalar() ? value.Scalar() : "[...]");
+  }
+  return out;
 }
 
 }  // namespace slamtune::tune

@@ -41,4 +41,19 @@ ParamsInspection InspectParamsFiles(const std::vector<std::string>& files, const
 // differ from the defaults.
 nlohmann::ordered_json ToJson(const ParamsInspection& inspection, bool all);
 
+// One engine parameter as `params` lists it.
+struct ListedParam {
+  std::string name;      // ROS name
+  std::string value;     // true or false, a number as written by fmt, or the string
+  bool differs = false;  // from inspection.defaults
+};
+
+// The engine parameters after the stack, in table order: every one with `all`, else those that
+// differ from the defaults.
+std::vector<ListedParam> ListedParams(const ParamsInspection& inspection, bool all);
+
+// The value of each of check.report.keys as the file writes it ("[...]" for a sequence or a map),
+// in the same order.
+std::vector<std::string> WrittenValues(const ParamsFileCheck& check);
+
 }  // namespace slamtune::tune

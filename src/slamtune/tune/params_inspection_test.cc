@@ -60,5 +60,47 @@ TEST_F(ParamsInspectionTest, AnUnreadableValueOrFileIsRefused) {
   EXPECT_THROW(InspectParamsFiles({(dir_ / "missing.yaml").string()}, "", {}), InputError);
 }
 
+TEST_F(ParamsInspectionTest, ListedParamsAreThoseThatDifferOrAllWithTheirValuesAsText) {
+  const ParamsInspection i =
+      InspectParamsFiles({kToolbox}, "", {"loop_search_maximum_distance=6.5", "do_loop_closing=false"});
+  const auto find = [](const std::vector<ListedParam>& list, const std::string& name) -> const ListedParam* {
+    for (const ListedParam& p : list) {
+      if (p.name == name) return &p;
+    }
+    return nullptr;
+  };
+  const std::vector<ListedParam> differ = ListedParams(i, false);
+  for (const ListedParam& p : differ) EXPECT_TRUE(p.differs) << p.name;
+  const ListedParam* r = find(differ, "loop_search_maximum_distance");
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->value, "6.5");
+  ASSERT_NE(find(differ, "do_loop_closing"), nullptr);
+  EXPECT_EQ(find(differ, "do_loop_closing")->value, "false");
+
+  const std::vector<ListedParam> all = ListedParams(i, true);
+  EXPECT_EQ(all.size(), slam::ToNamedValues(i.params).size());
+  EXPECT_GT(all.size(), differ.size());
+  const ListedParam* same = nullptr;
+  for (const ListedParam& p : all) {
+    if (!p.differs) same = &p;
+  }
+  ASSERT_NE(same, nullptr);
+  EXPECT_EQ(find(differ, same->name), nullptr);
+}
+
+TEST_F(ParamsInspectionTest, WrittenValuesAreTheFilesOwnTextKeyByKey) {
+  const std::string change = Write("written.yaml",
+                                   "slam_toolbox:\n  ros__parameters:\n    loop_search_maximum_distance: 6.50\n"
+                                   "    do_loop_closing: True\n");
+  const ParamsInspection i = InspectParamsFiles({kToolbox, change}, "", {});
+  const std::vector<std::string> written = WrittenValues(i.files[1]);
+  ASSERT_EQ(written.size(), i.files[1].report.keys.size());
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(i.files[1].report.keys[0].key, "loop_search_maximum_distance");
+  EXPECT_EQ(written[0], "6.50");
+  EXPECT_EQ(written[1], "True");
+  EXPECT_EQ(WrittenValues(i.files[0]).size(), i.files[0].report.keys.size());
+}
+
 }  // namespace
 }  // namespace slamtune::tune

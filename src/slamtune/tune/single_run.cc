@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
@@ -98,6 +99,35 @@ RunOutcome RunAndWrite(const RunOptions& options, Progress& progress) {
   json["peak_memory_mb"] = PeakMemoryMb();
   WriteFileAtomically(OutFile(options.out, "run.json"), json.dump(2) + "\n");
   return outcome;
+}
+
+std::string NodeRefusalsText(const slam::RunSummary& summary, slam::NodeMode mode) {
+  if (summary.scans_refused_by_node_total() == 0) return "";
+  std::string reasons;
+  for (int v = 1; v < slam::kNumNodeVerdicts; ++v) {
+    if (summary.scans_refused_by_node[v] == 0) continue;
+    std::string name = slam::NameOf(static_cast<slam::NodeVerdict>(v));
+    std::replace(name.begin(), name.end(), '_', ' ');
+    reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", summary.scans_refused_by_node[v], name);
+  }
+  return fmt::format("; {} kept {} scans from Karto ({})", slam::LaunchOf(mode), summary.scans_refused_by_node_total(),
+                     reasons);
+}
+
+std::string LasersText(const slam::LogLasers& lasers, const slam::RunSummary& summary) {
+  if (lasers.geometries.size() < 2) return "";
+  std::string text;
+  for (std::size_t k = 0; k < lasers.geometries.size(); ++k) {
+    text += fmt::format("{}{} ({} readings) {} nodes", text.empty() ? "" : ", ", lasers.names[k],
+                        lasers.geometries[k]->num_readings, summary.nodes_per_laser[k]);
+  }
+  return "lasers: " + text + " (--beams per-geometry: one Karto laser per beam geometry, which the node does not do)";
+}
+
+std::string RelationErrorText(const std::optional<metrics::GtError>& e) {
+  if (!e) return "";
+  return fmt::format(", error {:.4f} +- {:.4f} m, {:.2f} +- {:.2f} deg ({} relations)", e->trans_mean_m, e->trans_std_m,
+                     e->rot_mean_deg, e->rot_std_deg, e->relations_used);
 }
 
 }  // namespace slamtune::tune

@@ -34,4 +34,14 @@ struct RunOutcome {
 // (nothing to map).
 RunOutcome RunAndWrite(const RunOptions& options, Progress& progress);
 
+// The parts of `run`'s summary line that depend on the run, each "" when there is nothing to say:
+// "; slam_toolbox online_sync_launch.py (synchronous node) kept 120 scans from Karto (100 not
+// moved, 16 too soon, 4 warming up)" when the node held scans back from Karto;
+std::string NodeRefusalsText(const slam::RunSummary& summary, slam::NodeMode mode);
+// "lasers: laser_0 (180 readings) 2412 nodes, laser_1 (179 readings) 1207 nodes (--beams
+// per-geometry: ...)" with more than one laser;
+std::string LasersText(const slam::LogLasers& lasers, const slam::RunSummary& summary);
+// ", error 0.0123 +- 0.0100 m, 0.52 +- 0.40 deg (812 relations)" with relations.
+std::string RelationErrorText(const std::optional<metrics::GtError>& error);
+
 }  // namespace slamtune::tune

@@ -70,5 +70,34 @@ TEST_F(SingleRun, TheOutputFolderIsCheckedBeforeTheLogIsRead) {
   EXPECT_THAT([&] { RunAndWrite(options_, progress_); }, ThrowsMessage<InputError>(HasSubstr("file/out")));
 }
 
+TEST(RunSummaryTexts, TheNodesRefusalsAreCountedByReason) {
+  slam::RunSummary summary;
+  EXPECT_EQ(NodeRefusalsText(summary, slam::NodeMode::kSlamToolboxSync), "");
+  summary.scans_refused_by_node[static_cast<int>(slam::NodeVerdict::kNotMoved)] = 100;
+  summary.scans_refused_by_node[static_cast<int>(slam::NodeVerdict::kTooSoon)] = 16;
+  const std::string text = NodeRefusalsText(summary, slam::NodeMode::kSlamToolboxSync);
+  EXPECT_THAT(text, ::testing::StartsWith("; " + std::string(slam::LaunchOf(slam::NodeMode::kSlamToolboxSync)) +
+                                          " kept 116 scans from Karto ("));
+  EXPECT_THAT(text, HasSubstr("100 not moved"));
+  EXPECT_THAT(text, HasSubstr("16 too soon"));
+}
+
+TEST(RunSummaryTexts, TheErrorIsSaidOnlyWithRelations) {
+  EXPECT_EQ(RelationErrorText(std::nullopt), "");
+  metrics::GtError error;
+  error.trans_mean_m = 0.0123;
+  error.trans_std_m = 0.01;
+  error.rot_mean_deg = 0.52;
+  error.rot_std_deg = 0.4;
+  error.relations_used = 812;
+  EXPECT_EQ(RelationErrorText(error), ", error 0.0123 +- 0.0100 m, 0.52 +- 0.40 deg (812 relations)");
+}
+
+TEST_F(SingleRun, OneLaserIsNotListed) {
+  const RunOutcome outcome = RunAndWrite(options_, progress_);
+  EXPECT_EQ(LasersText(outcome.run.lasers, outcome.run.summary), "");
+  EXPECT_THAT(RelationErrorText(outcome.error), HasSubstr(" relations)"));
+}
+
 }  // namespace
 }  // namespace slamtune::tune
