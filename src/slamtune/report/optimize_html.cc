@@ -296,34 +296,23 @@ void CorrelationSection(HtmlPage& page, const OptimizeFigures& f, const ErrorCor
   page.Paragraph(c.statement);
 }
 
-}  // namespace
-
-std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& f,
-                         const std::optional<ErrorCorrelationSummary>& correlation,
-                         const std::vector<std::string>& files) {
-  const std::string log_name = std::filesystem::path(r.log_path).filename().string();
-  HtmlPage page("slamtune optimize: " + log_name);
-  page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
-  FirstScreen(page, r, f);
-  VerdictSection(page, r);
-  RunSection(page, r);
-  FrontEndSection(page, r, f);
-  CandidatesSection(page, r, correlation.has_value());
-
+void MapsSection(HtmlPage& page, const OptimizeFigures& f) {
   page.Heading(2, "Maps", "maps");
-  if (!f.map_panels.empty()) {
-    std::vector<HtmlPage::Figure> figures;
-    for (const auto& m : f.map_panels) figures.push_back({m.png, "map of " + m.label, m.caption, m.file});
-    page.FigureGrid(figures, 2);
-    page.Paragraph(
-        "Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
-        "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
-        "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
-        "note");
-  } else {
+  if (f.map_panels.empty()) {
     page.Paragraph("No candidate to show.");
+    return;
   }
+  std::vector<HtmlPage::Figure> figures;
+  for (const auto& m : f.map_panels) figures.push_back({m.png, "map of " + m.label, m.caption, m.file});
+  page.FigureGrid(figures, 2);
+  page.Paragraph(
+      "Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
+      "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
+      "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
+      "note");
+}
 
+void PopulationSection(HtmlPage& page, const OptimizeFigures& f) {
   page.Heading(2, "Population in objective space", "population");
   if (!f.populations.empty()) {
     page.Paragraph(
@@ -343,54 +332,29 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
     page.Image(f.evolution, "population over the generations", "All snapshots overlaid (population_evolution.png).");
   }
   if (f.populations.empty()) page.Paragraph("No population snapshot was recorded.");
+}
 
-  HistorySection(page, r, f);
-
-  if (!f.slices.empty()) {
-    page.Heading(2, "Each objective against each parameter", "slices");
-    page.Paragraph(
-        "Slices through the search: every successful evaluation, one panel per searched parameter, with "
-        "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
-        "that objective; a flat cloud says the objective does not depend on it within its range.",
-        "note");
-    page.BeginDetails(fmt::format("{} figure{}, one per objective (click to open)", f.slices.size(),
-                                  f.slices.size() == 1 ? "" : "s"));
-    std::vector<HtmlPage::Figure> figures;
-    for (const auto& s : f.slices) {
-      figures.push_back(
-          {s.png, s.label + " against each parameter", s.label + " against each parameter (" + s.file + ").", s.file});
-    }
-    page.FigureGrid(figures, 1);
-    page.EndDetails();
+void SlicesSection(HtmlPage& page, const OptimizeFigures& f) {
+  if (f.slices.empty()) return;
+  page.Heading(2, "Each objective against each parameter", "slices");
+  page.Paragraph(
+      "Slices through the search: every successful evaluation, one panel per searched parameter, with "
+      "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
+      "that objective; a flat cloud says the objective does not depend on it within its range.",
+      "note");
+  page.BeginDetails(
+      fmt::format("{} figure{}, one per objective (click to open)", f.slices.size(), f.slices.size() == 1 ? "" : "s"));
+  std::vector<HtmlPage::Figure> figures;
+  for (const auto& s : f.slices) {
+    figures.push_back(
+        {s.png, s.label + " against each parameter", s.label + " against each parameter (" + s.file + ").", s.file});
   }
+  page.FigureGrid(figures, 1);
+  page.EndDetails();
+}
 
-  if (!f.parameter_space.empty()) {
-    page.Heading(2, "Parameter space", "parameters");
-    page.Image(f.parameter_space, "evaluated parameter sets in the search space",
-               ParameterSpaceCaption(r) + " A recommendation at the edge of a range may lie beyond it.");
-  }
-
-  EvaluationsSection(page, r, correlation.has_value());
-
-  if (correlation) CorrelationSection(page, f, *correlation);
-
-  page.Heading(2, "What the objectives can tell");
-  page.Paragraph(kObjectivesCaveat, "note");
-
-  page.Heading(2, "Settings");
-  std::vector<std::pair<std::string, std::string>> settings, engine;
-  if (r.settings.is_object()) {
-    for (const auto& [key, value] : r.settings.items()) {
-      if (key == "engine")
-        FlattenSettings(value, "", engine);
-      else if (key == "space")
-        settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
-      else
-        FlattenSettings(value, key, settings);
-    }
-  }
-  if (!settings.empty()) page.KeyValues(settings);
-  // The search ranges, with the default and recommended values beside them.
+// The search ranges, with the default and recommended values beside them.
+void SearchRangesTable(HtmlPage& page, const optim::OptimizeResult& r) {
   const optim::Candidate* base = r.Find("default");
   const optim::Candidate* rec = r.Find("recommended");
   auto value_of = [](const optim::Candidate* c, const std::string& name) {
@@ -408,13 +372,59 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
     dims.push_back({name, FormatParam(value), FormatParam(value), "fixed", value_of(base, name), value_of(rec, name)});
   }
   page.Table({"parameter", "lower", "upper", "type", "default", "recommended"}, dims);
+}
+
+// The run's settings as key/value rows, the search ranges, then the engine's settings collapsed.
+void SettingsSection(HtmlPage& page, const optim::OptimizeResult& r) {
+  page.Heading(2, "Settings");
+  std::vector<std::pair<std::string, std::string>> settings, engine;
+  if (r.settings.is_object()) {
+    for (const auto& [key, value] : r.settings.items()) {
+      if (key == "engine")
+        FlattenSettings(value, "", engine);
+      else if (key == "space")
+        settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
+      else
+        FlattenSettings(value, key, settings);
+    }
+  }
+  if (!settings.empty()) page.KeyValues(settings);
+  SearchRangesTable(page, r);
   if (!engine.empty()) {
     page.BeginDetails(
         fmt::format("Engine settings ({} values: base parameters, metric options, log identity)", engine.size()));
     page.KeyValues(engine);
     page.EndDetails();
   }
+}
 
+}  // namespace
+
+std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& f,
+                         const std::optional<ErrorCorrelationSummary>& correlation,
+                         const std::vector<std::string>& files) {
+  const std::string log_name = std::filesystem::path(r.log_path).filename().string();
+  HtmlPage page("slamtune optimize: " + log_name);
+  page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
+  FirstScreen(page, r, f);
+  VerdictSection(page, r);
+  RunSection(page, r);
+  FrontEndSection(page, r, f);
+  CandidatesSection(page, r, correlation.has_value());
+  MapsSection(page, f);
+  PopulationSection(page, f);
+  HistorySection(page, r, f);
+  SlicesSection(page, f);
+  if (!f.parameter_space.empty()) {
+    page.Heading(2, "Parameter space", "parameters");
+    page.Image(f.parameter_space, "evaluated parameter sets in the search space",
+               ParameterSpaceCaption(r) + " A recommendation at the edge of a range may lie beyond it.");
+  }
+  EvaluationsSection(page, r, correlation.has_value());
+  if (correlation) CorrelationSection(page, f, *correlation);
+  page.Heading(2, "What the objectives can tell");
+  page.Paragraph(kObjectivesCaveat, "note");
+  SettingsSection(page, r);
   page.Heading(2, "Files");
   page.List(files);
   return page.Finish();
