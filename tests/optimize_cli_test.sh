@@ -31,6 +31,9 @@ if grep -q "ros__parameters" "$work/whole/best_slam_karto.yaml"; then fail "best
 # No --objectives and a loop-closure search (the node spacing is fixed): maps are judged by
 # u_h, n_c and the count of occupied cells; --objectives names another set.
 grep -Eq '"set": *"occupied"' "$work/whole/results.json" || fail "results.json: the automatic set is not 'occupied'"
+# The report counts the recommendation's share against the population that was run.
+grep -Eq '<th>recommended share</th><td>[0-9]+ of 8 individuals of the final population</td>' "$work/whole/report.html" ||
+  fail "report.html does not give the recommended share of the population of 8"
 
 # With --verbose, progress lines (plain, not a terminal) say how much scan matching the runs
 # shared and the end lists the caches; without it, or with --no-share, nothing of it.

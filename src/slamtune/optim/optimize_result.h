@@ -79,6 +79,7 @@ struct OptimizeResult {
 
   std::vector<Candidate> candidates;  // recommended, knee, worst, default (in that order)
   int recommended_share = 0;          // individuals of the final population with the recommended set
+  std::size_t population = 0;         // the final population's size (OptimizeSettings::population); 0: unknown
   // The evaluated sets whose map is equivalent to the recommendation's (equivalent_region.h);
   // absent when the recommendation's run failed.
   std::optional<EquivalentRegion> equivalent_region;

@@ -454,6 +454,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   result.relations_path = settings.relations_path;
   result.space = settings.space;
   result.objectives = settings.objectives;
+  result.population = settings.population;
   result.settings = settings_json;
   generations.Begin(start);
   generations.Evolve();

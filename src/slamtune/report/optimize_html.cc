@@ -12,6 +12,7 @@
 #include "slamtune/report/optimize_tables.h"
 #include "slamtune/report/report_text.h"
 #include "slamtune/report/tables.h"
+#include "slamtune/report/verdict_html.h"
 
 namespace slamtune::report {
 
@@ -76,31 +77,13 @@ void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
                                 {"requests served from the cache", std::to_string(r.cache_hits)},
                                 {"wall time", Seconds(r.wall_s)},
                             });
-  if (r.settings.is_object() && r.settings.contains("population")) {
-    items.push_back({"recommended share", fmt::format("{} of {} individuals of the final population",
-                                                      r.recommended_share, SettingText(r.settings["population"]))});
+  if (r.population > 0) {
+    items.push_back({"recommended share",
+                     fmt::format("{} of {} individuals of the final population", r.recommended_share, r.population)});
   } else {
     items.push_back({"recommended share", fmt::format("{} individuals of the final population", r.recommended_share)});
   }
   page.KeyValues(items);
-}
-
-// How sure: the evaluated sets that gave the recommendation's map (optim/equivalent_region.h).
-void EquivalentRegionSection(HtmlPage& page, const optim::OptimizeResult& r) {
-  if (!r.equivalent_region) return;
-  const optim::EquivalentRegion& e = *r.equivalent_region;
-  page.Heading(3, "How sure: the parameter sets with an equivalent map", "equivalent");
-  page.Paragraph(e.Describe() + ".");
-  page.Paragraph(
-      fmt::format("Equivalent: the run closed as many loops as the recommendation ({}), and each objective "
-                  "differs from the recommendation's by at most {:.0f} % of that objective's range over all "
-                  "successful evaluations. The ranges are the smallest box around those parameter sets; sets "
-                  "inside it that were not evaluated are not known. {}",
-                  e.loop_closures, 100.0 * e.tolerance,
-                  e.members <= 1 ? "Only the recommendation itself qualifies: the result is sensitive to its "
-                                   "exact values, or the search sampled little around it."
-                                 : "A wide range says the value is not critical there; a narrow one says it is."),
-      "note");
 }
 
 // Every evaluation in a table the reader sorts by clicking a header; collapsed when long.
@@ -189,39 +172,6 @@ void FirstScreen(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeF
     figures.push_back({recommended->png, "the recommended map", recommended->caption, recommended->file});
   }
   if (!figures.empty()) page.FigureGrid(figures, 2, "first");
-}
-
-// Why this set was recommended (with any warning), then what to do and how.
-void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
-  page.Heading(2, "Verdict");
-  // Scans of the recording no run maps: the verdict holds for the rest only.
-  for (const std::string& line : r.scans_not_used.LossLines()) {
-    const std::string what = "Not used" + line.substr(line.find(':'));
-    page.Paragraph(what + ". Every map and the recommendation are made without them.", "warning");
-  }
-  RecommendationReading reading;
-  if (r.Find("recommended") != nullptr) {
-    reading = ReadRecommendation(r);
-    page.Heading(3, "Why this recommendation");
-    page.Paragraph(reading.why);
-    for (const std::string& w : reading.warnings) page.Paragraph(w, "warning");
-    EquivalentRegionSection(page, r);
-  }
-  if (!r.lowest_error_label.empty()) {
-    page.Paragraph("Against the ground-truth relations, the candidate with the lowest mean translational error is \"" +
-                   r.lowest_error_label + "\".");
-  }
-  if (!reading.next.empty()) {
-    page.Heading(3, "What to do next");
-    page.List(reading.next);
-  }
-  if (!r.how_to_load.empty()) {
-    page.Paragraph(r.changes.empty() ? "Keep " + r.base_label + ": the parameter files repeat it unchanged."
-                                     : "Changes from " + r.base_label + ":");
-    if (!r.changes.empty()) page.List(r.changes);
-    page.Paragraph("To run it on the robot:");
-    page.List(r.how_to_load);
-  }
 }
 
 void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const OptimizeFigures& f) {
@@ -346,122 +296,23 @@ void CorrelationSection(HtmlPage& page, const OptimizeFigures& f, const ErrorCor
   page.Paragraph(c.statement);
 }
 
-}  // namespace
-
-RecommendationReading ReadRecommendation(const optim::OptimizeResult& r) {
-  RecommendationReading out;
-  const optim::Candidate* rec = r.Find("recommended");
-  if (rec == nullptr) return out;
-  const optim::Candidate* knee = r.Find("knee");
-  // The set itself only when it is short (two or three parameters); the tables list it anyway.
-  const std::string summary = ParamSummary(rec->record.params, r.space);
-  const std::string params = summary.size() <= 60 ? " (" + summary + ")" : "";
-  int population = 0;
-  if (r.settings.is_object() && r.settings.contains("population") && r.settings["population"].is_number_integer()) {
-    population = r.settings["population"].get<int>();
+void MapsSection(HtmlPage& page, const OptimizeFigures& f) {
+  page.Heading(2, "Maps", "maps");
+  if (f.map_panels.empty()) {
+    page.Paragraph("No candidate to show.");
+    return;
   }
-  const std::string of = population > 0 ? fmt::format(" of {}", population) : "";
-  const int share = r.recommended_share;
-  const bool converged = population > 0 ? 2 * share > population : share > 1;
-  if (share <= 1) {
-    out.why = fmt::format(
-        "The rule is the seed paper's: recommend the parameter set most individuals of the final population share. "
-        "Here no set is shared by more than one individual{}, so there is no majority to go by: the recommendation{} "
-        "falls back to the tie-break, the individual with the lowest sum of objectives normalised over the "
-        "population. The population had not converged.",
-        of, params);
-  } else if (converged) {
-    out.why = fmt::format(
-        "{}{} individuals of the final population hold the recommended set{}: the search "
-        "converged on it, as the seed paper's rule (the set most individuals share) asks.",
-        share, of, params);
-  } else {
-    out.why = fmt::format(
-        "The recommended set{} is the one most individuals of the final population share, but only {}{} hold it: "
-        "the largest group, not a majority, so the search had not settled and the choice is tentative.",
-        params, share, of);
-  }
-  if (knee != nullptr && knee != rec) {
-    const bool same =
-        !rec->record.key.empty() ? rec->record.key == knee->record.key : rec->record.params == knee->record.params;
-    const std::string knee_summary = ParamSummary(knee->record.params, r.space);
-    out.why += same ? " It is also the knee of the final front (the front's member closest to the ideal point), so "
-                      "both rules agree."
-                    : " The knee of the final front is another set" +
-                          (knee_summary.size() <= 60 ? " (" + knee_summary + ")" : std::string()) +
-                          ": compare the two maps below.";
-  }
-
-  for (const optim::Dimension& d : r.space.dimensions) {
-    const auto it = rec->record.params.find(d.name);
-    if (it == rec->record.params.end() || !(d.upper > d.lower)) continue;
-    const double v = it->second;
-    const double tolerance = d.integer ? 0.0 : 0.01 * (d.upper - d.lower);
-    const bool low = v <= d.lower + tolerance, high = v >= d.upper - tolerance;
-    if (!low && !high) continue;
-    const std::string symbol = ShortParamName(d.name);
-    out.warnings.push_back(fmt::format(
-        "{} = {} sits on the {} bound of its search range [{}, {}]{}: the best value may lie beyond it. Widen the "
-        "range on that side (--vary {}=MIN:MAX, or the min and max under vary: in a --space file) and run again "
-        "before trusting this value.",
-        symbol, FormatParam(v), low ? "lower" : "upper", FormatParam(d.lower), FormatParam(d.upper),
-        symbol == d.name ? "" : " (" + d.name + ")", d.name));
-  }
-
-  if (r.verdict_kind == optim::VerdictKind::kBetter) {
-    out.next.push_back(
-        "Load the recommended parameters (best.yaml, or best_slam_karto.yaml for slam_karto) as shown "
-        "below, and map a log the tuning did not see to confirm.");
-  } else if (r.verdict_kind == optim::VerdictKind::kFailed) {
-    out.next.push_back("Read why the run failed (status column of the candidates) before changing anything.");
-  } else {
-    out.next.push_back("Keep " + (r.base_label.empty() ? std::string("the base configuration") : r.base_label) +
-                       ": the recommendation does not map this log clearly better.");
-  }
-  if (!out.warnings.empty()) out.next.push_back("Widen the search range where a value sits on a bound (above).");
-  if (!converged) {
-    out.next.push_back(
-        "Run again with more generations (--generations) or a larger population (--population) so "
-        "the population converges on one set.");
-  }
-  out.next.push_back(
-      "Check the maps: each vermillion line is a loop closure between two scan poses, and the scans at "
-      "its two ends must see the same walls; a closure between places that only look alike (a twin "
-      "corridor, the far side of a wall) is a false loop closure.");
-  if (!HasGroundTruth(r)) {
-    out.next.push_back(
-        "With ground truth for this log (--relations FILE), the report also ranks the candidates by "
-        "their true trajectory error.");
-  }
-  return out;
+  std::vector<HtmlPage::Figure> figures;
+  for (const auto& m : f.map_panels) figures.push_back({m.png, "map of " + m.label, m.caption, m.file});
+  page.FigureGrid(figures, 2);
+  page.Paragraph(
+      "Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
+      "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
+      "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
+      "note");
 }
 
-std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& f,
-                         const std::optional<ErrorCorrelationSummary>& correlation,
-                         const std::vector<std::string>& files) {
-  const std::string log_name = std::filesystem::path(r.log_path).filename().string();
-  HtmlPage page("slamtune optimize: " + log_name);
-  page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
-  FirstScreen(page, r, f);
-  VerdictSection(page, r);
-  RunSection(page, r);
-  FrontEndSection(page, r, f);
-  CandidatesSection(page, r, correlation.has_value());
-
-  page.Heading(2, "Maps", "maps");
-  if (!f.map_panels.empty()) {
-    std::vector<HtmlPage::Figure> figures;
-    for (const auto& m : f.map_panels) figures.push_back({m.png, "map of " + m.label, m.caption, m.file});
-    page.FigureGrid(figures, 2);
-    page.Paragraph(
-        "Each map is cropped to its mapped area, with a scale bar under it. Vermillion lines join the two "
-        "robot poses of each loop closure. Click a map for the full-size image; the maps are also written as "
-        "map_<label>.pgm/.yaml for map_server, and all together as maps_side_by_side.png.",
-        "note");
-  } else {
-    page.Paragraph("No candidate to show.");
-  }
-
+void PopulationSection(HtmlPage& page, const OptimizeFigures& f) {
   page.Heading(2, "Population in objective space", "population");
   if (!f.populations.empty()) {
     page.Paragraph(
@@ -481,54 +332,29 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
     page.Image(f.evolution, "population over the generations", "All snapshots overlaid (population_evolution.png).");
   }
   if (f.populations.empty()) page.Paragraph("No population snapshot was recorded.");
+}
 
-  HistorySection(page, r, f);
-
-  if (!f.slices.empty()) {
-    page.Heading(2, "Each objective against each parameter", "slices");
-    page.Paragraph(
-        "Slices through the search: every successful evaluation, one panel per searched parameter, with "
-        "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
-        "that objective; a flat cloud says the objective does not depend on it within its range.",
-        "note");
-    page.BeginDetails(fmt::format("{} figure{}, one per objective (click to open)", f.slices.size(),
-                                  f.slices.size() == 1 ? "" : "s"));
-    std::vector<HtmlPage::Figure> figures;
-    for (const auto& s : f.slices) {
-      figures.push_back(
-          {s.png, s.label + " against each parameter", s.label + " against each parameter (" + s.file + ").", s.file});
-    }
-    page.FigureGrid(figures, 1);
-    page.EndDetails();
+void SlicesSection(HtmlPage& page, const OptimizeFigures& f) {
+  if (f.slices.empty()) return;
+  page.Heading(2, "Each objective against each parameter", "slices");
+  page.Paragraph(
+      "Slices through the search: every successful evaluation, one panel per searched parameter, with "
+      "the candidates marked. A parameter whose panel shows a clear trend or a sharp edge matters for "
+      "that objective; a flat cloud says the objective does not depend on it within its range.",
+      "note");
+  page.BeginDetails(
+      fmt::format("{} figure{}, one per objective (click to open)", f.slices.size(), f.slices.size() == 1 ? "" : "s"));
+  std::vector<HtmlPage::Figure> figures;
+  for (const auto& s : f.slices) {
+    figures.push_back(
+        {s.png, s.label + " against each parameter", s.label + " against each parameter (" + s.file + ").", s.file});
   }
+  page.FigureGrid(figures, 1);
+  page.EndDetails();
+}
 
-  if (!f.parameter_space.empty()) {
-    page.Heading(2, "Parameter space", "parameters");
-    page.Image(f.parameter_space, "evaluated parameter sets in the search space",
-               ParameterSpaceCaption(r) + " A recommendation at the edge of a range may lie beyond it.");
-  }
-
-  EvaluationsSection(page, r, correlation.has_value());
-
-  if (correlation) CorrelationSection(page, f, *correlation);
-
-  page.Heading(2, "What the objectives can tell");
-  page.Paragraph(kObjectivesCaveat, "note");
-
-  page.Heading(2, "Settings");
-  std::vector<std::pair<std::string, std::string>> settings, engine;
-  if (r.settings.is_object()) {
-    for (const auto& [key, value] : r.settings.items()) {
-      if (key == "engine")
-        FlattenSettings(value, "", engine);
-      else if (key == "space")
-        settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
-      else
-        FlattenSettings(value, key, settings);
-    }
-  }
-  if (!settings.empty()) page.KeyValues(settings);
-  // The search ranges, with the default and recommended values beside them.
+// The search ranges, with the default and recommended values beside them.
+void SearchRangesTable(HtmlPage& page, const optim::OptimizeResult& r) {
   const optim::Candidate* base = r.Find("default");
   const optim::Candidate* rec = r.Find("recommended");
   auto value_of = [](const optim::Candidate* c, const std::string& name) {
@@ -546,13 +372,59 @@ std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& 
     dims.push_back({name, FormatParam(value), FormatParam(value), "fixed", value_of(base, name), value_of(rec, name)});
   }
   page.Table({"parameter", "lower", "upper", "type", "default", "recommended"}, dims);
+}
+
+// The run's settings as key/value rows, the search ranges, then the engine's settings collapsed.
+void SettingsSection(HtmlPage& page, const optim::OptimizeResult& r) {
+  page.Heading(2, "Settings");
+  std::vector<std::pair<std::string, std::string>> settings, engine;
+  if (r.settings.is_object()) {
+    for (const auto& [key, value] : r.settings.items()) {
+      if (key == "engine")
+        FlattenSettings(value, "", engine);
+      else if (key == "space")
+        settings.push_back({key, "the parameter ranges below"});  // its fingerprint is for --resume
+      else
+        FlattenSettings(value, key, settings);
+    }
+  }
+  if (!settings.empty()) page.KeyValues(settings);
+  SearchRangesTable(page, r);
   if (!engine.empty()) {
     page.BeginDetails(
         fmt::format("Engine settings ({} values: base parameters, metric options, log identity)", engine.size()));
     page.KeyValues(engine);
     page.EndDetails();
   }
+}
 
+}  // namespace
+
+std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& f,
+                         const std::optional<ErrorCorrelationSummary>& correlation,
+                         const std::vector<std::string>& files) {
+  const std::string log_name = std::filesystem::path(r.log_path).filename().string();
+  HtmlPage page("slamtune optimize: " + log_name);
+  page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
+  FirstScreen(page, r, f);
+  VerdictSection(page, r);
+  RunSection(page, r);
+  FrontEndSection(page, r, f);
+  CandidatesSection(page, r, correlation.has_value());
+  MapsSection(page, f);
+  PopulationSection(page, f);
+  HistorySection(page, r, f);
+  SlicesSection(page, f);
+  if (!f.parameter_space.empty()) {
+    page.Heading(2, "Parameter space", "parameters");
+    page.Image(f.parameter_space, "evaluated parameter sets in the search space",
+               ParameterSpaceCaption(r) + " A recommendation at the edge of a range may lie beyond it.");
+  }
+  EvaluationsSection(page, r, correlation.has_value());
+  if (correlation) CorrelationSection(page, f, *correlation);
+  page.Heading(2, "What the objectives can tell");
+  page.Paragraph(kObjectivesCaveat, "note");
+  SettingsSection(page, r);
   page.Heading(2, "Files");
   page.List(files);
   return page.Finish();

@@ -5,7 +5,8 @@
 // parameter-space figures, how the search progressed generation by generation, every
 // evaluation in a sortable table, the objectives against ground-truth error with their rank
 // correlations, what the objectives can and cannot tell, and the settings. Under the
-// recommendation: the parameter ranges that gave an equivalent map (how sure it is).
+// recommendation: the parameter ranges that gave an equivalent map (how sure it is). The verdict
+// section is verdict_html.h, which words the judgements of recommendation_assessment.h.
 #pragma once
 
 #include <cstdint>
@@ -18,18 +19,6 @@
 #include "slamtune/report/error_correlation.h"
 
 namespace slamtune::report {
-
-// The recommendation in plain words, for the report's "Why this recommendation" section.
-struct RecommendationReading {
-  std::string why;                    // how many individuals share the set, or the fallback and why
-  std::vector<std::string> warnings;  // each recommended value that sits on a bound of its search range
-  std::vector<std::string> next;      // what to do next
-};
-
-// Reads `r`'s recommendation: its share of the final population (settings "population"), whether
-// it is also the knee, which of its values sit on a bound (an integer on the bound itself, a real
-// within 1 % of the range from it), and the next steps those findings and the verdict call for.
-RecommendationReading ReadRecommendation(const optim::OptimizeResult& r);
 
 // The PNG bytes of the figures (the same bytes as the files beside report.html).
 struct OptimizeFigures {

@@ -361,6 +361,22 @@ TEST(WriteOptimizeReport, MergesTheSameSetAndWarnsOnABound) {
   EXPECT_THAT(html, HasSubstr("Widen the search range"));
 }
 
+TEST(WriteOptimizeReport, CallsAPluralityTentativeAndSaysWhatToDoNext) {
+  const fs::path dir = FreshDir("plurality");
+  optim::OptimizeResult r = testing::FakeOptimizeResult(false);
+  r.recommended_share = 3;  // of 8
+  r.verdict_kind = optim::VerdictKind::kWorse;
+  r.base_label = "your configuration (base.yaml)";
+  WriteOptimizeReport(r, dir.string());
+  const std::string html = ReadWholeFile(dir / "report.html");
+  EXPECT_THAT(html, HasSubstr("but only 3 of 8 hold it: the largest group, not a majority"));
+  EXPECT_THAT(html, HasSubstr("<th>recommended share</th><td>3 of 8 individuals of the final population</td>"));
+  EXPECT_THAT(html, HasSubstr("<li>Keep your configuration (base.yaml): the recommendation does not map this log"));
+  EXPECT_THAT(html, HasSubstr("<li>Run again with more generations (--generations)"));
+  EXPECT_THAT(html, HasSubstr("<li>With ground truth for this log (--relations FILE)"));
+  EXPECT_THAT(html, Not(HasSubstr("Widen the search range")));
+}
+
 TEST(WriteOptimizeReport, IsDeterministic) {
   const fs::path a = FreshDir("det_a"), b = FreshDir("det_b");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), a.string());

@@ -58,6 +58,7 @@ optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
   res.space = optim::SearchSpace::PaperDefault();
   res.objectives = optim::ObjectiveSet(optim::ObjectiveSetKind::kPaper);
   res.settings = {{"population", 8}, {"generations", 5}, {"seed", 42}, {"jobs", 2}};
+  res.population = 8;
 
   auto candidate = [&](const std::string& label, const std::string& how, double r, int g, double q, bool map) {
     optim::Candidate c;
