@@ -10,8 +10,10 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/beam_geometry.h"
+#include "slamtune/io/check_problems.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
+#include "slamtune/io/odometry_check.h"
 #include "slamtune/io/ros/recording_contents.h"
 #include "slamtune/io/ros/recording_log.h"
 #include "slamtune/io/ros/ros_recording.h"
@@ -19,67 +21,19 @@
 namespace slamtune::io {
 namespace {
 
-constexpr std::size_t kListed = 5;  // scans listed per problem
-
-// Occurrences of one problem: how many, and the first few scans and times.
-struct Occurrences {
-  std::size_t count = 0;
-  std::vector<std::size_t> scans;
-  std::vector<double> times;
-  void Add(std::size_t scan, double time) {
-    if (count++ < kListed) {
-      scans.push_back(scan);
-      times.push_back(time);
-    }
-  }
-};
-
-void Report(CheckReport* report, ProblemKind kind, const Occurrences& o, std::string what) {
-  if (o.count == 0) return;
-  report->problems.push_back({kind, std::move(what), o.count, o.scans, o.times});
-}
-
 void Problem(CheckReport* report, ProblemKind kind, std::string what, std::size_t count = 1) {
   report->problems.push_back({kind, std::move(what), count, {}, {}});
 }
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
-// A scan's index by time: the scan at or just before `time` (for listing odometry problems).
-class ScanIndex {
- public:
-  explicit ScanIndex(const LaserLog& log) {
-    for (std::size_t k = 0; k < log.scans.size(); ++k) by_time_.emplace_back(log.scans[k].ipc_time, k);
-    std::sort(by_time_.begin(), by_time_.end());
-  }
-  std::size_t At(double time) const {
-    auto it = std::upper_bound(by_time_.begin(), by_time_.end(), std::make_pair(time, std::size_t(-1)));
-    if (it == by_time_.begin()) return by_time_.empty() ? 0 : by_time_.front().second;
-    return std::prev(it)->second;
-  }
-  std::size_t CountBetween(double a, double b) const {
-    const auto lo = std::upper_bound(by_time_.begin(), by_time_.end(), std::make_pair(a, std::size_t(-1)));
-    const auto hi = std::lower_bound(by_time_.begin(), by_time_.end(), std::make_pair(b, std::size_t(0)));
-    return hi > lo ? static_cast<std::size_t>(hi - lo) : 0;
-  }
-
- private:
-  std::vector<std::pair<double, std::size_t>> by_time_;
-};
 
 void CheckStamps(const std::vector<double>& stamps, const CheckOptions& o, CheckReport* report) {
   std::vector<double> periods;
   for (std::size_t k = 1; k < stamps.size(); ++k) {
     if (stamps[k] > stamps[k - 1]) periods.push_back(stamps[k] - stamps[k - 1]);
   }
-  const double period = Median(periods);
+  const double period = MedianOf(periods);
   if (period > 0)
     report->facts.push_back(fmt::format("scan period: {:.4f} s median ({:.2f} Hz)", period, 1.0 / period));
-  Occurrences gaps, back, duplicate;
+  ProblemOccurrences gaps, back, duplicate;
   double longest = 0.0, largest_back = 0.0;
   for (std::size_t k = 1; k < stamps.size(); ++k) {
     const double dt = stamps[k] - stamps[k - 1];
@@ -93,20 +47,20 @@ void CheckStamps(const std::vector<double>& stamps, const CheckOptions& o, Check
       longest = std::max(longest, dt);
     }
   }
-  Report(report, ProblemKind::kScanGap, gaps,
-         fmt::format("{} gaps between scan stamps longer than {} x the median period (longest {:.3f} s)", gaps.count,
-                     o.gap_factor, longest));
-  Report(
+  ReportOccurrences(report, ProblemKind::kScanGap, gaps,
+                    fmt::format("{} gaps between scan stamps longer than {} x the median period (longest {:.3f} s)",
+                                gaps.count, o.gap_factor, longest));
+  ReportOccurrences(
       report, ProblemKind::kScanStampBackward, back,
       fmt::format("{} scan stamps earlier than the one before (largest step back {:.3f} s)", back.count, largest_back));
-  Report(report, ProblemKind::kScanStampDuplicate, duplicate,
-         fmt::format("{} scans with the same stamp as the one before", duplicate.count));
+  ReportOccurrences(report, ProblemKind::kScanStampDuplicate, duplicate,
+                    fmt::format("{} scans with the same stamp as the one before", duplicate.count));
 }
 
 void CheckBeams(const LaserLog& log, CheckReport* report) {
   if (log.scans.empty()) return;
   report->facts.push_back("beams: " + GeometryOf(log.scans.front()).ToString());
-  Occurrences changes;
+  ProblemOccurrences changes;
   for (std::size_t k = 1; k < log.scans.size(); ++k) {
     if (!GeometryOf(log.scans[k]).SameAs(GeometryOf(log.scans[k - 1]), kSameAngleTolerance)) {
       changes.Add(k, log.scans[k].ipc_time);
@@ -135,15 +89,16 @@ void CheckBeams(const LaserLog& log, CheckReport* report) {
          {0},
          {log.scans.front().ipc_time}});
   }
-  Report(report, ProblemKind::kBeamGeometryChange, changes,
-         fmt::format("the beam geometry changes {} times between scans ({}); the node drops the {} of {} scans whose "
-                     "beam count differs from the first scan's, and so does slamtune: make the driver publish a fixed "
-                     "count (or tune with --beams per-geometry, which the node does not do)",
-                     changes.count, seen, dropped, log.scans.size()));
+  ReportOccurrences(
+      report, ProblemKind::kBeamGeometryChange, changes,
+      fmt::format("the beam geometry changes {} times between scans ({}); the node drops the {} of {} scans whose "
+                  "beam count differs from the first scan's, and so does slamtune: make the driver publish a fixed "
+                  "count (or tune with --beams per-geometry, which the node does not do)",
+                  changes.count, seen, dropped, log.scans.size()));
 }
 
 void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report) {
-  Occurrences above;
+  ProblemOccurrences above;
   double largest_valid = 0.0, largest_above = 0.0, range_max = 0.0;
   std::size_t readings = 0, no_returns = 0, above_count = 0;
   for (std::size_t k = 0; k < log.scans.size(); ++k) {
@@ -194,108 +149,6 @@ void CheckRanges(const LaserLog& log, const CheckOptions& o, CheckReport* report
   if (share > o.no_return_majority) {
     Problem(report, ProblemKind::kMostlyNoReturns,
             fmt::format("{:.1f} % of the readings are no-returns (inf, NaN or >= range_max)", 100.0 * share));
-  }
-}
-
-// The odometry to check: the log's ODOM / Odometry records, or the scans' robot poses.
-struct OdometryTrack {
-  std::vector<OdomRecord> records;
-  bool velocities = false;
-  std::string source;
-};
-
-OdometryTrack TrackOf(const LaserLog& log) {
-  OdometryTrack t;
-  if (log.odometry.size() >= 2) {
-    t.records = log.odometry;
-    t.velocities = !log.recording || log.recording->odometry_velocities;
-    t.source =
-        log.recording ? (log.recording->odometry_velocities ? "Odometry messages" : "tf samples") : "ODOM records";
-    return t;
-  }
-  for (const LaserScanRecord& s : log.scans) {
-    OdomRecord r;
-    r.pose = s.robot_pose;
-    r.ipc_time = s.ipc_time;
-    t.records.push_back(r);
-  }
-  t.source = "scan poses";
-  return t;
-}
-
-void CheckOdometry(const LaserLog& log, const CheckOptions& o, CheckReport* report) {
-  const OdometryTrack track = TrackOf(log);
-  const std::vector<OdomRecord>& r = track.records;
-  if (r.size() < 2) return;
-  const ScanIndex index(log);
-  std::vector<double> periods;
-  for (std::size_t k = 1; k < r.size(); ++k) {
-    if (r[k].ipc_time > r[k - 1].ipc_time) periods.push_back(r[k].ipc_time - r[k - 1].ipc_time);
-  }
-  const double period = Median(periods);
-  report->facts.push_back(fmt::format("odometry: {} {}, median period {:.4f} s{}", r.size(), track.source, period,
-                                      track.velocities ? ", with velocities" : ""));
-  Occurrences jumps, wraps, gaps, frozen, mismatch;
-  std::size_t moving_steps = 0, unwrapped = 0;
-  double frozen_since = -1.0;
-  for (std::size_t k = 1; k < r.size(); ++k) {
-    const OdomRecord &a = r[k - 1], &b = r[k];
-    const double dt = b.ipc_time - a.ipc_time;
-    const double d = std::hypot(b.pose.x - a.pose.x, b.pose.y - a.pose.y);
-    const double turn = std::fabs(NormalizeAngle(b.pose.theta - a.pose.theta));
-    const std::size_t scan = index.At(b.ipc_time);
-    if (std::fabs(b.pose.theta) > kPi + 1e-6) ++unwrapped;
-    const bool wrapped = std::fabs(b.pose.theta - a.pose.theta) > kPi;
-    if (wrapped && std::min(std::fabs(a.pose.theta), std::fabs(b.pose.theta)) < kPi / 2) {
-      wraps.Add(scan, b.ipc_time);
-    } else if ((dt <= 0 && (d > 0.05 || turn > 0.05)) ||
-               (dt > 0 &&
-                ((d > 0.1 && d / dt > o.max_speed_mps) || (turn > 0.2 && turn / dt > o.max_turn_rate_rad_s)))) {
-      jumps.Add(scan, b.ipc_time);
-    }
-    if (track.source != "scan poses" && period > 0 && period < o.stall_s / 2 && dt > o.stall_s &&
-        index.CountBetween(a.ipc_time, b.ipc_time) > 0) {
-      gaps.Add(scan, a.ipc_time);
-    }
-    if (!track.velocities || dt <= 0) continue;
-    const double v = 0.5 * (a.tv + b.tv);
-    const bool still = d < 1e-9 && turn < 1e-9;
-    if (std::fabs(v) > o.moving_speed_mps && still) {
-      if (frozen_since < 0) frozen_since = a.ipc_time;
-      if (b.ipc_time - frozen_since > o.stall_s && (frozen.count == 0 || frozen.times.back() != frozen_since)) {
-        frozen.Add(index.At(frozen_since), frozen_since);
-      }
-    } else {
-      frozen_since = -1.0;
-    }
-    const double forward =
-        std::cos(a.pose.theta) * (b.pose.x - a.pose.x) + std::sin(a.pose.theta) * (b.pose.y - a.pose.y);
-    if (std::fabs(v) > o.moving_speed_mps && std::fabs(forward) > 1e-3) {
-      ++moving_steps;
-      if ((forward > 0) != (v > 0)) mismatch.Add(scan, b.ipc_time);
-    }
-  }
-  if (unwrapped > 0) report->facts.push_back(fmt::format("headings: {} outside [-pi, pi] (not wrapped)", unwrapped));
-  Report(report, ProblemKind::kOdometryJump, jumps,
-         fmt::format("{} odometry jumps (faster than {} m/s or {} rad/s between samples, or a move within one stamp)",
-                     jumps.count, o.max_speed_mps, o.max_turn_rate_rad_s));
-  Report(report, ProblemKind::kHeadingWrap, wraps,
-         fmt::format("{} heading wraps away from +-pi (a step of more than pi between headings near 0): the "
-                     "odometry heading is discontinuous",
-                     wraps.count));
-  Occurrences stalls = gaps;
-  for (std::size_t k = 0; k < frozen.scans.size(); ++k) stalls.Add(frozen.scans[k], frozen.times[k]);
-  stalls.count = gaps.count + frozen.count;
-  Report(report, ProblemKind::kOdometryStall, stalls,
-         fmt::format("odometry stalls: {} gaps of more than {} s while scans go on, {} times the pose frozen for more "
-                     "than {} s while the recorded speed says moving",
-                     gaps.count, o.stall_s, frozen.count, o.stall_s));
-  if (moving_steps > 0 && static_cast<double>(mismatch.count) > o.velocity_mismatch_share * moving_steps) {
-    Report(report, ProblemKind::kOdometryVelocityMismatch, mismatch,
-           fmt::format("odometry poses disagree with the recorded velocities in {} of {} moving steps: the pose moves "
-                       "forward while the speed is negative or the other way round (a logger that integrated |tv| "
-                       "turns reversing into driving forward); the map will break whatever the SLAM parameters",
-                       mismatch.count, moving_steps));
   }
 }
 
@@ -363,7 +216,7 @@ void CheckLateness(const RecordingContents& contents, const LaserLog& log, const
   }
   if (stamps.empty()) return;
   const auto& scans = contents.scans.at(info.scan_topic);
-  Occurrences late;
+  ProblemOccurrences late;
   double latest = 0.0;
   for (std::size_t k = 0; k < scans.size(); ++k) {
     const std::int64_t stamp = scans[k].message.header.stamp_ns;
@@ -375,10 +228,11 @@ void CheckLateness(const RecordingContents& contents, const LaserLog& log, const
       latest = std::max(latest, delay);
     }
   }
-  Report(report, ProblemKind::kTfLate, late,
-         fmt::format("for {} scans the odometry at their stamp was received more than {} s after the scan (up to "
-                     "{:.3f} s): a live SLAM node waiting for tf would drop them",
-                     late.count, o.late_s, latest));
+  ReportOccurrences(
+      report, ProblemKind::kTfLate, late,
+      fmt::format("for {} scans the odometry at their stamp was received more than {} s after the scan (up to "
+                  "{:.3f} s): a live SLAM node waiting for tf would drop them",
+                  late.count, o.late_s, latest));
 }
 
 void AddInputFacts(const LaserLog& log, CheckReport* report) {

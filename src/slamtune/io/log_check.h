@@ -23,6 +23,7 @@
 //     there, as every other command refuses such a recording);
 //   the recording: several LaserScan topics, malformed messages, a truncated tail.
 // Facts (no problem): topics with types and rates, the choices made, the laser offset found.
+// The odometry checks are odometry_check.h; check_problems.h is how every check records a problem.
 #pragma once
 
 #include <cstddef>

@@ -111,34 +111,37 @@ void BlockWall(WallBuilder& walls, const V& a, const V& b, double side, double f
   walls.WallWithOpenings(a, b, openings);
 }
 
-}  // namespace
-
-World MakeBuildingWorld() {
-  WallBuilder walls;
-  walls.Box(V(0, 0), V(60, 36));  // outline
-  BandOfRooms(walls, 6.0, 0.0, {8, 15, 23, 30, 38, 45, 52}, {4.5, 11.5, 19.0, 26.5, 34.0, 41.5, 48.5, 56.0},
-              {0, 1, 2, 3, 4, 0, 2, 1});
-  BandOfRooms(walls, 30.0, 36.0, {7, 15, 22, 30, 37, 45, 53}, {3.5, 11.0, 18.5, 26.0, 33.5, 41.0, 49.0, 56.5},
-              {3, 4, 0, 1, 2, 3, 0, 1});
-
-  // Six blocks between the corridors, each wall facing a corridor with niches into the block (walls
-  // run counter-clockwise round each block, so the block is on their left: side +1).
-  const auto block = [&](double x0, double y0, double x1, double y1, const std::vector<double>& south_doors,
-                         const std::vector<double>& east_doors, const std::vector<double>& north_doors,
-                         const std::vector<double>& west_doors, double first) {
-    BlockWall(walls, V(x0, y0), V(x1, y0), 1.0, first, 5.5, south_doors);
-    BlockWall(walls, V(x1, y0), V(x1, y1), 1.0, first + 1.0, 5.5, east_doors);
-    BlockWall(walls, V(x1, y1), V(x0, y1), 1.0, first + 2.0, 5.5, north_doors);
-    BlockWall(walls, V(x0, y1), V(x0, y0), 1.0, first + 0.5, 5.5, west_doors);
-  };
+// The six blocks between the corridors, each wall facing a corridor with niches into the block
+// (walls run counter-clockwise round each block, so the block is on their left: side +1).
+struct BuildingBlock {
+  double x0, y0, x1, y1;
   // Doors are positions along each wall from its counter-clockwise start.
-  block(2, 8, 19, 17, {}, {}, {}, {4.5}, 2.0);              // workshop, door west at y = 12.5
-  block(21, 8, 39, 17, {13.5}, {}, {4.0, 13.5}, {}, 2.5);   // meeting room + kitchen
-  block(41, 8, 58, 17, {}, {}, {}, {4.5}, 3.0);             // open-plan office, door west at y = 12.5
-  block(2, 19, 19, 28, {8.5}, {}, {}, {}, 2.2);             // library, door south at x = 10.5
-  block(21, 19, 39, 28, {13.0}, {}, {}, {}, 2.8);           // lecture hall, door south at x = 34
-  block(41, 19, 58, 28, {}, {}, {8.0}, {2.25, 6.75}, 3.3);  // two labs, doors west at y = 21.25, 25.75
+  std::vector<double> south_doors, east_doors, north_doors, west_doors;
+  // m along the south wall to its first niche; along the east, north and west walls 1, 2 and 0.5 m more.
+  double first;
+};
 
+const std::vector<BuildingBlock>& BuildingBlocks() {
+  static const std::vector<BuildingBlock> blocks = {
+      {2, 8, 19, 17, {}, {}, {}, {4.5}, 2.0},              // workshop, door west at y = 12.5
+      {21, 8, 39, 17, {13.5}, {}, {4.0, 13.5}, {}, 2.5},   // meeting room + kitchen
+      {41, 8, 58, 17, {}, {}, {}, {4.5}, 3.0},             // open-plan office, door west at y = 12.5
+      {2, 19, 19, 28, {8.5}, {}, {}, {}, 2.2},             // library, door south at x = 10.5
+      {21, 19, 39, 28, {13.0}, {}, {}, {}, 2.8},           // lecture hall, door south at x = 34
+      {41, 19, 58, 28, {}, {}, {8.0}, {2.25, 6.75}, 3.3},  // two labs, doors west at y = 21.25, 25.75
+  };
+  return blocks;
+}
+
+void BuildingBlockWalls(WallBuilder& walls, const BuildingBlock& b) {
+  BlockWall(walls, V(b.x0, b.y0), V(b.x1, b.y0), 1.0, b.first, 5.5, b.south_doors);
+  BlockWall(walls, V(b.x1, b.y0), V(b.x1, b.y1), 1.0, b.first + 1.0, 5.5, b.east_doors);
+  BlockWall(walls, V(b.x1, b.y1), V(b.x0, b.y1), 1.0, b.first + 2.0, 5.5, b.north_doors);
+  BlockWall(walls, V(b.x0, b.y1), V(b.x0, b.y0), 1.0, b.first + 0.5, 5.5, b.west_doors);
+}
+
+// The furniture of the blocks south of the central corridor.
+void FurnishBuildingSouthBlocks(WallBuilder& walls) {
   // Workshop (x 2..19, y 8..17): benches, shelves, a pillar.
   walls.Box(V(2.3, 8.8), V(4.0, 9.6));
   walls.Box(V(8.5, 9.8), V(12.0, 11.0));
@@ -160,6 +163,10 @@ World MakeBuildingWorld() {
   }
   walls.Box(V(55.6, 9.0), V(57.4, 10.6));
   walls.Box(V(41.6, 15.4), V(43.4, 16.4));
+}
+
+// The furniture of the blocks north of the central corridor.
+void FurnishBuildingNorthBlocks(WallBuilder& walls) {
   // Library (x 2..19, y 19..28): rows of shelves either side of the reading area.
   for (double y : {21.0, 23.0, 25.0}) walls.Box(V(3.0, y), V(6.5, y + 0.5));
   for (double y : {21.2, 23.6}) walls.Box(V(14.5, y), V(18.0, y + 0.5));
@@ -180,9 +187,11 @@ World MakeBuildingWorld() {
   walls.Box(V(43.0, 26.8), V(46.0, 27.6));
   walls.Box(V(50.0, 24.6), V(51.0, 25.6));
   walls.Box(V(56.4, 24.0), V(57.6, 27.6));
+}
 
-  // Route. Corridor centrelines: south y = 7, central y = 18, north y = 29; west x = 1,
-  // middle-west x = 20, middle-east x = 40, east x = 59.
+// The route. Corridor centrelines: south y = 7, central y = 18, north y = 29; west x = 1,
+// middle-west x = 20, middle-east x = 40, east x = 59.
+std::vector<V> BuildingRoute() {
   const V east(1, 0), west(-1, 0), north(0, 1), south(0, -1);
   const auto band_room = [](RouteBuilder& r, const V& door, const V& inward, const V& along) {
     r.VisitRoom(door, inward, along, 1.0, 1.8, 1.5, 4.2);
@@ -210,10 +219,25 @@ World MakeBuildingWorld() {
   band_room(route, V(49, 30), north, west);
   band_room(route, V(11, 30), north, west);
   route.To(1, 29).To(1, 19);
+  return route.Take();
+}
+
+}  // namespace
+
+World MakeBuildingWorld() {
+  WallBuilder walls;
+  walls.Box(V(0, 0), V(60, 36));  // outline
+  BandOfRooms(walls, 6.0, 0.0, {8, 15, 23, 30, 38, 45, 52}, {4.5, 11.5, 19.0, 26.5, 34.0, 41.5, 48.5, 56.0},
+              {0, 1, 2, 3, 4, 0, 2, 1});
+  BandOfRooms(walls, 30.0, 36.0, {7, 15, 22, 30, 37, 45, 53}, {3.5, 11.0, 18.5, 26.0, 33.5, 41.0, 49.0, 56.5},
+              {3, 4, 0, 1, 2, 3, 0, 1});
+  for (const BuildingBlock& block : BuildingBlocks()) BuildingBlockWalls(walls, block);
+  FurnishBuildingSouthBlocks(walls);
+  FurnishBuildingNorthBlocks(walls);
 
   World world;
   world.walls = walls.Take();
-  world.waypoints = route.Take();
+  world.waypoints = BuildingRoute();
   world.turn_radius = 0.5;
   return world;
 }

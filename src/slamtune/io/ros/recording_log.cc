@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
@@ -336,15 +337,10 @@ void FillOdometry(const RecordingContents& contents, const OdometrySource& sourc
   }
 }
 
-}  // namespace
-
-LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions& options) {
-  options.Validate();
-  const RecordingReadOptions& choice = options.recording;
-  LaserLog log;
-  log.path = contents.path;
-  log.recording.emplace();
-  RecordingInfo& info = *log.recording;
+// What the recording holds before any choice is made: its container, what could not be read,
+// the tf tree and the topics.
+void DescribeRecording(const RecordingContents& contents, LaserLog* log) {
+  RecordingInfo& info = *log->recording;
   const ContainerSummary& c = contents.container;
   info.format = ContainerFormatName(c.format);
   info.files = c.files;
@@ -361,7 +357,96 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
   info.tf_refused_frames = contents.tf.refused_frames();
   for (const std::vector<std::string>& loop : contents.tf.Loops()) info.tf_loops.push_back(LoopText(loop));
   FillTopics(contents, &info);
-  for (const RecordingInfo::Topic& t : info.topics) log.record_counts[t.name] = t.messages;
+  for (const RecordingInfo::Topic& t : info.topics) log->record_counts[t.name] = t.messages;
+}
+
+// Scan message k as a record posed by the odometry at its stamp, or none when it is malformed
+// (an InputError unless lenient) or has no odometry there; either is counted in `info`.
+std::optional<LaserScanRecord> PosedScan(const RecordingContents& contents, const RecordedScan& scan, std::size_t k,
+                                         const LogReadOptions& options, const OdometrySource& source,
+                                         RecordingInfo* info) {
+  const LaserScanMessage& m = scan.message;
+  if (const std::string problem = GeometryProblem(m); !problem.empty()) {
+    const std::string where = fmt::format("{}: {}: {}", scan.location, info->scan_topic, problem);
+    if (!options.lenient) throw InputError(contents.path, 0, where + " (--lenient skips such scans and counts them)");
+    ++info->scans_malformed;
+    Example(&info->malformed_examples, where);
+    return std::nullopt;
+  }
+  if (NormalizeFrameId(m.header.frame_id) != info->laser_frame) ++info->scans_other_frame;
+  if (!(std::isfinite(m.range_max) && m.range_max > 0.0f) && info->scans_bad_range_max++ == 0) {
+    info->bad_range_max_example =
+        fmt::format("scan {} at {}: range_max {}", k, StampText(m.header.stamp_ns), m.range_max);
+  }
+  const TfLookup pose =
+      source.tf->Lookup(info->odom_frame, info->base_frame, m.header.stamp_ns, options.recording.max_odom_gap_s);
+  if (!pose.transform) {
+    ++info->scans_unplaced;
+    Example(&info->unplaced_examples, fmt::format("scan {} at {}: {}", k, StampText(m.header.stamp_ns), pose.failure));
+    return std::nullopt;
+  }
+  const Pose2 offset = info->laser_offset;
+  LaserScanRecord record = ToRecord(scan, k, *info);
+  record.robot_pose = ToPose2(*pose.transform);
+  record.laser_offset = offset;
+  record.laser_pose = offset == Pose2{} ? record.robot_pose : Compose(record.robot_pose, offset);
+  if (options.no_return_value > 0) record.max_range = options.no_return_value;
+  record.no_returns = CountNoReturns(record);
+  return record;
+}
+
+// log.scans: every scan of the chosen topic that can be posed, up to max_scans. Throws when none can.
+void AddPosedScans(const RecordingContents& contents, const std::vector<RecordedScan>& scans,
+                   const LogReadOptions& options, const OdometrySource& source, LaserLog* log) {
+  RecordingInfo& info = *log->recording;
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    if (options.max_scans > 0 && log->scans.size() >= options.max_scans) {
+      log->stopped_at_max_scans = true;
+      break;
+    }
+    std::optional<LaserScanRecord> record = PosedScan(contents, scans[k], k, options, source, &info);
+    if (!record) continue;
+    if (!log->scans.empty() && record->ipc_time < log->scans.back().ipc_time) {
+      ++log->time_backward_steps;
+      log->largest_backward_step_s =
+          std::max(log->largest_backward_step_s, log->scans.back().ipc_time - record->ipc_time);
+    }
+    log->total_readings += record->ranges.size();
+    log->total_no_returns += record->no_returns;
+    log->scans.push_back(std::move(*record));
+  }
+  if (log->scans.empty()) {
+    throw InputError(
+        contents.path, 0,
+        fmt::format("none of the {} scans on {} could be used: {} without odometry ({}), {} malformed", scans.size(),
+                    info.scan_topic, info.scans_unplaced,
+                    info.unplaced_examples.empty() ? "-" : info.unplaced_examples.front(), info.scans_malformed));
+  }
+}
+
+// --no-return, else the first scan's range_max.
+void ChooseNoReturnValue(const LogReadOptions& options, LaserLog* log) {
+  if (options.no_return_value > 0) {
+    log->no_return_value = options.no_return_value;
+    log->no_return_rule = "--no-return";
+  } else {
+    log->no_return_value = log->scans.front().max_range;
+    log->no_return_rule = std::isfinite(log->no_return_value)
+                              ? "LaserScan range_max"
+                              : "none: LaserScan range_max is NaN, infinite, 0 or negative";
+  }
+}
+
+}  // namespace
+
+LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions& options) {
+  options.Validate();
+  const RecordingReadOptions& choice = options.recording;
+  LaserLog log;
+  log.path = contents.path;
+  log.recording.emplace();
+  RecordingInfo& info = *log.recording;
+  DescribeRecording(contents, &log);
 
   ChooseScanTopic(contents, choice, &info);
   const std::vector<RecordedScan>& scans = contents.scans.at(info.scan_topic);
@@ -372,64 +457,9 @@ LaserLog RecordingToLog(const RecordingContents& contents, const LogReadOptions&
   ChooseOdometry(contents, choice, &info, &source);
   const RigidTransform3 mount = ChooseLaserOffset(contents, choice, scans.front().message.header.stamp_ns, &info);
   DescribeMounting(mount, &info);
-  const Pose2 offset = info.laser_offset;
-  const bool zero_offset = offset == Pose2{};
 
-  for (std::size_t k = 0; k < scans.size(); ++k) {
-    if (options.max_scans > 0 && log.scans.size() >= options.max_scans) {
-      log.stopped_at_max_scans = true;
-      break;
-    }
-    const RecordedScan& scan = scans[k];
-    const LaserScanMessage& m = scan.message;
-    if (const std::string problem = GeometryProblem(m); !problem.empty()) {
-      const std::string where = fmt::format("{}: {}: {}", scan.location, info.scan_topic, problem);
-      if (!options.lenient) throw InputError(contents.path, 0, where + " (--lenient skips such scans and counts them)");
-      ++info.scans_malformed;
-      Example(&info.malformed_examples, where);
-      continue;
-    }
-    if (NormalizeFrameId(m.header.frame_id) != info.laser_frame) ++info.scans_other_frame;
-    if (!(std::isfinite(m.range_max) && m.range_max > 0.0f) && info.scans_bad_range_max++ == 0) {
-      info.bad_range_max_example =
-          fmt::format("scan {} at {}: range_max {}", k, StampText(m.header.stamp_ns), m.range_max);
-    }
-    const TfLookup pose = source.tf->Lookup(info.odom_frame, info.base_frame, m.header.stamp_ns, choice.max_odom_gap_s);
-    if (!pose.transform) {
-      ++info.scans_unplaced;
-      Example(&info.unplaced_examples, fmt::format("scan {} at {}: {}", k, StampText(m.header.stamp_ns), pose.failure));
-      continue;
-    }
-    LaserScanRecord record = ToRecord(scan, k, info);
-    record.robot_pose = ToPose2(*pose.transform);
-    record.laser_offset = offset;
-    record.laser_pose = zero_offset ? record.robot_pose : Compose(record.robot_pose, offset);
-    if (options.no_return_value > 0) record.max_range = options.no_return_value;
-    record.no_returns = CountNoReturns(record);
-    if (!log.scans.empty() && record.ipc_time < log.scans.back().ipc_time) {
-      ++log.time_backward_steps;
-      log.largest_backward_step_s = std::max(log.largest_backward_step_s, log.scans.back().ipc_time - record.ipc_time);
-    }
-    log.total_readings += record.ranges.size();
-    log.total_no_returns += record.no_returns;
-    log.scans.push_back(std::move(record));
-  }
-  if (log.scans.empty()) {
-    throw InputError(
-        contents.path, 0,
-        fmt::format("none of the {} scans on {} could be used: {} without odometry ({}), {} malformed", scans.size(),
-                    info.scan_topic, info.scans_unplaced,
-                    info.unplaced_examples.empty() ? "-" : info.unplaced_examples.front(), info.scans_malformed));
-  }
-  if (options.no_return_value > 0) {
-    log.no_return_value = options.no_return_value;
-    log.no_return_rule = "--no-return";
-  } else {
-    log.no_return_value = log.scans.front().max_range;
-    log.no_return_rule = std::isfinite(log.no_return_value)
-                             ? "LaserScan range_max"
-                             : "none: LaserScan range_max is NaN, infinite, 0 or negative";
-  }
+  AddPosedScans(contents, scans, options, source, &log);
+  ChooseNoReturnValue(options, &log);
   FillOdometry(contents, source, &log);
   return log;
 }

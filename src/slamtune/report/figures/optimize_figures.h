@@ -18,7 +18,8 @@
 // The population figures share axis limits across generations so they can be compared side by
 // side. Failure-scored individuals (ObjectiveSet::IsFailureScore) are left out and counted in
 // the figure title. One family a file: optimize_figures.cc (what they share, the maps, objective
-// space), parameter_space_figures.cc, front_end_figure.cc, history_figure.cc.
+// space), parameter_space_figures.cc (with the scatter grid in scatter_grid_figure.cc),
+// front_end_figure.cc, history_figure.cc.
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -120,12 +120,10 @@ cv::Point2d RenderedParallel::ToPixel(std::size_t axis, double value) const {
   return {static_cast<double>(axis_x[axis]), axis_bottom - f * (axis_bottom - axis_top)};
 }
 
-RenderedParallel RenderParallelCoordinates(const std::vector<ParallelAxis>& axes,
-                                           const std::vector<ParallelLine>& lines,
-                                           const std::vector<ParallelLegendEntry>& legend,
-                                           const ParallelCoordinatesOptions& options) {
-  options.Validate();
-  SLAMTUNE_CHECK_MSG(axes.size() >= 2, "a parallel-coordinates plot needs at least two axes");
+namespace {
+
+// The inputs' rules: finite limits, upper above lower, one value per axis on every line.
+void RequireParallelInput(const std::vector<ParallelAxis>& axes, const std::vector<ParallelLine>& lines) {
   for (std::size_t a = 0; a < axes.size(); ++a) {
     const AxisLimits& l = axes[a].limits;
     RequireOption(std::isfinite(l.lower), fmt::format("ParallelAxis[{}].limits.lower", a), l.lower, "must be finite");
@@ -135,6 +133,92 @@ RenderedParallel RenderParallelCoordinates(const std::vector<ParallelAxis>& axes
   for (const ParallelLine& line : lines) {
     SLAMTUNE_CHECK_MSG(line.values.size() == axes.size(), "a parallel-coordinates line needs one value per axis");
   }
+}
+
+// A value beyond its axis, on a line that marks such values.
+struct ClampedValue {
+  std::size_t axis;
+  double value;
+  cv::Scalar colour;
+};
+
+// The lines, clamped at the axes' ends, in order; returns the values to mark beyond their axis.
+std::vector<ClampedValue> DrawParallelLines(const std::vector<ParallelAxis>& axes,
+                                            const std::vector<ParallelLine>& lines, RenderedParallel& out) {
+  cv::Mat& image = out.image;
+  std::vector<ClampedValue> marks;
+  for (const ParallelLine& line : lines) {
+    std::optional<cv::Point> previous;
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+      const double v = line.values[a];
+      if (!std::isfinite(v)) {
+        previous.reset();
+        continue;
+      }
+      const AxisPlacement p = PlaceOnAxis(v, axes[a].limits);
+      if (p.clamped) {
+        ++out.vertices_clamped;
+        if (line.mark_clamped) marks.push_back({a, v, line.colour});
+      }
+      const cv::Point2d px = out.ToPixel(a, p.value);
+      const cv::Point here(static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y)));
+      if (previous) cv::line(image, *previous, here, line.colour, std::clamp(line.thickness, 1, 20), cv::LINE_AA);
+      previous = here;
+    }
+  }
+  return marks;
+}
+
+// Axes, ticks and labels over the lines, each axis's title lines `clamp_room` px below it.
+void DrawParallelAxes(const std::vector<std::vector<std::string>>& titles, int clamp_room, double scale,
+                      RenderedParallel& out) {
+  cv::Mat& image = out.image;
+  const int line_h = TextSize("Ag", scale).height;
+  for (std::size_t a = 0; a < out.axis_x.size(); ++a) {
+    const int x = out.axis_x[a];
+    cv::line(image, {x, out.axis_top}, {x, out.axis_bottom}, kBlack, 1);
+    for (std::size_t i = 0; i < out.ticks[a].values.size(); ++i) {
+      const int py = static_cast<int>(std::lround(out.ToPixel(a, out.ticks[a].values[i]).y));
+      cv::line(image, {x - kTickLength, py}, {x, py}, kBlack, 1);
+      const cv::Size ts = TextSize(out.ticks[a].labels[i], scale);
+      DrawTextOnWhite(image, out.ticks[a].labels[i], {x - kTickLength - 2 - ts.width, py - ts.height / 2}, scale,
+                      kTextGrey);
+    }
+    int ty = out.axis_bottom + clamp_room;
+    for (const std::string& t : titles[a]) {
+      const cv::Size ts = TextSize(t, scale);
+      DrawText(image, t, {x - ts.width / 2, ty}, scale, kBlack);
+      ty += line_h + 3;
+    }
+  }
+}
+
+// Values beyond an axis: a triangle the way they lie, and the value.
+void DrawClampedValues(const std::vector<ParallelAxis>& axes, const std::vector<ClampedValue>& marks,
+                       const ParallelCoordinatesOptions& options, RenderedParallel& out) {
+  cv::Mat& image = out.image;
+  const double scale = options.font_scale;
+  for (const ClampedValue& m : marks) {
+    const bool up = m.value > axes[m.axis].limits.upper;
+    const cv::Point end(out.axis_x[m.axis], up ? out.axis_top : out.axis_bottom);
+    DrawEndTriangle(image, end, up, options.marker_size, m.colour);
+    const std::string text = Readable(m.value);
+    const cv::Size ts = TextSize(text, scale);
+    const int ty =
+        up ? end.y - kGap / 2 - options.marker_size - 2 - ts.height : end.y + kGap / 2 + options.marker_size + 2;
+    DrawText(image, text, {end.x - ts.width / 2, ty}, scale, m.colour);
+  }
+}
+
+}  // namespace
+
+RenderedParallel RenderParallelCoordinates(const std::vector<ParallelAxis>& axes,
+                                           const std::vector<ParallelLine>& lines,
+                                           const std::vector<ParallelLegendEntry>& legend,
+                                           const ParallelCoordinatesOptions& options) {
+  options.Validate();
+  SLAMTUNE_CHECK_MSG(axes.size() >= 2, "a parallel-coordinates plot needs at least two axes");
+  RequireParallelInput(axes, lines);
   const double scale = options.font_scale;
   const double title_scale = scale * 1.25;
   const int line_h = TextSize("Ag", scale).height;
@@ -186,62 +270,9 @@ RenderedParallel RenderParallelCoordinates(const std::vector<ParallelAxis>& axes
   const int titles_h = static_cast<int>(title_lines) * (line_h + 3);
   out.axis_bottom = std::max(out.axis_top + 20, options.height - kMargin - titles_h - kGap - clamp_room);
 
-  // Lines, clamped at the axes' ends, in order.
-  struct Clamped {
-    std::size_t axis;
-    double value;
-    cv::Scalar colour;
-  };
-  std::vector<Clamped> marks;
-  for (const ParallelLine& line : lines) {
-    std::optional<cv::Point> previous;
-    for (std::size_t a = 0; a < axes.size(); ++a) {
-      const double v = line.values[a];
-      if (!std::isfinite(v)) {
-        previous.reset();
-        continue;
-      }
-      const AxisPlacement p = PlaceOnAxis(v, axes[a].limits);
-      if (p.clamped) {
-        ++out.vertices_clamped;
-        if (line.mark_clamped) marks.push_back({a, v, line.colour});
-      }
-      const cv::Point2d px = out.ToPixel(a, p.value);
-      const cv::Point here(static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y)));
-      if (previous) cv::line(image, *previous, here, line.colour, std::clamp(line.thickness, 1, 20), cv::LINE_AA);
-      previous = here;
-    }
-  }
-
-  // Axes, ticks and labels over the lines.
-  for (std::size_t a = 0; a < axes.size(); ++a) {
-    const int x = out.axis_x[a];
-    cv::line(image, {x, out.axis_top}, {x, out.axis_bottom}, kBlack, 1);
-    for (std::size_t i = 0; i < out.ticks[a].values.size(); ++i) {
-      const int py = static_cast<int>(std::lround(out.ToPixel(a, out.ticks[a].values[i]).y));
-      cv::line(image, {x - kTickLength, py}, {x, py}, kBlack, 1);
-      const cv::Size ts = TextSize(out.ticks[a].labels[i], scale);
-      DrawTextOnWhite(image, out.ticks[a].labels[i], {x - kTickLength - 2 - ts.width, py - ts.height / 2}, scale,
-                      kTextGrey);
-    }
-    int ty = out.axis_bottom + clamp_room;
-    for (const std::string& t : titles[a]) {
-      const cv::Size ts = TextSize(t, scale);
-      DrawText(image, t, {x - ts.width / 2, ty}, scale, kBlack);
-      ty += line_h + 3;
-    }
-  }
-  // Values beyond an axis: a triangle the way they lie, and the value.
-  for (const Clamped& m : marks) {
-    const bool up = m.value > axes[m.axis].limits.upper;
-    const cv::Point end(out.axis_x[m.axis], up ? out.axis_top : out.axis_bottom);
-    DrawEndTriangle(image, end, up, options.marker_size, m.colour);
-    const std::string text = Readable(m.value);
-    const cv::Size ts = TextSize(text, scale);
-    const int ty =
-        up ? end.y - kGap / 2 - options.marker_size - 2 - ts.height : end.y + kGap / 2 + options.marker_size + 2;
-    DrawText(image, text, {end.x - ts.width / 2, ty}, scale, m.colour);
-  }
+  const std::vector<ClampedValue> marks = DrawParallelLines(axes, lines, out);
+  DrawParallelAxes(titles, clamp_room, scale, out);
+  DrawClampedValues(axes, marks, options, out);
   DrawParallelLegend(image, legend, legend_at, {kMargin, legend_y}, scale);
   return out;
 }
