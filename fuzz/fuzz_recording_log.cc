@@ -15,7 +15,7 @@
 #include "fuzz_input.h"
 #include "slamtune/common/error.h"
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/log_check.h"
+#include "slamtune/io/check/log_check.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/ros/recording_contents.h"

@@ -1,4 +1,4 @@
-// `slamtune check RECORDING`: what to know about a log or bag before tuning on it (io/log_check.h,
+// `slamtune check RECORDING`: what to know about a log or bag before tuning on it (io/check/log_check.h,
 // tune/recording_check.h): its topics and choices, and each problem with its scans and times.
 // Exit 0; with --strict, 1 when a problem is found; 2 for an unreadable file.
 #include <cstdio>

@@ -1,6 +1,6 @@
 // `slamtune optimize [LOG] --out DIR`: NSGA-III over the loop-closure parameters, scored by
 // the map objectives of each SLAM run, with a report an engineer can act on (the work:
-// tune/optimize_command.h). Under mpirun, rank 0 optimises and writes; the other ranks evaluate
+// tune/optimize/optimize_command.h). Under mpirun, rank 0 optimises and writes; the other ranks evaluate
 // (optim/evaluation/mpi_evaluation.h).
 #include <fmt/format.h>
 
@@ -12,8 +12,8 @@
 #include "slamtune/cli/result_neutral_options.h"
 #include "slamtune/nsga3/reference_points.h"
 #include "slamtune/optim/space_choice.h"
-#include "slamtune/tune/optimize_command.h"
-#include "slamtune/tune/tuning_process.h"
+#include "slamtune/tune/optimize/optimize_command.h"
+#include "slamtune/tune/optimize/tuning_process.h"
 
 namespace slamtune::cli {
 namespace {

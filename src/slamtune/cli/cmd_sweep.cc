@@ -11,8 +11,8 @@
 #include "slamtune/cli/command_registry.h"
 #include "slamtune/cli/input_flags.h"
 #include "slamtune/common/progress.h"
+#include "slamtune/tune/optimize/tuning_process.h"
 #include "slamtune/tune/sweep_command.h"
-#include "slamtune/tune/tuning_process.h"
 
 namespace slamtune::cli {
 namespace {

@@ -85,6 +85,44 @@ std::string MapCaption(const CandidateGroup& group, const optim::OptimizeResult&
   return text + ".";
 }
 
+// The seed paper's tables and every evaluation, as CSV.
+void WriteTables(const optim::OptimizeResult& result, bool gt, FolderWriter& out) {
+  out.Csv(ParamsTable(result), "table3_best_worst_params.csv");
+  out.Csv(ObjectivesTable(result), "table4_6_objectives.csv");
+  out.Csv(LoopClosuresTable(result), "table7_loop_closures.csv");
+  out.Csv(LoopScansTable(result), "table8_loop_scans.csv");
+  if (gt) out.Csv(ErrorsTable(result), "table9_10_errors.csv");
+  out.Csv(EvaluationsTable(result.evaluations, result.space), "evaluations.csv");
+}
+
+// The candidates' maps: side by side, one panel per group of candidates that share a map, and each
+// map as map_server files. Returns how many maps were written as map_server files.
+int WriteCandidateMaps(const optim::OptimizeResult& result, const FigureOptions& options, FolderWriter& out,
+                       OptimizeFigures& figures) {
+  int maps_written = 0;
+  if (result.candidates.empty()) return maps_written;
+  figures.maps = out.Png(MapsSideBySide(result, options), "maps_side_by_side.png");
+  for (const CandidateMapPanel& panel : CandidateMapPanels(result, options)) {
+    std::string labels;
+    for (const auto* c : panel.group.members) {
+      if (!labels.empty()) labels += '_';
+      labels += FileSafe(c->label);
+    }
+    const std::string file = "map_" + labels + ".png";
+    figures.map_panels.push_back(
+        {panel.group.label, file, out.Png(panel.image, file), MapCaption(panel.group, result)});
+  }
+  for (const auto* c : CandidatesInReportOrder(result)) {
+    if (!HasMap(c->map)) continue;
+    const std::string stem = "map_" + FileSafe(c->label);
+    io::WriteMapServer(c->map, out.Path(stem + ".yaml"));
+    out.Record(stem + ".pgm");
+    out.Record(stem + ".yaml");
+    ++maps_written;
+  }
+  return maps_written;
+}
+
 }  // namespace
 
 OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, const std::string& dir,
@@ -102,35 +140,10 @@ OptimizeReportSummary WriteOptimizeReport(const optim::OptimizeResult& result, c
   }
   out.Text(ResultsJson(result, summary.correlation).dump(2) + "\n", "results.json");
 
-  out.Csv(ParamsTable(result), "table3_best_worst_params.csv");
-  out.Csv(ObjectivesTable(result), "table4_6_objectives.csv");
-  out.Csv(LoopClosuresTable(result), "table7_loop_closures.csv");
-  out.Csv(LoopScansTable(result), "table8_loop_scans.csv");
-  if (gt) out.Csv(ErrorsTable(result), "table9_10_errors.csv");
-  out.Csv(EvaluationsTable(result.evaluations, result.space), "evaluations.csv");
+  WriteTables(result, gt, out);
 
   OptimizeFigures figures;
-  if (!result.candidates.empty()) {
-    figures.maps = out.Png(MapsSideBySide(result, options), "maps_side_by_side.png");
-    for (const CandidateMapPanel& panel : CandidateMapPanels(result, options)) {
-      std::string labels;
-      for (const auto* c : panel.group.members) {
-        if (!labels.empty()) labels += '_';
-        labels += FileSafe(c->label);
-      }
-      const std::string file = "map_" + labels + ".png";
-      figures.map_panels.push_back(
-          {panel.group.label, file, out.Png(panel.image, file), MapCaption(panel.group, result)});
-    }
-    for (const auto* c : CandidatesInReportOrder(result)) {
-      if (!HasMap(c->map)) continue;
-      const std::string stem = "map_" + FileSafe(c->label);
-      io::WriteMapServer(c->map, out.Path(stem + ".yaml"));
-      out.Record(stem + ".pgm");
-      out.Record(stem + ".yaml");
-      ++summary.maps_written;
-    }
-  }
+  summary.maps_written = WriteCandidateMaps(result, options, out, figures);
   for (const auto& snapshot : result.snapshots) {
     const std::string name = fmt::format("population_gen{}.png", snapshot.generation);
     figures.populations.emplace_back(snapshot.generation, out.Png(PopulationFigure(snapshot, result, options), name));

@@ -1,12 +1,12 @@
 // `slamtune check` as library work: what to know about a log or bag before tuning on it
-// (io/log_check.h) — its topics and choices, and each problem with its scans and times — and the
+// (io/check/log_check.h) — its topics and choices, and each problem with its scans and times — and the
 // report as one JSON object.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "slamtune/io/log_check.h"
+#include "slamtune/io/check/log_check.h"
 #include "slamtune/tune/log_input.h"
 
 namespace slamtune::tune {

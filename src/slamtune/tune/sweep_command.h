@@ -10,8 +10,8 @@
 #include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/report/sweep_report.h"
+#include "slamtune/tune/optimize/tuning_process.h"
 #include "slamtune/tune/tuning_inputs.h"
-#include "slamtune/tune/tuning_process.h"
 
 namespace slamtune::tune {
 

@@ -37,7 +37,7 @@ struct TuningInputOptions {
   std::string params_file;
   std::vector<std::string> sets;
   // How --params and --preset combine (slam/params/base_configuration.h); folders written before the
-  // rule resume with the old one (MigrateInvocation, tune/optimize_options.h).
+  // rule resume with the old one (MigrateInvocation, tune/optimize/optimize_options.h).
   slam::BaseRule base_rule = slam::BaseRule::kNodeDefaults;
   LogInputOptions input;  // how the log is read (--lenient, --no-return, --beams, bag choices)
 

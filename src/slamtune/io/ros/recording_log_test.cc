@@ -10,7 +10,7 @@
 #include "slamtune/common/karto_math.h"
 #include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/fixtures.h"
-#include "slamtune/io/log_check.h"
+#include "slamtune/io/check/log_check.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
 #include "slamtune/io/testing/planar_transform.h"

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "slamtune/io/log_check.h"
+#include "slamtune/io/check/log_check.h"
 
 namespace slamtune::io {
 

@@ -1,4 +1,4 @@
-#include "slamtune/io/odometry_check.h"
+#include "slamtune/io/check/odometry_check.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

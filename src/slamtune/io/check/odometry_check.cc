@@ -1,4 +1,4 @@
-#include "slamtune/io/odometry_check.h"
+#include "slamtune/io/check/odometry_check.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "slamtune/common/karto_math.h"
-#include "slamtune/io/check_problems.h"
+#include "slamtune/io/check/check_problems.h"
 
 namespace slamtune::io {
 namespace {

@@ -1,4 +1,4 @@
-#include "slamtune/tune/optimize_plan.h"
+#include "slamtune/tune/optimize/optimize_plan.h"
 
 #include <fmt/format.h>
 

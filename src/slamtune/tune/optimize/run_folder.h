@@ -1,14 +1,14 @@
 // The folder of one optimisation (--out DIR, or --resume DIR) and its run database. One process
 // at a time works in it, from before its database is read to the last report file (FolderLock);
 // a new run refuses a folder that holds another, and a resumed one takes what it needs from the
-// folder's record (tune/optimize_options.h).
+// folder's record (tune/optimize/optimize_options.h).
 #pragma once
 
 #include <optional>
 #include <string>
 
 #include "slamtune/common/folder_lock.h"
-#include "slamtune/tune/optimize_options.h"
+#include "slamtune/tune/optimize/optimize_options.h"
 
 namespace slamtune::tune {
 

@@ -1,4 +1,4 @@
-#include "slamtune/tune/run_folder.h"
+#include "slamtune/tune/optimize/run_folder.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "slamtune/io/log_check.h"
+#include "slamtune/io/check/log_check.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

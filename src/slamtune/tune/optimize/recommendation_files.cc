@@ -1,4 +1,4 @@
-#include "slamtune/tune/recommendation_files.h"
+#include "slamtune/tune/optimize/recommendation_files.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "slamtune/io/log_check.h"
+#include "slamtune/io/check/log_check.h"
 
 #include <fmt/format.h>
 
@@ -10,10 +10,10 @@
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
 #include "slamtune/io/beam_geometry.h"
-#include "slamtune/io/check_problems.h"
+#include "slamtune/io/check/check_problems.h"
+#include "slamtune/io/check/odometry_check.h"
 #include "slamtune/io/log_reader.h"
 #include "slamtune/io/log_summary.h"
-#include "slamtune/io/odometry_check.h"
 #include "slamtune/io/ros/recording_contents.h"
 #include "slamtune/io/ros/recording_log.h"
 #include "slamtune/io/ros/ros_recording.h"

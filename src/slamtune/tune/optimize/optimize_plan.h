@@ -12,8 +12,8 @@
 #include "slamtune/optim/evaluation/slam_evaluation.h"
 #include "slamtune/optim/optimize_result.h"
 #include "slamtune/optim/optimizer.h"
-#include "slamtune/tune/optimize_options.h"
-#include "slamtune/tune/run_folder.h"
+#include "slamtune/tune/optimize/optimize_options.h"
+#include "slamtune/tune/optimize/run_folder.h"
 #include "slamtune/tune/tuning_inputs.h"
 
 namespace slamtune::tune {

@@ -1,4 +1,4 @@
-#include "slamtune/tune/tuning_process.h"
+#include "slamtune/tune/optimize/tuning_process.h"
 
 #include <fmt/format.h>
 

@@ -4,8 +4,8 @@
 // just before the odometry samples concerned.
 #pragma once
 
+#include "slamtune/io/check/log_check.h"
 #include "slamtune/io/laser_log.h"
-#include "slamtune/io/log_check.h"
 
 namespace slamtune::io {
 

@@ -1,4 +1,4 @@
-#include "slamtune/tune/optimize_options.h"
+#include "slamtune/tune/optimize/optimize_options.h"
 
 #include <fmt/format.h>
 

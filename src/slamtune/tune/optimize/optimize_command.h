@@ -11,12 +11,12 @@
 #include "slamtune/common/progress.h"
 #include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/optimize_result.h"
-#include "slamtune/tune/optimize_options.h"
-#include "slamtune/tune/optimize_plan.h"
-#include "slamtune/tune/recommendation_files.h"
-#include "slamtune/tune/run_folder.h"
+#include "slamtune/tune/optimize/optimize_options.h"
+#include "slamtune/tune/optimize/optimize_plan.h"
+#include "slamtune/tune/optimize/recommendation_files.h"
+#include "slamtune/tune/optimize/run_folder.h"
+#include "slamtune/tune/optimize/tuning_process.h"
 #include "slamtune/tune/tuning_inputs.h"
-#include "slamtune/tune/tuning_process.h"
 
 namespace slamtune::tune {
 

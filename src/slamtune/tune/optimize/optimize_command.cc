@@ -1,4 +1,4 @@
-#include "slamtune/tune/optimize_command.h"
+#include "slamtune/tune/optimize/optimize_command.h"
 
 #include <fmt/format.h>
 
