@@ -1,7 +1,7 @@
 // Whole-engine benchmark: the Karto mapper (slam/log_runner.h) with slam_karto defaults on the
 // intel log (skipped when the datasets are absent) and on a simulated world, reporting
 // processed scans per second and the real-time factor (log duration / wall time). Each input
-// also runs with near-chain skipping off (every near chain matched, slam/fast_matching/response_bound.h), the
+// also runs with near-chain skipping off (every near chain matched, slam/matching/fast_matching/response_bound.h), the
 // two alternating, so the speed-up of skipping is a ratio from one invocation; the two
 // trajectories must be identical.
 //

@@ -34,9 +34,9 @@
 #include <vector>
 
 #include "slamtune/slam/backend/pose_graph_solver.h"
-#include "slamtune/slam/fast_matching/response_bound.h"
 #include "slamtune/slam/front_end.h"
 #include "slamtune/slam/laser_scan.h"
+#include "slamtune/slam/matching/fast_matching/response_bound.h"
 #include "slamtune/slam/matching/scan_matcher.h"
 #include "slamtune/slam/params/mapper_params.h"
 #include "slamtune/slam/pose_graph.h"

@@ -13,9 +13,9 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/karto_math.h"
-#include "slamtune/slam/fast_matching/correlation_search.h"
-#include "slamtune/slam/fast_matching/pruned_search.h"
 #include "slamtune/slam/matching/correlation_grid.h"
+#include "slamtune/slam/matching/fast_matching/correlation_search.h"
+#include "slamtune/slam/matching/fast_matching/pruned_search.h"
 #include "slamtune/slam/matching/match_covariance.h"
 #include "slamtune/slam/matching/scan_lookup_table.h"
 

@@ -93,9 +93,9 @@ class MatchCache {
 
   // A near-chain match (role kNearChain; §5.3 step 3), which the caller keeps only when its
   // response exceeds `threshold`. On a miss `may_exceed()` is asked first; when it says the
-  // response cannot exceed the threshold (an exact proof, slam/fast_matching/response_bound.h), the match is not
-  // computed and ProvenBelowThreshold() is stored and returned instead. The threshold's bits
-  // are part of the key, so a stored proof is only served to calls with the same threshold.
+  // response cannot exceed the threshold (an exact proof, slam/matching/fast_matching/response_bound.h), the match is
+  // not computed and ProvenBelowThreshold() is stored and returned instead. The threshold's bits are part of the key,
+  // so a stored proof is only served to calls with the same threshold.
   MatchResult MatchAbove(ScanMatcher& matcher, const LaserScan& scan, std::span<const LaserScan* const> base_scans,
                          Penalize penalize, Refine refine, double threshold, const std::function<bool()>& may_exceed);
 

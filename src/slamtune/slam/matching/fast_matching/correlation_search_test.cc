@@ -1,4 +1,4 @@
-#include "slamtune/slam/fast_matching/correlation_search.h"
+#include "slamtune/slam/matching/fast_matching/correlation_search.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "slamtune/slam/fast_matching/correlation_kernels.h"
+#include "slamtune/slam/matching/fast_matching/correlation_kernels.h"
 
 namespace slamtune::slam {
 namespace {

@@ -1,10 +1,10 @@
-#include "slamtune/slam/fast_matching/correlation_search.h"
+#include "slamtune/slam/matching/fast_matching/correlation_search.h"
 
 #include <algorithm>
 #include <thread>
 
 #include "slamtune/common/error.h"
-#include "slamtune/slam/fast_matching/correlation_kernels.h"
+#include "slamtune/slam/matching/fast_matching/correlation_kernels.h"
 
 namespace slamtune::slam {
 namespace {

@@ -19,7 +19,7 @@
 #include <functional>
 #include <vector>
 
-#include "slamtune/slam/fast_matching/correlation_search.h"
+#include "slamtune/slam/matching/fast_matching/correlation_search.h"
 #include "slamtune/slam/matching/scan_lookup_table.h"
 
 namespace slamtune::slam {

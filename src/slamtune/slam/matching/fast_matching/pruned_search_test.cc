@@ -1,4 +1,4 @@
-#include "slamtune/slam/fast_matching/pruned_search.h"
+#include "slamtune/slam/matching/fast_matching/pruned_search.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "slamtune/slam/fast_matching/response_bound.h"
+#include "slamtune/slam/matching/fast_matching/response_bound.h"
 
 #include <algorithm>
 #include <cmath>

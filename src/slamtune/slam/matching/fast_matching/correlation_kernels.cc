@@ -1,4 +1,4 @@
-#include "slamtune/slam/fast_matching/correlation_kernels.h"
+#include "slamtune/slam/matching/fast_matching/correlation_kernels.h"
 
 #include <cstdlib>
 

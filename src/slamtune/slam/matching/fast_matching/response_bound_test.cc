@@ -1,6 +1,6 @@
 // The response bound must never be below what the matcher finds (that would skip a near-chain
 // edge Karto adds), and MayExceed must agree with the bound it stops computing early.
-#include "slamtune/slam/fast_matching/response_bound.h"
+#include "slamtune/slam/matching/fast_matching/response_bound.h"
 
 #include <gtest/gtest.h>
 

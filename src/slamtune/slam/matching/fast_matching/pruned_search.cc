@@ -1,12 +1,12 @@
-#include "slamtune/slam/fast_matching/pruned_search.h"
+#include "slamtune/slam/matching/fast_matching/pruned_search.h"
 
 #include <algorithm>
 #include <bit>
 #include <cstring>
 
 #include "slamtune/common/error.h"
-#include "slamtune/slam/fast_matching/correlation_kernels.h"
 #include "slamtune/slam/matching/correlation_grid.h"
+#include "slamtune/slam/matching/fast_matching/correlation_kernels.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
