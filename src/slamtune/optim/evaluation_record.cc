@@ -45,10 +45,8 @@ const std::array<RecordFigure, 12> kFigures = {{
                       "wall the log's scans draw along the path (n_w)", 1e12),
 }};
 
-// The measured figures of a record's JSON: "figures", or, in a record stored in the earlier
-// layout, "objectives" and "second" together.
-nlohmann::json StoredFigures(const nlohmann::json& j) {
-  if (j.contains("figures")) return j.at("figures");
+// The measured figures of a record stored in the earlier layout: "objectives" and "second" together.
+nlohmann::json EarlierLayoutFigures(const nlohmann::json& j) {
   nlohmann::json figures = j.at("objectives");
   figures.update(j.at("second"));
   return figures;
@@ -124,7 +122,9 @@ void from_json(const nlohmann::json& j, EvaluationRecord& r) {
   r.params = j.at("params").get<std::map<std::string, double>>();
   r.status = ParseRunStatus(j.at("status").get<std::string>());
   r.reason = j.at("reason").get<std::string>();
-  const nlohmann::json figures = StoredFigures(j);
+  nlohmann::json earlier;  // filled only for a record in the earlier layout; the current one is read in place
+  const auto found = j.find("figures");
+  const nlohmann::json& figures = found != j.end() ? *found : (earlier = EarlierLayoutFigures(j));
   for (const RecordFigure& figure : kFigures) {
     if (figure.derived()) continue;
     r.*figure.field =
