@@ -3,10 +3,9 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include <type_traits>
-
 #include "slamtune/common/text_file.h"
 #include "slamtune/slam/params/base_configuration.h"
+#include "slamtune/slam/params/mapper_param_rows.h"
 #include "slamtune/slam/params/ros_params_section.h"
 
 namespace slamtune::tune {
@@ -18,21 +17,6 @@ nlohmann::ordered_json KeysJson(const slam::ParamsYamlReport& report) {
     keys.push_back({{"key", k.key}, {"line", k.line}, {"use", slam::NameOf(k.use)}, {"note", k.note}});
   }
   return keys;
-}
-
-std::string ListedValueText(const slam::ParamValue& value) {
-  return std::visit(
-      [](const auto& v) -> std::string {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) {
-          return v;
-        } else if constexpr (std::is_same_v<T, bool>) {
-          return v ? "true" : "false";
-        } else {
-          return fmt::format("{}", v);
-        }
-      },
-      value);
 }
 
 }  // namespace
@@ -98,7 +82,7 @@ std::vector<ListedParam> ListedParams(const ParamsInspection& inspection, bool a
   std::vector<ListedParam> out;
   for (std::size_t i = 0; i < values.size(); ++i) {
     const bool differs = values[i].value != defaults[i].value;
-    if (all || differs) out.push_back({values[i].name, ListedValueText(values[i].value), differs});
+    if (all || differs) out.push_back({values[i].name, slam::ParamValueText(values[i].value), differs});
   }
   return out;
 }

@@ -185,19 +185,24 @@ bool InParamBounds(double v, const ParamBounds& b) {
   return true;
 }
 
-std::string FormatParamValue(const ParamValue& value) {
+std::string ParamValueText(const ParamValue& value) {
   return std::visit(
       [](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, bool>) {
           return v ? "true" : "false";
         } else if constexpr (std::is_same_v<T, std::string>) {
-          return "'" + v + "'";
+          return v;
         } else {
           return fmt::format("{}", v);
         }
       },
       value);
+}
+
+std::string FormatParamValue(const ParamValue& value) {
+  if (const auto* text = std::get_if<std::string>(&value)) return "'" + *text + "'";
+  return ParamValueText(value);
 }
 
 ParamValue ReadParamValue(const MapperParams& params, const ParamMember& member) {

@@ -44,7 +44,10 @@ const ParamRow* FindParamRow(std::string_view name);
 
 // The value `member` has in `params`; a choice as the name of its value.
 ParamValue ReadParamValue(const MapperParams& params, const ParamMember& member);
-// A value as messages show it: true / false, a number, or a text in quotes.
+// A value as a params file or a listing writes it: true / false, a number (shortest round trip),
+// or the text as it is.
+std::string ParamValueText(const ParamValue& value);
+// A value as messages show it: ParamValueText, with a text in quotes.
 std::string FormatParamValue(const ParamValue& value);
 // Whether `v` is finite and within `bounds`.
 bool InParamBounds(double v, const ParamBounds& bounds);

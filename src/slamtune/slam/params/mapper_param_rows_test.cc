@@ -60,6 +60,14 @@ TEST(MapperParamRows, ValuesReadAndShownAsMessagesGiveThem) {
   EXPECT_EQ(FormatParamValue(0.05), "0.05");
 }
 
+TEST(MapperParamRows, ValuesAsAListingWritesThem) {
+  EXPECT_EQ(ParamValueText(std::string("ceres")), "ceres");
+  EXPECT_EQ(ParamValueText(false), "false");
+  EXPECT_EQ(ParamValueText(70), "70");
+  EXPECT_EQ(ParamValueText(0.1), "0.1");
+  EXPECT_EQ(ParamValueText(1e-7), "1e-07");
+}
+
 TEST(MapperParamRows, TheCheckOfARowNamesItsRule) {
   MapperParams p;
   const ParamRow& resolution = *FindParamRow("resolution");

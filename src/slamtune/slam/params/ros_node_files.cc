@@ -4,9 +4,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <regex>
 
 #include "slamtune/common/error.h"
+#include "slamtune/slam/params/mapper_param_rows.h"
 #include "slamtune/slam/params/ros_params_section.h"
 
 namespace slamtune::slam {
@@ -107,23 +109,15 @@ const std::vector<NodeParam>& KartoParams() {
 constexpr const char* kCeresPlugin = "solver_plugins::CeresSolver";  // the one slam_toolbox registers
 // The value of an engine field as the node's declared type writes it.
 std::string Typed(ParamType type, const ParamValue& value) {
-  return std::visit(
-      [type](const auto& v) -> std::string {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) {
-          return v;
-        } else if constexpr (std::is_same_v<T, bool>) {
-          return v ? "true" : "false";
-        } else {
-          const double d = static_cast<double>(v);
-          if (type == kInt) return fmt::format("{}", static_cast<long long>(std::llround(d)));
-          if (type == kBool) return d != 0.0 ? "true" : "false";
-          std::string s = fmt::format("{}", d);  // shortest round trip
-          if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-          return s;
-        }
-      },
-      value);
+  const double* real = std::get_if<double>(&value);
+  const int* whole = std::get_if<int>(&value);
+  if (real == nullptr && whole == nullptr) return ParamValueText(value);
+  const double d = real != nullptr ? *real : *whole;
+  if (type == kInt) return fmt::format("{}", static_cast<long long>(std::llround(d)));
+  if (type == kBool) return d != 0.0 ? "true" : "false";
+  std::string s = fmt::format("{}", d);  // shortest round trip
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
 }
 
 ParamValue EngineValue(const MapperParams& p, const std::string& field) {
