@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 #include <tuple>
@@ -140,30 +141,26 @@ void FigureOptions::Validate() const {
 }
 
 Series CandidateSeries(const optim::Candidate& candidate, double x, double y) {
+  struct LabelStyle {
+    const char* label;
+    int colour;  // PaletteColour index
+    Marker marker;
+    int marker_size;
+  };
+  // Fixed per label, distinct from the population's blue circles; the last row is any other label.
+  static constexpr LabelStyle kStyles[] = {
+      {"recommended", 1, Marker::kStar, 18},  // vermillion
+      {"knee", 2, Marker::kDiamond, 16},      // bluish green
+      {"default", 6, Marker::kSquare, 14},    // black
+      {"worst", 3, Marker::kCross, 14},       // reddish purple
+      {"", 4, Marker::kPlus, 14},             // orange
+  };
+  const LabelStyle* style = std::begin(kStyles);
+  while (style + 1 != std::end(kStyles) && candidate.label != style->label) ++style;
   Series s = MakeSeries(candidate.label, {x}, {y});
-  const std::string& l = candidate.label;
-  // Fixed per label, distinct from the population's blue circles.
-  if (l == "recommended") {
-    s.colour = PaletteColour(1);  // vermillion
-    s.marker = Marker::kStar;
-    s.marker_size = 18;
-  } else if (l == "knee") {
-    s.colour = PaletteColour(2);  // bluish green
-    s.marker = Marker::kDiamond;
-    s.marker_size = 16;
-  } else if (l == "default") {
-    s.colour = PaletteColour(6);  // black
-    s.marker = Marker::kSquare;
-    s.marker_size = 14;
-  } else if (l == "worst") {
-    s.colour = PaletteColour(3);  // reddish purple
-    s.marker = Marker::kCross;
-    s.marker_size = 14;
-  } else {
-    s.colour = PaletteColour(4);  // orange
-    s.marker = Marker::kPlus;
-    s.marker_size = 14;
-  }
+  s.colour = PaletteColour(style->colour);
+  s.marker = style->marker;
+  s.marker_size = style->marker_size;
   return s;
 }
 

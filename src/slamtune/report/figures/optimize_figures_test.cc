@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <opencv2/core.hpp>
+#include <string>
+#include <vector>
 
 #include "slamtune/report/testing/fake_optimize_result.h"
 
@@ -21,6 +23,27 @@ optim::OptimizeResult FrontAndOutlier() {
   s.decisions.assign(s.objectives.size(), {3.0, 10.0});
   r.snapshots = {s};
   return r;
+}
+
+TEST(CandidateSeries, OneStylePerLabelAndOneForAnyOther) {
+  auto series = [](const std::string& label) {
+    optim::Candidate c;
+    c.label = label;
+    return CandidateSeries(c, 1.0, 2.0);
+  };
+  const Series recommended = series("recommended");
+  EXPECT_EQ(recommended.name, "recommended");
+  EXPECT_EQ(recommended.x, std::vector<double>{1.0});
+  EXPECT_EQ(recommended.y, std::vector<double>{2.0});
+  EXPECT_EQ(recommended.marker, Marker::kStar);
+  EXPECT_EQ(*recommended.colour, PaletteColour(1));
+  EXPECT_EQ(series("knee").marker, Marker::kDiamond);
+  EXPECT_EQ(series("default").marker, Marker::kSquare);
+  EXPECT_EQ(series("worst").marker, Marker::kCross);
+  const Series other = series("best loop closure");
+  EXPECT_EQ(other.marker, Marker::kPlus);
+  EXPECT_EQ(*other.colour, PaletteColour(4));
+  EXPECT_EQ(other.marker_size, 14);
 }
 
 TEST(ObjectiveLimits, FitTheFrontNotTheFarWorstPoint) {
