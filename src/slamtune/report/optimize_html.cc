@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "slamtune/io/log_summary.h"
 #include "slamtune/report/figures/optimize_figures.h"
@@ -207,6 +210,19 @@ void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const Optim
   }
 }
 
+// The parameters the Candidates table shows (ParamSummary): the searched ones, or every parameter
+// of the candidates when the space is not known.
+std::vector<std::string> ShownParamNames(const optim::OptimizeResult& r) {
+  std::vector<std::string> names;
+  for (const auto& d : r.space.dimensions) names.push_back(d.name);
+  if (!names.empty()) return names;
+  std::set<std::string> all;
+  for (const auto& c : r.candidates) {
+    for (const auto& entry : c.record.params) all.insert(entry.first);
+  }
+  return {all.begin(), all.end()};
+}
+
 void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) {
   page.Heading(2, "Candidates");
   std::vector<std::string> header = {"label", "how it was chosen", "parameters", "status"};
@@ -231,9 +247,10 @@ void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) 
     rows.push_back(std::move(row));
   }
   page.Table(header, rows);
-  page.Paragraph(ObjectiveLegend(r.objectives) + " (all minimised). Parameters: " +
-                     std::string("r = loop_search_maximum_distance (m), g = loop_match_minimum_chain_size."),
-                 "note");
+  const std::string params = ParamLegend(ShownParamNames(r));
+  page.Paragraph(
+      ObjectiveLegend(r.objectives) + " (all minimised)." + (params.empty() ? "" : " Parameters: " + params + "."),
+      "note");
 
   page.Heading(3, "Loop closures: log scan indices");
   std::vector<std::vector<std::string>> scans;

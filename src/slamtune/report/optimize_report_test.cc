@@ -249,6 +249,21 @@ TEST(WriteOptimizeReport, WithoutRelationsLeavesOutTheErrorOutputs) {
   EXPECT_THAT(ReadWholeFile(dir / "report.html"), Not(HasSubstr("Spearman")));
 }
 
+TEST(WriteOptimizeReport, CandidatesNoteNamesTheSearchedParameters) {
+  const fs::path loop = FreshDir("legend_loop");
+  WriteOptimizeReport(testing::FakeOptimizeResult(false), loop.string());
+  EXPECT_THAT(ReadWholeFile(loop / "report.html"),
+              HasSubstr("Parameters: r = loop_search_maximum_distance (m), g = loop_match_minimum_chain_size."));
+  // A space of other parameters: the note names only the symbols the table uses.
+  optim::OptimizeResult other = testing::FakeOptimizeResult(false);
+  other.space.dimensions[0].name = "correlation_search_space_dimension";
+  const fs::path dir = FreshDir("legend_other");
+  WriteOptimizeReport(other, dir.string());
+  const std::string html = ReadWholeFile(dir / "report.html");
+  EXPECT_THAT(html, HasSubstr("Parameters: g = loop_match_minimum_chain_size."));
+  EXPECT_THAT(html, Not(HasSubstr("r = loop_search_maximum_distance")));
+}
+
 TEST(WriteOptimizeReport, ParameterSpaceCaptionSaysHowToReadItsView) {
   const fs::path two = FreshDir("space_two");
   WriteOptimizeReport(testing::FakeOptimizeResult(true), two.string());

@@ -133,6 +133,18 @@ std::string ParamSummary(const std::map<std::string, double>& params, const opti
   return out;
 }
 
+std::string ParamLegend(const std::vector<std::string>& ros_names) {
+  std::string out;
+  for (const std::string& name : ros_names) {
+    const std::string symbol = ShortParamName(name);
+    if (symbol == name) continue;
+    const std::string unit = ParamUnit(name);
+    if (!out.empty()) out += ", ";
+    out += symbol + " = " + name + (unit.empty() ? "" : " (" + unit + ")");
+  }
+  return out;
+}
+
 bool HasGroundTruth(const optim::OptimizeResult& result) {
   if (!result.relations_path.empty()) return true;
   for (const auto& e : result.evaluations)

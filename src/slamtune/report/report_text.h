@@ -61,6 +61,10 @@ std::string FormatParam(double value);
 // "r=3.2 g=12" over the space's varied dimensions (all params when the space is empty).
 std::string ParamSummary(const std::map<std::string, double>& params, const optim::SearchSpace& space);
 
+// What ParamSummary's short symbols stand for: "r = loop_search_maximum_distance (m), g = ..." over
+// those of `ros_names` that have one (ShortParamName), in order; empty when none has.
+std::string ParamLegend(const std::vector<std::string>& ros_names);
+
 // True when any evaluation or candidate carries ground-truth errors, or relations were given.
 bool HasGroundTruth(const optim::OptimizeResult& result);
 

@@ -42,6 +42,15 @@ TEST(ParamUnit, FromTheParameterTable) {
   EXPECT_EQ(ParamUnit("no_such_parameter"), "");
 }
 
+TEST(ParamLegend, NamesTheShortSymbolsOnly) {
+  EXPECT_EQ(ParamLegend({"loop_search_maximum_distance", "loop_match_minimum_chain_size"}),
+            "r = loop_search_maximum_distance (m), g = loop_match_minimum_chain_size");
+  // A parameter shown under its ROS name needs no legend.
+  EXPECT_EQ(ParamLegend({"correlation_search_space_dimension", "loop_match_minimum_response_coarse"}),
+            "p = loop_match_minimum_response_coarse");
+  EXPECT_EQ(ParamLegend({"correlation_search_space_dimension", "minimum_travel_distance"}), "");
+}
+
 TEST(FormatParam, IntegersPlainOthersRounded) {
   EXPECT_EQ(FormatParam(12.0), "12");
   EXPECT_EQ(FormatParam(0.40000000000000002), "0.4");
