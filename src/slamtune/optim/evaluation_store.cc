@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <sqlite3.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <mutex>
 
 #include "slamtune/common/error.h"
@@ -11,6 +13,7 @@ namespace slamtune::optim {
 
 struct EvaluationStore::Lock {
   mutable std::mutex mutex;
+  std::int64_t reserved_end = 0;  // one past the last place ReserveOrder gave out
 };
 
 namespace {
@@ -28,6 +31,7 @@ class Statement {
   ~Statement() { sqlite3_finalize(stmt_); }
   void Bind(int i, const std::string& text) { sqlite3_bind_text(stmt_, i, text.c_str(), -1, SQLITE_TRANSIENT); }
   void Bind(int i, int value) { sqlite3_bind_int(stmt_, i, value); }
+  void Bind(int i, std::int64_t value) { sqlite3_bind_int64(stmt_, i, value); }
   bool Step() {
     const int rc = sqlite3_step(stmt_);
     if (rc == SQLITE_ROW) return true;
@@ -39,6 +43,7 @@ class Statement {
     return t ? reinterpret_cast<const char*>(t) : "";
   }
   int Int(int col) const { return sqlite3_column_int(stmt_, col); }
+  std::int64_t Int64(int col) const { return sqlite3_column_int64(stmt_, col); }
 
  private:
   sqlite3* db_;
@@ -177,16 +182,26 @@ std::optional<nlohmann::json> EvaluationStore::Meta(const std::string& key) cons
   return nlohmann::json::parse(get.Text(0));
 }
 
-void EvaluationStore::Put(const EvaluationRecord& record) {
+std::int64_t EvaluationStore::ReserveOrder(std::size_t count) {
   std::lock_guard guard(lock_->mutex);
-  Statement put(db_,
-                "INSERT OR REPLACE INTO evaluations(key, status, record, seq)"
-                " VALUES(?, ?, ?, (SELECT COALESCE(MAX(seq), 0) + 1 FROM evaluations))");
+  Statement next(db_, "SELECT COALESCE(MAX(seq), 0) + 1 FROM evaluations");
+  next.Step();
+  const std::int64_t first = std::max(next.Int64(0), lock_->reserved_end);
+  lock_->reserved_end = first + static_cast<std::int64_t>(count);
+  return first;
+}
+
+void EvaluationStore::Put(const EvaluationRecord& record, std::int64_t place) {
+  std::lock_guard guard(lock_->mutex);
+  Statement put(db_, "INSERT OR REPLACE INTO evaluations(key, status, record, seq) VALUES(?, ?, ?, ?)");
   put.Bind(1, record.key);
   put.Bind(2, std::string(NameOf(record.status)));
   put.Bind(3, nlohmann::json(record).dump());
+  put.Bind(4, place);
   put.Step();
 }
+
+void EvaluationStore::Put(const EvaluationRecord& record) { Put(record, ReserveOrder(1)); }
 
 std::optional<EvaluationRecord> EvaluationStore::Get(const std::string& key) const {
   std::lock_guard guard(lock_->mutex);

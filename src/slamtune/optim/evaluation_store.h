@@ -6,6 +6,7 @@
 // stored generations let the replay check that it retraces the interrupted run exactly.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -44,7 +45,12 @@ class EvaluationStore {
   void SetMeta(const std::string& key, const nlohmann::json& value);
   std::optional<nlohmann::json> Meta(const std::string& key) const;
 
-  // Finished evaluations, keyed by SearchSpace::Key. Put commits at once; thread-safe.
+  // Finished evaluations, keyed by SearchSpace::Key. Put commits at once; thread-safe. All()
+  // lists them by their place: Put(record) gives the next one; a batch run in parallel reserves
+  // a place per run first (ReserveOrder returns the first of `count`) and puts each record at
+  // its own, so the list keeps the batch's order whichever run finishes first.
+  std::int64_t ReserveOrder(std::size_t count);
+  void Put(const EvaluationRecord& record, std::int64_t place);
   void Put(const EvaluationRecord& record);
   std::optional<EvaluationRecord> Get(const std::string& key) const;
   std::vector<EvaluationRecord> All() const;

@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
@@ -119,6 +122,22 @@ TEST(EvaluationStore, ConcurrentPutsAreAllKept) {
   }
   for (auto& th : threads) th.join();
   EXPECT_EQ(store.Count(), 40u);
+}
+
+TEST(EvaluationStore, RecordsListByTheirPlaceNotByWhenTheyWerePut) {
+  const std::string path = FreshPath("places");
+  {
+    EvaluationStore store(path);
+    store.Put(Sample(0));
+    const std::int64_t first = store.ReserveOrder(3);
+    store.Put(Sample(9));  // after the reserved places
+    store.Put(Sample(3), first + 2);
+    store.Put(Sample(1), first);
+    store.Put(Sample(2), first + 1);
+  }
+  std::vector<std::string> keys;
+  for (const EvaluationRecord& r : EvaluationStore(path).All()) keys.push_back(r.key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"r=0", "r=1", "r=2", "r=3", "r=9"}));
 }
 
 TEST(EvaluationStore, RejectsNonDatabaseFile) {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <set>
 #include <thread>
@@ -72,13 +73,16 @@ std::vector<EvaluationRecord> BatchEvaluator::RunTodo(const std::vector<Assignme
   const std::vector<std::size_t>& todo = lookup.todo;
   const std::vector<std::string>& keys = lookup.keys;
   std::vector<EvaluationRecord> fresh(todo.size());
+  // The store lists the records in the batch's order, not in the order the runs finish.
+  const std::int64_t first_place = store_ ? store_->ReserveOrder(todo.size()) : 0;
   std::atomic<std::size_t> next{0};
   // Bookkeeping of one finished evaluation, local or remote.
   enum class RanOn { kThisProcess, kWorkerRank };
   auto finish = [&](std::size_t t, EvaluationRecord record, RanOn ran_on) {
     const std::size_t i = todo[t];
     fresh[t] = std::move(record);
-    if (store_) store_->Put(fresh[t]);  // committed at once: an interruption loses nothing finished
+    // Committed at once: an interruption loses nothing finished.
+    if (store_) store_->Put(fresh[t], first_place + static_cast<std::int64_t>(t));
     BatchEvaluatorStats snapshot;
     {
       std::lock_guard guard(mutex_);

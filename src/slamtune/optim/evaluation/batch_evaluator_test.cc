@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "slamtune/common/testing/temp_dir.h"
 #include "slamtune/optim/objective_set.h"
@@ -100,6 +101,23 @@ TEST(BatchEvaluator, DatabaseServesEarlierResultsAcrossProcesses) {
   EXPECT_EQ(calls, 1);
   EXPECT_DOUBLE_EQ(out[0].corner_pixels, 4.0);
   EXPECT_EQ(store.Count(), 3u);
+}
+
+// With two runs at a time the later set finishes first; the store still lists the batch's order.
+TEST(BatchEvaluator, TheStoreKeepsTheBatchOrderWhicheverRunFinishesFirst) {
+  const auto path = (slamtune::testing::UniqueTempDir("batch_order") / "run.sqlite").string();
+  EvaluationStore store(path);
+  BatchEvaluator eval(
+      [](const Assignment& a) {
+        if (a.at("r") == 1) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        return Fake(a);
+      },
+      &store, 2);
+  eval.Evaluate({{{"r", 1}}, {{"r", 2}}});
+  eval.Evaluate({{{"r", 3}}});
+  std::vector<double> order;
+  for (const EvaluationRecord& r : store.All()) order.push_back(r.params.at("r"));
+  EXPECT_EQ(order, (std::vector<double>{1, 2, 3}));
 }
 
 TEST(BatchEvaluator, ProgressCallbackMayReadStats) {
