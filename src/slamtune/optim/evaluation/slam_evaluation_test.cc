@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "slamtune/common/testing/same_bits.h"
 #include "slamtune/io/carmen/carmen_reader.h"
@@ -188,12 +189,20 @@ void CheckSharingChangesNothing(std::shared_ptr<const io::LaserLog> log, int set
               shared.shared_work.barycenter_cache->counters().ToString().c_str());
 }
 
-std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::size_t scans) {
+// The first `scans` scans of a built-in world, with the world's relations.
+SlamEvaluationContext WorldContext(const std::string& world, std::size_t scans) {
   sim::SimulationOptions o;
   o.world = world;
-  auto log = std::make_shared<io::LaserLog>(sim::Simulate(o).log);
-  log->scans.resize(std::min(log->scans.size(), scans));
-  return log;
+  sim::Simulation s = sim::Simulate(o);
+  s.log.scans.resize(std::min(s.log.scans.size(), scans));
+  SlamEvaluationContext context;
+  context.log = std::make_shared<const io::LaserLog>(std::move(s.log));
+  context.relations = std::move(s.relations);
+  return context;
+}
+
+std::shared_ptr<const io::LaserLog> WorldSlice(const std::string& world, std::size_t scans) {
+  return WorldContext(world, scans).log;
 }
 
 // A map no reading reached would win every objective: it is a failed run, with the reason.
@@ -213,13 +222,7 @@ TEST(SlamEvaluation, AnEmptyMapIsAFailedRun) {
 // their own map, so it shrinks, while the same scans of the log drawn along the sparser, worse
 // path make more wall.
 TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
-  sim::SimulationOptions o;
-  o.world = "office";
-  sim::Simulation s = sim::Simulate(o);
-  s.log.scans.resize(std::min<std::size_t>(s.log.scans.size(), 1200));
-  SlamEvaluationContext context;
-  context.log = std::make_shared<const io::LaserLog>(s.log);
-  context.relations = s.relations;
+  SlamEvaluationContext context = WorldContext("office", 1200);
   const Assignment dense_set = {{"minimum_travel_distance", 0.2}};
   const Assignment sparse_set = {{"minimum_travel_distance", 1.5}, {"minimum_travel_heading", 1.0}};
   EXPECT_EQ(EvaluateSlam(context, dense_set).drawn_wall_cells, 0.0);
@@ -244,15 +247,9 @@ TEST(SlamEvaluation, TheDrawnWallRanksNodeSpacingsByTheirError) {
 // failed with where it broke; a run that holds, and the base configuration itself (always run
 // to the end, the reference of every answer), are scored as before.
 TEST(SlamEvaluation, ABrokenFrontEndStopsTheRunWhenAsked) {
-  sim::SimulationOptions o;
-  o.world = "office-jump";
-  sim::Simulation s = sim::Simulate(o);
   // The jump is 20 m into the route (near scan 200): the first 700 scans hold the break and as
   // much drive again after it, at a third of the whole world's cost.
-  s.log.scans.resize(std::min<std::size_t>(s.log.scans.size(), 700));
-  SlamEvaluationContext context;
-  context.log = std::make_shared<const io::LaserLog>(s.log);
-  context.relations = s.relations;
+  SlamEvaluationContext context = WorldContext("office-jump", 700);
   const Assignment base = {{"correlation_search_space_dimension", 0.3}};
   const Assignment broken = {{"correlation_search_space_dimension", 0.32}};  // still far too small for 1 m
   const Assignment wide = {{"correlation_search_space_dimension", 1.6}};
