@@ -18,9 +18,7 @@ const SubcommandRegistrar kConvert(Subcommand{
     15, [](CLI::App& app) -> std::function<int()> {
       auto args = std::make_shared<tune::ConvertOptions>();
       app.add_option("RECORDING", args->log, "ROS 2 / ROS 1 bag (or a CARMEN log)")->required();
-      app.add_option("--out", args->out, "CARMEN log to write (.clf)")->required();
-      app.add_flag("--quiet", args->quiet, "Do not print what was read");
-      AddLogInputFlags(app, args->input);
+      AddCarmenOutputFlags(app, args->out, args->quiet, args->input);
       app.footer(
           "Examples:\n"
           "  slamtune convert drive.mcap --out drive.clf\n"

@@ -34,9 +34,7 @@ const SubcommandRegistrar kFault(Subcommand{
                      "An odometry fault, KIND,START_M,LENGTH_M[,MAGNITUDE] (repeatable): spin (MAGNITUDE deg of "
                      "turn reported, not turned), jump (MAGNITUDE m of travel reported, not travelled) or reverse "
                      "(the travel reported backwards), over LENGTH_M of the log's odometric travel from START_M");
-      app.add_option("--out", args->out, "CARMEN log to write (.clf)")->required();
-      app.add_flag("--quiet", args->quiet, "Do not print what was read");
-      AddLogInputFlags(app, args->input);
+      AddCarmenOutputFlags(app, args->out, args->quiet, args->input);
       app.footer(
           "Faults are those of `slamtune simulate --fault`, located by the distance the log's odometry\n"
           "travelled (close to the odometry path `slamtune info LOG` prints); readings and timestamps are\n"

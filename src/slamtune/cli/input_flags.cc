@@ -34,6 +34,12 @@ void AddLogInputFlags(CLI::App& app, tune::LogInputOptions& options, MaxScansFla
       ->group(ros);
 }
 
+void AddCarmenOutputFlags(CLI::App& app, std::string& out, bool& quiet, tune::LogInputOptions& input) {
+  app.add_option("--out", out, "CARMEN log to write (.clf)")->required();
+  app.add_flag("--quiet", quiet, "Do not print what was read");
+  AddLogInputFlags(app, input);
+}
+
 void AddTuningInputFlags(CLI::App& app, tune::TuningInputOptions& options) {
   app.add_option("--relations", options.relations,
                  "Freiburg relations file: adds ground-truth errors to every evaluation");

@@ -18,6 +18,9 @@ enum class MaxScansFlag { kOffer, kOmit };
 // --lenient, --no-return, --max-scans, --beams and the ROS recording choices.
 void AddLogInputFlags(CLI::App& app, tune::LogInputOptions& options, MaxScansFlag max_scans = MaxScansFlag::kOffer);
 
+// --out (the CARMEN log to write), --quiet and the log's flags: convert and fault.
+void AddCarmenOutputFlags(CLI::App& app, std::string& out, bool& quiet, tune::LogInputOptions& input);
+
 // --preset: the node and its defaults (slam/params/base_configuration.h).
 CLI::Option* AddPresetFlag(CLI::App& app, std::string& preset);
 
