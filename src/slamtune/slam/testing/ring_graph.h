@@ -16,4 +16,9 @@ struct RingGraph {
 // `n` poses on a circle of radius `radius`, noise of `sigma_xy` m and `sigma_theta` rad.
 RingGraph MakeRingGraph(int n, double radius, double sigma_xy, double sigma_theta, unsigned seed);
 
+// `solved` (the node values after a back-end's solve) recovers the ring, as gtest expectations:
+// node 0 is exactly its truth (the back-ends hold it fixed) and every pose is within `tolerance`
+// of its truth in x, y (m) and heading (rad).
+void ExpectRecoversRing(const std::vector<Pose2>& solved, const RingGraph& ring, double tolerance);
+
 }  // namespace slamtune::slam::testing
