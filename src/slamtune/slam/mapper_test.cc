@@ -20,6 +20,7 @@
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/testing/beam_counts.h"
+#include "slamtune/slam/testing/corridor_log.h"
 #include "slamtune/slam/testing/engine_state.h"
 
 namespace slamtune::slam {
@@ -28,11 +29,7 @@ namespace {
 class MapperOnCorridor : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    sim::SimulationOptions o;
-    o.world = "corridor";
-    o.speed_mps = 1.0;
-    o.seed = 3;
-    log_ = std::make_shared<const io::LaserLog>(sim::Simulate(o).log);
+    log_ = std::make_shared<const io::LaserLog>(testing::SimulatedCorridorLog());
     full_ = std::make_unique<LogRunner>(log_, testing::FastMapperParams());
     full_->RunToEnd();
     // The first accepted loop and a snapshot of the engine just before its scan.
