@@ -37,10 +37,7 @@ TEST(CeresSolver, ToolboxTolerancesStopNearTheOptimum) {
 
 TEST(CeresSolver, AgreesWithSpaOnAnInconsistentGraph) {
   auto ring = testing::MakeRingGraph(16, 3.0, 0.1, 0.05, 3);
-  PoseGraph g = ring.graph;
-  Pose2 biased = ring.truth[15];
-  biased.y += 0.3;
-  g.LinkScans(2, 15, ring.truth[2], biased, Eigen::Matrix3d::Identity() * 0.05, EdgeKind::kLoop);
+  const PoseGraph g = testing::WithBiasedLoop(ring, 2, 15, {0.0, 0.3}, 0.05);
   std::vector<Pose2> spa = g.node_values(), ceres = spa;
   SpaSolver().Solve(spa, g.edges());
   const SolveSummary s = CeresSolver().Solve(ceres, g.edges());

@@ -45,11 +45,8 @@ TEST(SpaSolver, IsDeterministicAndStopsOnSmallSteps) {
 
 TEST(SpaSolver, InconsistentLoopSpreadsTheErrorAndKeepsNodeZero) {
   auto ring = testing::MakeRingGraph(12, 3.0, 0.0, 0.0, 1);
-  PoseGraph g = ring.graph;
   // A second, biased loop measurement 1 -> 11 (x off by 0.5 m).
-  Pose2 biased = ring.truth[11];
-  biased.x += 0.5;
-  g.LinkScans(1, 11, ring.truth[1], biased, Eigen::Matrix3d::Identity() * 0.02, EdgeKind::kLoop);
+  const PoseGraph g = testing::WithBiasedLoop(ring, 1, 11, {0.5, 0.0}, 0.02);
   std::vector<Pose2> nodes = g.node_values();
   const SolveSummary s = SpaSolver().Solve(nodes, g.edges());
   EXPECT_TRUE(s.updated);

@@ -32,6 +32,15 @@ RingGraph MakeRingGraph(int n, double radius, double sigma_xy, double sigma_thet
   return ring;
 }
 
+PoseGraph WithBiasedLoop(const RingGraph& ring, int from, int to, const Eigen::Vector2d& bias, double variance) {
+  PoseGraph g = ring.graph;
+  Pose2 biased = ring.truth[to];
+  biased.x += bias.x();
+  biased.y += bias.y();
+  g.LinkScans(from, to, ring.truth[from], biased, Eigen::Matrix3d::Identity() * variance, EdgeKind::kLoop);
+  return g;
+}
+
 void ExpectRecoversRing(const std::vector<Pose2>& solved, const RingGraph& ring, double tolerance) {
   ASSERT_EQ(solved.size(), ring.truth.size());
   EXPECT_EQ(solved[0], ring.truth[0]);
