@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "slamtune/common/error.h"
@@ -20,6 +21,7 @@
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/testing/beam_counts.h"
+#include "slamtune/slam/testing/corridor_log.h"
 #include "slamtune/slam/testing/engine_state.h"
 
 namespace slamtune::slam {
@@ -28,11 +30,7 @@ namespace {
 class MapperOnCorridor : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    sim::SimulationOptions o;
-    o.world = "corridor";
-    o.speed_mps = 1.0;
-    o.seed = 3;
-    log_ = std::make_shared<const io::LaserLog>(sim::Simulate(o).log);
+    log_ = std::make_shared<const io::LaserLog>(testing::SimulatedCorridorLog());
     full_ = std::make_unique<LogRunner>(log_, testing::FastMapperParams());
     full_->RunToEnd();
     // The first accepted loop and a snapshot of the engine just before its scan.
@@ -59,6 +57,17 @@ class MapperOnCorridor : public ::testing::Test {
       if (a.log_index == log_index && a.chain_first == chain_first) return &a;
     }
     return nullptr;
+  }
+
+  // The attempt on the fixture's loop when its scan is processed again, with `params`, from the
+  // snapshot just before it; nullopt when no attempt on that chain was made.
+  static std::optional<LoopAttempt> RetryLoopWith(const MapperParams& params) {
+    LogRunner runner = *before_loop_;
+    runner.SetParams(params);
+    runner.Step();
+    const LoopAttempt* a = AttemptFor(runner, loop_.log_index, loop_.chain_first);
+    if (a == nullptr) return std::nullopt;
+    return *a;
   }
 
   static std::shared_ptr<const io::LaserLog> log_;
@@ -151,23 +160,17 @@ TEST_F(MapperOnCorridor, LoopParametersChangedOnACopyAffectOnlyLaterDecisions) {
 
 TEST_F(MapperOnCorridor, CoarseResponseGateIsStrict) {
   const double s1 = loop_.coarse_response;
-  LogRunner at = *before_loop_;
   MapperParams p = testing::FastMapperParams();
   p.loop_match_minimum_response_coarse = s1;  // s1 > p fails when equal
-  at.SetParams(p);
-  at.Step();
-  const LoopAttempt* a = AttemptFor(at, loop_.log_index, loop_.chain_first);
-  ASSERT_NE(a, nullptr);
+  std::optional<LoopAttempt> a = RetryLoopWith(p);
+  ASSERT_TRUE(a.has_value());
   EXPECT_EQ(a->coarse_response, s1);
   EXPECT_FALSE(a->coarse_passed);
   EXPECT_FALSE(a->accepted);
 
-  LogRunner below = *before_loop_;
   p.loop_match_minimum_response_coarse = std::nextafter(s1, 0.0);
-  below.SetParams(p);
-  below.Step();
-  a = AttemptFor(below, loop_.log_index, loop_.chain_first);
-  ASSERT_NE(a, nullptr);
+  a = RetryLoopWith(p);
+  ASSERT_TRUE(a.has_value());
   EXPECT_TRUE(a->coarse_passed);
   EXPECT_TRUE(a->accepted);
 }
@@ -175,37 +178,25 @@ TEST_F(MapperOnCorridor, CoarseResponseGateIsStrict) {
 TEST_F(MapperOnCorridor, CoarseVarianceGateUsesQSquared) {
   const double var = std::max(loop_.coarse_covariance(0, 0), loop_.coarse_covariance(1, 1));
   MapperParams p = testing::FastMapperParams();
-  LogRunner tight = *before_loop_;
   p.loop_match_maximum_variance_coarse = std::sqrt(var) * (1.0 - 1e-9);
-  tight.SetParams(p);
-  tight.Step();
-  const LoopAttempt* a = AttemptFor(tight, loop_.log_index, loop_.chain_first);
-  ASSERT_NE(a, nullptr);
+  std::optional<LoopAttempt> a = RetryLoopWith(p);  // tight
+  ASSERT_TRUE(a.has_value());
   EXPECT_FALSE(a->coarse_passed);
-  LogRunner loose = *before_loop_;
   p.loop_match_maximum_variance_coarse = std::sqrt(var) * (1.0 + 1e-9);
-  loose.SetParams(p);
-  loose.Step();
-  a = AttemptFor(loose, loop_.log_index, loop_.chain_first);
-  ASSERT_NE(a, nullptr);
+  a = RetryLoopWith(p);  // loose
+  ASSERT_TRUE(a.has_value());
   EXPECT_TRUE(a->coarse_passed);
 }
 
 TEST_F(MapperOnCorridor, FineGateAcceptsEquality) {
-  LogRunner at = *before_loop_;
   MapperParams p = testing::FastMapperParams();
   p.loop_match_minimum_response_fine = loop_.fine_response;  // s2 >= threshold accepts
-  at.SetParams(p);
-  at.Step();
-  const LoopAttempt* a = AttemptFor(at, loop_.log_index, loop_.chain_first);
-  ASSERT_NE(a, nullptr);
+  std::optional<LoopAttempt> a = RetryLoopWith(p);
+  ASSERT_TRUE(a.has_value());
   EXPECT_TRUE(a->accepted);
-  LogRunner above = *before_loop_;
   p.loop_match_minimum_response_fine = std::nextafter(loop_.fine_response, 1.0);
-  above.SetParams(p);
-  above.Step();
-  a = AttemptFor(above, loop_.log_index, loop_.chain_first);
-  ASSERT_NE(a, nullptr);
+  a = RetryLoopWith(p);
+  ASSERT_TRUE(a.has_value());
   EXPECT_FALSE(a->accepted);
 }
 

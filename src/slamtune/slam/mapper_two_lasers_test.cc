@@ -9,10 +9,10 @@
 
 #include "slamtune/io/beam_geometry.h"
 #include "slamtune/io/carmen/carmen_reader.h"
-#include "slamtune/sim/simulation.h"
 #include "slamtune/slam/log_runner.h"
 #include "slamtune/slam/mapper.h"
 #include "slamtune/slam/testing/beam_counts.h"
+#include "slamtune/slam/testing/corridor_log.h"
 #include "slamtune/slam/testing/engine_state.h"
 
 namespace slamtune::slam {
@@ -23,11 +23,7 @@ namespace {
 class MapperWithTwoLasers : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    sim::SimulationOptions o;
-    o.world = "corridor";
-    o.speed_mps = 1.0;
-    o.seed = 3;
-    io::LaserLog log = testing::ThinEveryNthScan(sim::Simulate(o).log, 2, 2);
+    io::LaserLog log = testing::ThinEveryNthScan(testing::SimulatedCorridorLog(), 2, 2);
     io::LaserLog node = log;
     io::HarmonizeBeams(io::BeamPolicy::kPerGeometry, &log);
     io::HarmonizeBeams(io::BeamPolicy::kNode, &node);

@@ -19,12 +19,7 @@ TEST(CeresSolver, RecoversANoisyRingWithTightTolerances) {
   const SolveSummary s = CeresSolver(tight).Solve(nodes, ring.graph.edges());
   EXPECT_TRUE(s.updated) << s.termination;
   EXPECT_LT(s.final_cost, 1e-12);
-  EXPECT_EQ(nodes[0], ring.truth[0]);
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    EXPECT_NEAR(nodes[k].x, ring.truth[k].x, 1e-6) << k;
-    EXPECT_NEAR(nodes[k].y, ring.truth[k].y, 1e-6) << k;
-    EXPECT_NEAR(NormalizeAngle(nodes[k].theta - ring.truth[k].theta), 0.0, 1e-6) << k;
-  }
+  testing::ExpectRecoversRing(nodes, ring, 1e-6);
 }
 
 // slam_toolbox's loose tolerances (function_tolerance 1e-3, §7.4) stop earlier than SPA.
@@ -42,10 +37,7 @@ TEST(CeresSolver, ToolboxTolerancesStopNearTheOptimum) {
 
 TEST(CeresSolver, AgreesWithSpaOnAnInconsistentGraph) {
   auto ring = testing::MakeRingGraph(16, 3.0, 0.1, 0.05, 3);
-  PoseGraph g = ring.graph;
-  Pose2 biased = ring.truth[15];
-  biased.y += 0.3;
-  g.LinkScans(2, 15, ring.truth[2], biased, Eigen::Matrix3d::Identity() * 0.05, EdgeKind::kLoop);
+  const PoseGraph g = testing::WithBiasedLoop(ring, 2, 15, {0.0, 0.3}, 0.05);
   std::vector<Pose2> spa = g.node_values(), ceres = spa;
   SpaSolver().Solve(spa, g.edges());
   const SolveSummary s = CeresSolver().Solve(ceres, g.edges());

@@ -25,12 +25,7 @@ TEST(SpaSolver, RecoversANoisyRingWithALoopEdge) {
   EXPECT_GT(s.initial_cost, 1.0);
   EXPECT_LT(s.final_cost, 1e-12);
   EXPECT_LE(s.iterations, 40);
-  EXPECT_EQ(nodes[0], ring.truth[0]);  // fixed
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    EXPECT_NEAR(nodes[k].x, ring.truth[k].x, 1e-6) << k;
-    EXPECT_NEAR(nodes[k].y, ring.truth[k].y, 1e-6) << k;
-    EXPECT_NEAR(NormalizeAngle(nodes[k].theta - ring.truth[k].theta), 0.0, 1e-6) << k;
-  }
+  testing::ExpectRecoversRing(nodes, ring, 1e-6);
 }
 
 TEST(SpaSolver, IsDeterministicAndStopsOnSmallSteps) {
@@ -50,11 +45,8 @@ TEST(SpaSolver, IsDeterministicAndStopsOnSmallSteps) {
 
 TEST(SpaSolver, InconsistentLoopSpreadsTheErrorAndKeepsNodeZero) {
   auto ring = testing::MakeRingGraph(12, 3.0, 0.0, 0.0, 1);
-  PoseGraph g = ring.graph;
   // A second, biased loop measurement 1 -> 11 (x off by 0.5 m).
-  Pose2 biased = ring.truth[11];
-  biased.x += 0.5;
-  g.LinkScans(1, 11, ring.truth[1], biased, Eigen::Matrix3d::Identity() * 0.02, EdgeKind::kLoop);
+  const PoseGraph g = testing::WithBiasedLoop(ring, 1, 11, {0.5, 0.0}, 0.02);
   std::vector<Pose2> nodes = g.node_values();
   const SolveSummary s = SpaSolver().Solve(nodes, g.edges());
   EXPECT_TRUE(s.updated);
@@ -91,18 +83,42 @@ PoseGraph PerturbedRing(int n) {
   return g;
 }
 
+// The figures of a solve's summary that the pinned tests below fix exactly.
+struct PinnedSummary {
+  int iterations;
+  int accepted_steps;
+  double initial_cost;
+  double final_cost;
+};
+
+// A solve's outcome: the node values it wrote and its summary.
+struct RingSolve {
+  std::vector<Pose2> nodes;
+  SolveSummary summary;
+};
+
+// Solves PerturbedRing(n) with SPA and expects the summary's figures to be exactly `expected`;
+// returns the solved nodes and the summary for the test's further checks.
+RingSolve SolvePerturbedRingPinned(int n, const PinnedSummary& expected) {
+  const PoseGraph g = PerturbedRing(n);
+  RingSolve solve{g.node_values(), {}};
+  solve.summary = SpaSolver().Solve(solve.nodes, g.edges());
+  const SolveSummary& s = solve.summary;
+  EXPECT_EQ(s.iterations, expected.iterations);
+  EXPECT_EQ(s.accepted_steps, expected.accepted_steps);
+  EXPECT_EQ(s.initial_cost, expected.initial_cost);
+  EXPECT_EQ(s.final_cost, expected.final_cost);
+  return solve;
+}
+
 // The solve is pinned bit for bit: these values are what the SPA arithmetic (spa_system.h,
 // CSparse Cholesky with natural ordering below 101 rows, AMD above) produces, the arithmetic
 // that reproduces slam_karto's loop closures on mit-killian. A change in any operation order
 // shows up here.
 TEST(SpaSolver, SmallRingSolveIsPinnedBitForBit) {
-  PoseGraph g = PerturbedRing(8);  // 21 rows: natural ordering
-  std::vector<Pose2> nodes = g.node_values();
-  const SolveSummary s = SpaSolver().Solve(nodes, g.edges());
-  EXPECT_EQ(s.iterations, 5);
-  EXPECT_EQ(s.accepted_steps, 4);
-  EXPECT_EQ(s.initial_cost, 0x1.1d0c68ee4797fp+5);
-  EXPECT_EQ(s.final_cost, 0x1.302f512b6731dp-3);
+  // 21 rows: natural ordering.
+  const std::vector<Pose2> nodes =
+      SolvePerturbedRingPinned(8, {5, 4, 0x1.1d0c68ee4797fp+5, 0x1.302f512b6731dp-3}).nodes;
   const std::vector<Pose2> expected{
       {0x1p+2, 0x0p+0, 0x1.921fb54442d18p+0},
       {0x1.6b95b762977b4p+1, 0x1.6aae39b370a11p+1, 0x1.3013744bdfbc3p+1},
@@ -118,13 +134,8 @@ TEST(SpaSolver, SmallRingSolveIsPinnedBitForBit) {
 }
 
 TEST(SpaSolver, LargeRingSolveIsPinnedBitForBit) {
-  PoseGraph g = PerturbedRing(40);  // 117 rows: AMD ordering
-  std::vector<Pose2> nodes = g.node_values();
-  const SolveSummary s = SpaSolver().Solve(nodes, g.edges());
-  EXPECT_EQ(s.iterations, 8);
-  EXPECT_EQ(s.accepted_steps, 6);
-  EXPECT_EQ(s.initial_cost, 0x1.5471615c6b26fp+7);
-  EXPECT_EQ(s.final_cost, 0x1.5bf1e7d1a60eep-4);
+  // 117 rows: AMD ordering.
+  const auto [nodes, s] = SolvePerturbedRingPinned(40, {8, 6, 0x1.5471615c6b26fp+7, 0x1.5bf1e7d1a60eep-4});
   EXPECT_EQ(nodes[1], (Pose2{0x1.fa86c56b515afp+1, 0x1.41bdb7fab016p-1, 0x1.bc1b05a233a3fp+0}));
   EXPECT_EQ(nodes[20], (Pose2{-0x1.f9852b2370b27p+1, -0x1.669a84c906bcfp-3, -0x1.8be73ae4feec5p+0}));
   EXPECT_EQ(nodes[39], (Pose2{0x1.0fa814ae9c06ap+2, -0x1.41bdb7faa3a8p-1, 0x1.69139a194f4b4p+0}));

@@ -1,5 +1,7 @@
 #include "slamtune/slam/testing/ring_graph.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 
@@ -28,6 +30,25 @@ RingGraph MakeRingGraph(int n, double radius, double sigma_xy, double sigma_thet
   }
   ring.graph.LinkScans(0, n - 1, ring.truth[0], ring.truth[n - 1], cov, EdgeKind::kLoop);
   return ring;
+}
+
+PoseGraph WithBiasedLoop(const RingGraph& ring, int from, int to, const Eigen::Vector2d& bias, double variance) {
+  PoseGraph g = ring.graph;
+  Pose2 biased = ring.truth[to];
+  biased.x += bias.x();
+  biased.y += bias.y();
+  g.LinkScans(from, to, ring.truth[from], biased, Eigen::Matrix3d::Identity() * variance, EdgeKind::kLoop);
+  return g;
+}
+
+void ExpectRecoversRing(const std::vector<Pose2>& solved, const RingGraph& ring, double tolerance) {
+  ASSERT_EQ(solved.size(), ring.truth.size());
+  EXPECT_EQ(solved[0], ring.truth[0]);
+  for (std::size_t k = 0; k < solved.size(); ++k) {
+    EXPECT_NEAR(solved[k].x, ring.truth[k].x, tolerance) << k;
+    EXPECT_NEAR(solved[k].y, ring.truth[k].y, tolerance) << k;
+    EXPECT_NEAR(NormalizeAngle(solved[k].theta - ring.truth[k].theta), 0.0, tolerance) << k;
+  }
 }
 
 }  // namespace slamtune::slam::testing
