@@ -144,7 +144,10 @@ nlohmann::json OpenRun(const OptimizeSettings& settings, EvaluationStore& store,
       for (const auto& [key, value] : settings_json.items()) {
         if (!stored->contains(key) || (*stored)[key] != value) diff += (diff.empty() ? "" : ", ") + key;
       }
-      throw InputError(store.path(), 0, "--resume: the run was made with different settings (" + diff + ")");
+      throw InputError(store.path(), 0,
+                       "--resume: the run was made with different settings (" + diff +
+                           "); --resume DIR alone continues it as it was started (options that do not change "
+                           "results, such as --jobs and --quiet, may be added); other settings need a new --out");
     }
   } else {
     if (stored) {

@@ -183,6 +183,8 @@ TEST(Optimizer, ResumeRefusesDifferentSettingsAndEmptyFolders) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different settings (seed)"), std::string::npos) << e.what();
+    // What to do instead.
+    EXPECT_NE(std::string(e.what()).find("--resume DIR alone continues it"), std::string::npos) << e.what();
   }
   EvaluationStore empty(FreshStore("empty"));
   BatchEvaluator ev2(FakeSlam, &empty, 1);
