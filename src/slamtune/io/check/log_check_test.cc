@@ -8,6 +8,7 @@
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/fixtures.h"
+#include "slamtune/io/testing/straight_drive_log.h"
 
 namespace slamtune::io {
 namespace {
@@ -17,25 +18,14 @@ using slamtune::testing::FixturePath;
 // 200 scans at 5 Hz of a robot driving along x at 0.5 m/s, ODOM at 10 Hz with its speed;
 // readings up to 20 m of a 30 m laser.
 LaserLog CleanLog() {
-  LaserLog log;
+  LaserLog log = testing::StraightDriveLog({.start_s = 100.0, .odometry_records = 400, .scans = 200});
   log.path = "clean.clf";
-  for (int k = 0; k < 400; ++k) {
-    OdomRecord r;
-    r.ipc_time = 100.0 + 0.1 * k;
-    r.pose = Pose2{0.05 * k, 0.0, 0.0};
-    r.tv = 0.5;
-    log.odometry.push_back(r);
-  }
-  for (int k = 0; k < 200; ++k) {
-    LaserScanRecord s;
-    s.ipc_time = 100.0 + 0.2 * k;
+  for (LaserScanRecord& s : log.scans) {
     s.angle_min = -1.5707963267948966;
     s.angle_increment = 0.017453292519943295;
     s.max_range = 30.0;
     s.ranges.assign(181, 5.0);
     s.ranges[90] = 20.0;
-    s.robot_pose = s.laser_pose = Pose2{0.1 * k, 0.0, 0.0};
-    log.scans.push_back(s);
   }
   log.no_return_value = 30.0;
   return log;

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "slamtune/io/testing/straight_drive_log.h"
+
 namespace slamtune::io {
 namespace {
 
@@ -11,38 +13,24 @@ using ::testing::HasSubstr;
 
 // 20 s of driving along x at 0.5 m/s: ODOM at 10 Hz with its speed (`with_odometry`), scans at
 // 5 Hz posed on the same line.
-LaserLog StraightDriveLog(bool with_odometry) {
-  LaserLog log;
-  for (int k = 0; with_odometry && k < 200; ++k) {
-    OdomRecord r;
-    r.ipc_time = 10.0 + 0.1 * k;
-    r.pose = Pose2{0.05 * k, 0.0, 0.0};
-    r.tv = 0.5;
-    log.odometry.push_back(r);
-  }
-  for (int k = 0; k < 100; ++k) {
-    LaserScanRecord s;
-    s.ipc_time = 10.0 + 0.2 * k;
-    s.robot_pose = s.laser_pose = Pose2{0.1 * k, 0.0, 0.0};
-    log.scans.push_back(s);
-  }
-  return log;
+LaserLog DriveLog(bool with_odometry) {
+  return testing::StraightDriveLog({.start_s = 10.0, .odometry_records = with_odometry ? 200 : 0, .scans = 100});
 }
 
 TEST(OdometryCheck, SaysWhichOdometryItChecked) {
   CheckReport report;
-  CheckOdometry(StraightDriveLog(true), {}, &report);
+  CheckOdometry(DriveLog(true), {}, &report);
   EXPECT_THAT(report.facts, ElementsAre("odometry: 200 ODOM records, median period 0.1000 s, with velocities"));
   EXPECT_TRUE(report.problems.empty());
 
   CheckReport from_scans;
-  CheckOdometry(StraightDriveLog(false), {}, &from_scans);
+  CheckOdometry(DriveLog(false), {}, &from_scans);
   EXPECT_THAT(from_scans.facts, ElementsAre("odometry: 100 scan poses, median period 0.2000 s"));
   EXPECT_TRUE(from_scans.problems.empty());
 }
 
 TEST(OdometryCheck, AJumpIsListedAtTheScanAtOrBeforeIt) {
-  LaserLog log = StraightDriveLog(true);
+  LaserLog log = DriveLog(true);
   for (std::size_t k = 55; k < log.odometry.size(); ++k) log.odometry[k].pose.x += 2.0;  // at 15.5 s
   CheckReport report;
   CheckOdometry(log, {}, &report);
@@ -56,7 +44,7 @@ TEST(OdometryCheck, AJumpIsListedAtTheScanAtOrBeforeIt) {
 }
 
 TEST(OdometryCheck, ScanPosesAreNotCheckedForStallsOrVelocities) {
-  LaserLog log = StraightDriveLog(false);
+  LaserLog log = DriveLog(false);
   for (std::size_t k = 50; k < log.scans.size(); ++k) log.scans[k].ipc_time += 5.0;  // 5 s without scans
   CheckReport report;
   CheckOdometry(log, {}, &report);
@@ -64,7 +52,7 @@ TEST(OdometryCheck, ScanPosesAreNotCheckedForStallsOrVelocities) {
 }
 
 TEST(OdometryCheck, FewerThanTwoPosesSayNothing) {
-  LaserLog log = StraightDriveLog(false);
+  LaserLog log = DriveLog(false);
   log.scans.resize(1);
   CheckReport report;
   CheckOdometry(log, {}, &report);

@@ -75,4 +75,19 @@ void ContainerSink::EndAtBadRecord(const InputError& error, const BadRecord& bad
   DropTail(rest, bad.file_bytes, error.what(), TailKind::kCorrupt);
 }
 
+ContainerBytesReader::ContainerBytesReader(std::span<const std::uint8_t> bytes, const std::string& name,
+                                           const ContainerReadOptions& options, ContainerSink* sink)
+    : bytes_(bytes), name_(name), options_(options), sink_(sink) {
+  message_.location.file = name;
+}
+
+void ContainerBytesReader::Deliver(std::size_t topic, std::int64_t log_time_ns, std::span<const std::uint8_t> data,
+                                   std::uint64_t location) {
+  message_.topic = topic;
+  message_.log_time_ns = log_time_ns;
+  message_.data = data;
+  message_.location.value = location;
+  sink_->Deliver(message_);
+}
+
 }  // namespace slamtune::io

@@ -6,11 +6,15 @@
 // MCAP channel or ROS 1 connection they come from (several publishers on /tf are one topic).
 // With message-level compression (rosbag2 compression_mode "message", docs/recordings.md §1.1)
 // each payload is a zstd frame, decompressed here before the callback sees it.
+//
+// ContainerBytesReader is the common base of the readers that walk a file's bytes record by
+// record (MCAP, ROS 1): what they read from and into, and how they deliver a message.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -70,6 +74,29 @@ class ContainerSink {
   std::map<TopicKey, std::size_t> topic_index_;
   bool zstd_messages_ = false;
   bool in_callback_ = false;
+};
+
+// The base of the readers that walk a single file's bytes record by record (MCAP, ROS 1): the
+// bytes, the file's name (in errors and message locations), the options and the sink they read
+// into, and the delivery of a message located in that file.
+class ContainerBytesReader {
+ public:
+  // All four must outlive the reader.
+  ContainerBytesReader(std::span<const std::uint8_t> bytes, const std::string& name,
+                       const ContainerReadOptions& options, ContainerSink* sink);
+
+ protected:
+  // Hands the message `data` of `topic` (from ContainerSink::AddTopic), logged at `log_time_ns`,
+  // to the sink, located at byte `location` of the file.
+  void Deliver(std::size_t topic, std::int64_t log_time_ns, std::span<const std::uint8_t> data, std::uint64_t location);
+
+  std::span<const std::uint8_t> bytes_;
+  const std::string& name_;
+  const ContainerReadOptions& options_;
+  ContainerSink* sink_;
+
+ private:
+  RecordedMessage message_;  // filled for each delivery; its location names the file once for all
 };
 
 }  // namespace slamtune::io

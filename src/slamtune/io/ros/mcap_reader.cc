@@ -20,13 +20,9 @@ namespace {
 
 constexpr std::uint8_t kMagic[] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};  // spec "Magic"
 
-class McapReader {
+class McapReader : public ContainerBytesReader {
  public:
-  McapReader(std::span<const std::uint8_t> bytes, const std::string& name, const ContainerReadOptions& options,
-             ContainerSink* sink)
-      : bytes_(bytes), name_(name), options_(options), sink_(sink) {
-    message_.location.file = name;
-  }
+  using ContainerBytesReader::ContainerBytesReader;
 
   void Read();
 
@@ -47,13 +43,8 @@ class McapReader {
   void CheckClosingMagic(ByteCursor& cursor) const;
   void SetEnding();
 
-  std::span<const std::uint8_t> bytes_;
-  const std::string& name_;
-  const ContainerReadOptions& options_;
-  ContainerSink* sink_;
   std::unordered_map<std::uint16_t, std::string> schema_names_;    // Schema id -> name
   std::unordered_map<std::uint16_t, std::size_t> channel_topics_;  // Channel id -> topic index
-  RecordedMessage message_;
   bool header_seen_ = false;
   bool data_end_seen_ = false;
   bool footer_seen_ = false;
@@ -233,11 +224,7 @@ void McapReader::Apply(const std::vector<Item>& items, std::string_view frame, s
         }
         break;
       case Item::Kind::kMessage:
-        message_.topic = channel_topics_.at(item.id);
-        message_.log_time_ns = static_cast<std::int64_t>(item.log_time);
-        message_.data = item.data;
-        message_.location.value = location;
-        sink_->Deliver(message_);
+        Deliver(channel_topics_.at(item.id), static_cast<std::int64_t>(item.log_time), item.data, location);
         break;
       case Item::Kind::kSkipped: ++summary.skipped_records; break;
       case Item::Kind::kUnknown: ++summary.unknown_records; break;

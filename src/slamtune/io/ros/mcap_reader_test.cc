@@ -55,11 +55,7 @@ TEST(McapReaderTest, ReadsChunksOfEachCompressionWithSchemasAndChannelsKeptAcros
     EXPECT_EQ(read.messages[0].file, "m.mcap");
     const ContainerSummary& s = read.summary;
     ASSERT_EQ(s.topics.size(), 2u);
-    EXPECT_EQ(s.topics[0].name, "/scan");
-    EXPECT_EQ(s.topics[0].type, "sensor_msgs/msg/LaserScan");
-    EXPECT_EQ(s.topics[0].serialization, MessageSerialization::kCdr);
-    EXPECT_FALSE(s.topics[0].latched);
-    EXPECT_EQ(s.topics[0].messages, 3u);
+    ExpectScanTopic(s.topics[0], "sensor_msgs/msg/LaserScan", MessageSerialization::kCdr, 3);
     EXPECT_EQ(s.topics[1].type, "tf2_msgs/msg/TFMessage");
     EXPECT_TRUE(s.topics[1].latched);
     EXPECT_EQ(s.messages, 4u);

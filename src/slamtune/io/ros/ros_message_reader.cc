@@ -121,6 +121,16 @@ std::uint64_t RosMessageReader::LoadUint64(std::size_t at) const {
   return format_ == RosWireFormat::kCdrBigEndian ? first << 32 | second : second << 32 | first;
 }
 
+template <typename Float>
+Float RosMessageReader::LoadFloat(std::size_t at) const {
+  static_assert(sizeof(Float) == 4 || sizeof(Float) == 8);
+  if constexpr (sizeof(Float) == 4) {
+    return std::bit_cast<Float>(LoadUint32(at));
+  } else {
+    return std::bit_cast<Float>(LoadUint64(at));
+  }
+}
+
 std::uint32_t RosMessageReader::ReadUint32(std::string_view field) {
   return LoadUint32(ClaimPrimitive(field, 4, "uint32"));
 }
@@ -130,11 +140,11 @@ std::int32_t RosMessageReader::ReadInt32(std::string_view field) {
 }
 
 float RosMessageReader::ReadFloat32(std::string_view field) {
-  return std::bit_cast<float>(LoadUint32(ClaimPrimitive(field, 4, "float32")));
+  return LoadFloat<float>(ClaimPrimitive(field, 4, "float32"));
 }
 
 double RosMessageReader::ReadFloat64(std::string_view field) {
-  return std::bit_cast<double>(LoadUint64(ClaimPrimitive(field, 8, "float64")));
+  return LoadFloat<double>(ClaimPrimitive(field, 8, "float64"));
 }
 
 std::string RosMessageReader::ReadString(std::string_view field) {
@@ -154,25 +164,26 @@ std::string RosMessageReader::ReadString(std::string_view field) {
   return std::string(chars, length - 1);
 }
 
-std::vector<float> RosMessageReader::ReadFloat32Sequence(std::string_view field) {
+template <typename Float>
+std::vector<Float> RosMessageReader::ReadFloatSequence(std::string_view field, const char* name) {
   const std::uint32_t count = ReadUint32(field);
-  const std::size_t at = ClaimElements(field, 4, count, "float32");  // before any allocation
-  std::vector<float> values(count);
-  for (std::size_t i = 0; i < count; ++i) values[i] = std::bit_cast<float>(LoadUint32(at + 4 * i));
+  const std::size_t at = ClaimElements(field, sizeof(Float), count, name);  // before any allocation
+  std::vector<Float> values(count);
+  for (std::size_t i = 0; i < count; ++i) values[i] = LoadFloat<Float>(at + sizeof(Float) * i);
   return values;
 }
 
+std::vector<float> RosMessageReader::ReadFloat32Sequence(std::string_view field) {
+  return ReadFloatSequence<float>(field, "float32");
+}
+
 std::vector<double> RosMessageReader::ReadFloat64Sequence(std::string_view field) {
-  const std::uint32_t count = ReadUint32(field);
-  const std::size_t at = ClaimElements(field, 8, count, "float64");  // before any allocation
-  std::vector<double> values(count);
-  for (std::size_t i = 0; i < count; ++i) values[i] = std::bit_cast<double>(LoadUint64(at + 8 * i));
-  return values;
+  return ReadFloatSequence<double>(field, "float64");
 }
 
 void RosMessageReader::ReadFloat64Array(std::string_view field, std::span<double> out) {
   const std::size_t at = ClaimElements(field, 8, out.size(), "float64");
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = std::bit_cast<double>(LoadUint64(at + 8 * i));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = LoadFloat<double>(at + 8 * i);
 }
 
 std::uint32_t RosMessageReader::ReadSequenceCount(std::string_view field, std::size_t min_element_bytes) {

@@ -96,6 +96,13 @@ class RosMessageReader {
   std::size_t ClaimElements(std::string_view field, std::size_t element_size, std::uint64_t count, const char* name);
   std::uint32_t LoadUint32(std::size_t at) const;
   std::uint64_t LoadUint64(std::size_t at) const;
+  // The float32 (`Float` float) or float64 (double) at `at`, in the payload's byte order.
+  template <typename Float>
+  Float LoadFloat(std::size_t at) const;
+  // An unbounded sequence of float32 or float64 values (`name` in errors): its u32 count, then
+  // the values, all claimed before anything is allocated.
+  template <typename Float>
+  std::vector<Float> ReadFloatSequence(std::string_view field, const char* name);
 
   std::span<const std::uint8_t> data_;
   RosWireFormat format_ = RosWireFormat::kRos1;

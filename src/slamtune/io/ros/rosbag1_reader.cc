@@ -18,13 +18,9 @@ namespace {
 
 constexpr std::string_view kMagic = "#ROSBAG V2.0\n";  // Bags/Format/2.0 "Version"
 
-class Rosbag1Reader {
+class Rosbag1Reader : public ContainerBytesReader {
  public:
-  Rosbag1Reader(std::span<const std::uint8_t> bytes, const std::string& name, const ContainerReadOptions& options,
-                ContainerSink* sink)
-      : bytes_(bytes), name_(name), options_(options), sink_(sink) {
-    message_.location.file = name;
-  }
+  using ContainerBytesReader::ContainerBytesReader;
 
   void Read();
 
@@ -37,12 +33,7 @@ class Rosbag1Reader {
   void Apply(const std::vector<Item>& items, const ByteCursor& cursor, std::uint64_t location);
   void SetEnding();
 
-  std::span<const std::uint8_t> bytes_;
-  const std::string& name_;
-  const ContainerReadOptions& options_;
-  ContainerSink* sink_;
   std::unordered_map<std::uint32_t, std::size_t> connection_topics_;  // conn -> topic index
-  RecordedMessage message_;
   bool bag_header_seen_ = false;
   std::uint64_t index_pos_ = 0;
   bool index_reached_ = false;
@@ -134,13 +125,7 @@ void Rosbag1Reader::Apply(const std::vector<Item>& items, const ByteCursor& curs
       case Item::Kind::kConnection:
         if (!connection_topics_.contains(item.conn)) connection_topics_[item.conn] = sink_->AddTopic(item.topic);
         break;
-      case Item::Kind::kMessage:
-        message_.topic = connection_topics_.at(item.conn);
-        message_.log_time_ns = item.time_ns;
-        message_.data = item.data;
-        message_.location.value = location;
-        sink_->Deliver(message_);
-        break;
+      case Item::Kind::kMessage: Deliver(connection_topics_.at(item.conn), item.time_ns, item.data, location); break;
       case Item::Kind::kSkipped: ++summary.skipped_records; break;
       case Item::Kind::kUnknown: ++summary.unknown_records; break;
     }

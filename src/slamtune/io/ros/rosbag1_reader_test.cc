@@ -49,11 +49,7 @@ TEST(Rosbag1ReaderTest, ReadsChunksOfEachCompressionAndIgnoresTheIndexsRepeatedC
     EXPECT_EQ(read.messages[2].file, "b.bag");
     const ContainerSummary& s = read.summary;
     ASSERT_EQ(s.topics.size(), 2u);
-    EXPECT_EQ(s.topics[0].name, "/scan");
-    EXPECT_EQ(s.topics[0].type, "sensor_msgs/LaserScan");
-    EXPECT_EQ(s.topics[0].serialization, MessageSerialization::kRos1);
-    EXPECT_FALSE(s.topics[0].latched);
-    EXPECT_EQ(s.topics[0].messages, 2u);
+    ExpectScanTopic(s.topics[0], "sensor_msgs/LaserScan", MessageSerialization::kRos1, 2);
     EXPECT_TRUE(s.topics[1].latched);
     EXPECT_EQ(s.chunks, 2u);
     EXPECT_EQ(s.chunk_compression.at(compression), 2u);

@@ -30,11 +30,17 @@ Header ParseHeader(std::span<const std::uint8_t> bytes, const ByteCursor& outer,
   return header;
 }
 
+// An item of `kind` with the connection id that Connection and Message data records both carry.
+Item ConnectionItem(Item::Kind kind, const FieldReader& fields) {
+  Item item;
+  item.kind = kind;
+  item.conn = fields.U32("conn");
+  return item;
+}
+
 Item ParseConnection(const Record& record, const ByteCursor& cursor) {
   const FieldReader fields(record, cursor);
-  Item item;
-  item.kind = Item::Kind::kConnection;
-  item.conn = fields.U32("conn");
+  Item item = ConnectionItem(Item::Kind::kConnection, fields);
   item.topic.name = std::string(fields.String("topic"));
   item.topic.serialization = MessageSerialization::kRos1;
   // The data is a second header: topic, type, md5sum, message_definition, [callerid, latching].
@@ -49,9 +55,7 @@ Item ParseConnection(const Record& record, const ByteCursor& cursor) {
 
 Item ParseMessageData(const Record& record, const ByteCursor& cursor) {
   const FieldReader fields(record, cursor);
-  Item item;
-  item.kind = Item::Kind::kMessage;
-  item.conn = fields.U32("conn");
+  Item item = ConnectionItem(Item::Kind::kMessage, fields);
   const std::uint64_t time = fields.U64("time");  // u32 sec, then u32 nsec
   const auto sec = static_cast<std::int64_t>(time & 0xFFFFFFFFu), nsec = static_cast<std::int64_t>(time >> 32);
   item.time_ns = sec * kNanosecondsPerSecond + nsec;

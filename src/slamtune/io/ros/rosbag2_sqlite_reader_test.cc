@@ -95,11 +95,7 @@ TEST(Rosbag2SqliteReaderTest, ReadsEachSchemaVariantInTimestampThenIdOrder) {
     const ContainerSummary& s = read.summary;
     EXPECT_EQ(s.format, ContainerFormat::kRosbag2Sqlite);
     ASSERT_EQ(s.topics.size(), 2u);
-    EXPECT_EQ(s.topics[0].name, "/scan");
-    EXPECT_EQ(s.topics[0].type, "sensor_msgs/msg/LaserScan");
-    EXPECT_EQ(s.topics[0].serialization, MessageSerialization::kCdr);
-    EXPECT_FALSE(s.topics[0].latched);
-    EXPECT_EQ(s.topics[0].messages, 3u);
+    ExpectScanTopic(s.topics[0], "sensor_msgs/msg/LaserScan", MessageSerialization::kCdr, 3);
     EXPECT_EQ(s.topics[1].latched, variant.latched);
     EXPECT_EQ(s.ros_distro, variant.distro);
     EXPECT_EQ(s.messages, 4u);

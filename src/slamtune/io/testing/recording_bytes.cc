@@ -348,6 +348,15 @@ MessageCallback Collect(std::vector<Delivered>* out) {
   };
 }
 
+void ExpectScanTopic(const RecordedTopic& topic, const std::string& type, MessageSerialization serialization,
+                     std::size_t messages) {
+  EXPECT_EQ(topic.name, "/scan");
+  EXPECT_EQ(topic.type, type);
+  EXPECT_EQ(topic.serialization, serialization);
+  EXPECT_FALSE(topic.latched);
+  EXPECT_EQ(topic.messages, messages);
+}
+
 FuzzOutcome FuzzReader(const Bytes& bytes, std::size_t corruptions, const std::function<void(const Bytes&)>& read,
                        std::size_t truncation_step) {
   FuzzOutcome outcome;

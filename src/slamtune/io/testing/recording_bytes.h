@@ -135,6 +135,11 @@ struct Delivered {
 };
 MessageCallback Collect(std::vector<Delivered>* out);
 
+// Expects `topic` to be the first topic of the small recordings (SmallMcap, WriteHumbleDb3,
+// SmallRos1Bag): /scan, of `type` in `serialization`, not latched, with `messages` messages.
+void ExpectScanTopic(const RecordedTopic& topic, const std::string& type, MessageSerialization serialization,
+                     std::size_t messages);
+
 // Robustness: `read` is called on every truncation of `bytes` (lengths 0, step, 2 step, ...) and
 // on `corruptions` copies with one byte replaced (positions and values from a fixed seed).
 struct FuzzOutcome {
