@@ -4,7 +4,8 @@
 # folder equal to the uninterrupted run's file by file (the parameter files, tables, maps,
 # figures, front_end.png and front_end_map.png, report.html, results.json with its
 # base_front_end block). Every run works in the same folder path (the outputs name it) with
-# --jobs 1 (with more, the evaluations' numbering follows the order in which they finish).
+# --jobs 1 (with more, a run killed mid-generation may have finished a later set of it and not an
+# earlier one; the resumed run then lists the earlier one after it).
 # Left out of the comparison, as they legitimately differ: the run database (run.sqlite and its
 # journal: timings) and run.lock (the pid), the times measured (wall_s anywhere in results.json,
 # the wall_s column of evaluations.csv, the report's wall time), and what the process did rather
