@@ -165,8 +165,9 @@ std::string RosMessageReader::ReadString(std::string_view field) {
 }
 
 template <typename Float>
-std::vector<Float> RosMessageReader::ReadFloatSequence(std::string_view field, const char* name) {
+std::vector<Float> RosMessageReader::ReadFloatSequence(std::string_view field) {
   const std::uint32_t count = ReadUint32(field);
+  const char* name = sizeof(Float) == 4 ? "float32" : "float64";
   const std::size_t at = ClaimElements(field, sizeof(Float), count, name);  // before any allocation
   std::vector<Float> values(count);
   for (std::size_t i = 0; i < count; ++i) values[i] = LoadFloat<Float>(at + sizeof(Float) * i);
@@ -174,11 +175,11 @@ std::vector<Float> RosMessageReader::ReadFloatSequence(std::string_view field, c
 }
 
 std::vector<float> RosMessageReader::ReadFloat32Sequence(std::string_view field) {
-  return ReadFloatSequence<float>(field, "float32");
+  return ReadFloatSequence<float>(field);
 }
 
 std::vector<double> RosMessageReader::ReadFloat64Sequence(std::string_view field) {
-  return ReadFloatSequence<double>(field, "float64");
+  return ReadFloatSequence<double>(field);
 }
 
 void RosMessageReader::ReadFloat64Array(std::string_view field, std::span<double> out) {

@@ -99,10 +99,10 @@ class RosMessageReader {
   // The float32 (`Float` float) or float64 (double) at `at`, in the payload's byte order.
   template <typename Float>
   Float LoadFloat(std::size_t at) const;
-  // An unbounded sequence of float32 or float64 values (`name` in errors): its u32 count, then
-  // the values, all claimed before anything is allocated.
+  // An unbounded sequence of float32 or float64 values: its u32 count, then the values, all
+  // claimed before anything is allocated.
   template <typename Float>
-  std::vector<Float> ReadFloatSequence(std::string_view field, const char* name);
+  std::vector<Float> ReadFloatSequence(std::string_view field);
 
   std::span<const std::uint8_t> data_;
   RosWireFormat format_ = RosWireFormat::kRos1;
