@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -210,17 +210,15 @@ void FrontEndSection(HtmlPage& page, const optim::OptimizeResult& r, const Optim
   }
 }
 
-// The parameters the Candidates table shows (ParamSummary): the searched ones, or every parameter
-// of the candidates when the space is not known.
+// The parameters the Candidates table shows (SummarisedParams), each once, in first-seen order.
 std::vector<std::string> ShownParamNames(const optim::OptimizeResult& r) {
   std::vector<std::string> names;
-  for (const auto& d : r.space.dimensions) names.push_back(d.name);
-  if (!names.empty()) return names;
-  std::set<std::string> all;
-  for (const auto& c : r.candidates) {
-    for (const auto& entry : c.record.params) all.insert(entry.first);
+  for (const auto* c : CandidatesInReportOrder(r)) {
+    for (std::string& name : SummarisedParams(c->record.params, r.space)) {
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
+    }
   }
-  return {all.begin(), all.end()};
+  return names;
 }
 
 void CandidatesSection(HtmlPage& page, const optim::OptimizeResult& r, bool gt) {

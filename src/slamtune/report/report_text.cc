@@ -117,18 +117,24 @@ std::string FormatParam(double value) {
   return Readable(value, 4, 3);
 }
 
+std::vector<std::string> SummarisedParams(const std::map<std::string, double>& params,
+                                          const optim::SearchSpace& space) {
+  std::vector<std::string> names;
+  if (space.dimensions.empty()) {
+    for (const auto& entry : params) names.push_back(entry.first);
+  } else {
+    for (const auto& d : space.dimensions) {
+      if (params.contains(d.name)) names.push_back(d.name);
+    }
+  }
+  return names;
+}
+
 std::string ParamSummary(const std::map<std::string, double>& params, const optim::SearchSpace& space) {
   std::string out;
-  auto add = [&](const std::string& name) {
-    const auto it = params.find(name);
-    if (it == params.end()) return;
+  for (const std::string& name : SummarisedParams(params, space)) {
     if (!out.empty()) out += ' ';
-    out += ShortParamName(name) + "=" + FormatParam(it->second);
-  };
-  if (space.dimensions.empty()) {
-    for (const auto& [name, value] : params) add(name);
-  } else {
-    for (const auto& d : space.dimensions) add(d.name);
+    out += ShortParamName(name) + "=" + FormatParam(params.at(name));
   }
   return out;
 }

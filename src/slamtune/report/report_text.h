@@ -58,7 +58,10 @@ std::string Metres(double metres);
 // digits, at most 3 decimals: a distance to the millimetre, a response or variance to 1e-3).
 std::string FormatParam(double value);
 
-// "r=3.2 g=12" over the space's varied dimensions (all params when the space is empty).
+// The parameters ParamSummary shows: the space's varied dimensions that `params` holds, in the
+// space's order (all of `params` when the space is empty).
+std::vector<std::string> SummarisedParams(const std::map<std::string, double>& params, const optim::SearchSpace& space);
+// "r=3.2 g=12" over SummarisedParams.
 std::string ParamSummary(const std::map<std::string, double>& params, const optim::SearchSpace& space);
 
 // What ParamSummary's short symbols stand for: "r = loop_search_maximum_distance (m), g = ..." over
