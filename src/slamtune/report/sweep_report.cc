@@ -89,10 +89,7 @@ cv::Mat SweepFigure(const std::string& parameter, const std::vector<SweepPoint>&
       s.x.push_back(p.value);
       s.y.push_back(q.get(p.record));
     }
-    PlotOptions o;
-    o.width = options.panel_width;
-    o.height = options.panel_height;
-    o.font_scale = options.font_scale;
+    PlotOptions o = options.panel.Plot();
     o.title = q.title;
     o.x_label = x_label;
     o.y_label = q.title;
@@ -161,16 +158,7 @@ std::string SweepHtml(const std::string& parameter, const std::vector<SweepPoint
 
 }  // namespace
 
-void SweepReportOptions::Validate() const {
-  if (panel_width < 160)
-    throw InputError(fmt::format("SweepReportOptions.panel_width = {}: must be >= 160 px", panel_width));
-  if (panel_height < 120) {
-    throw InputError(fmt::format("SweepReportOptions.panel_height = {}: must be >= 120 px", panel_height));
-  }
-  if (!(font_scale > 0.0 && font_scale <= 4.0)) {
-    throw InputError(fmt::format("SweepReportOptions.font_scale = {}: must be in (0, 4]", font_scale));
-  }
-}
+void SweepReportOptions::Validate() const { panel.Validate("SweepReportOptions.panel"); }
 
 SweepReportSummary WriteSweepReport(const std::string& parameter, const std::vector<SweepPoint>& points,
                                     const std::string& dir, const SweepReportOptions& options) {

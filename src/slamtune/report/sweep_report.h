@@ -25,9 +25,7 @@ struct SweepPoint {
 struct SweepReportOptions {
   std::string log_path;                // shown in sweep.html; may be empty
   std::vector<std::string> log_input;  // what was read and chosen, "NAME: value" lines
-  int panel_width = 460;               // px, one panel of sweep.png, >= 160
-  int panel_height = 340;              // px, >= 120
-  double font_scale = 0.45;            // tick labels, in (0, 4]
+  PanelSize panel{460, 340, 0.45};     // one panel of sweep.png
 
   void Validate() const;
 };

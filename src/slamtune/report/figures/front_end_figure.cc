@@ -34,8 +34,8 @@ cv::Mat FrontEndFigure(const optim::BaseFrontEnd& front_end, const FigureOptions
       broke.y.push_back(s.response);
     }
   }
-  PlotOptions o = PanelOptions(options);
-  o.width = 3 * options.panel_width;
+  PlotOptions o = options.panel.Plot();
+  o.width = 3 * options.panel.width;
   o.x_label = "seconds into the log";
   o.y_label = "sequential match response";
   o.y_limits = AxisLimits{0.0, 1.0};

@@ -25,7 +25,7 @@ cv::Mat HistoryFigure(const optim::OptimizeResult& result, const FigureOptions& 
       best.x.push_back(g.generation);
       best.y.push_back(g.best[k]);  // NaN (no successful run) is skipped
     }
-    PlotOptions o = PanelOptions(options);
+    PlotOptions o = options.panel.Plot();
     o.x_limits = x_limits;
     o.x_label = "generation";
     o.x_whole_numbers = true;
@@ -42,7 +42,7 @@ cv::Mat HistoryFigure(const optim::OptimizeResult& result, const FigureOptions& 
     hv.x.push_back(g.generation);
     hv.y.push_back(g.hypervolume);
   }
-  PlotOptions o = PanelOptions(options);
+  PlotOptions o = options.panel.Plot();
   o.x_limits = x_limits;
   o.y_limits = AxisLimits{0.0, std::pow(optim::kHypervolumeReference, static_cast<double>(result.objectives.size()))};
   o.x_label = "generation";

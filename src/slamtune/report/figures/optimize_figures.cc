@@ -98,7 +98,7 @@ cv::Mat ProjectionPanels(const std::vector<PointGroup>& groups, const optim::Opt
     if (mark_candidates) {
       for (const auto& [c, v] : candidates) series.push_back(CandidateSeries(*c, v[ix], v[iy]));
     }
-    PlotOptions o = PanelOptions(options);
+    PlotOptions o = options.panel.Plot();
     o.x_limits = limits[ix];
     o.y_limits = limits[iy];
     o.x_label = ObjectiveAt(result, ix).title;
@@ -120,23 +120,8 @@ std::string FailedNote(int failed) {
 
 }  // namespace
 
-PlotOptions PanelOptions(const FigureOptions& f) {
-  PlotOptions o;
-  o.width = f.panel_width;
-  o.height = f.panel_height;
-  o.font_scale = f.font_scale;
-  return o;
-}
-
 void FigureOptions::Validate() const {
-  if (panel_width < 160)
-    throw InputError(fmt::format("FigureOptions.panel_width = {}: must be >= 160 px", panel_width));
-  if (panel_height < 120) {
-    throw InputError(fmt::format("FigureOptions.panel_height = {}: must be >= 120 px", panel_height));
-  }
-  if (!(font_scale > 0.0 && font_scale <= 4.0)) {
-    throw InputError(fmt::format("FigureOptions.font_scale = {}: must be in (0, 4]", font_scale));
-  }
+  panel.Validate("FigureOptions.panel");
   maps.Validate();
 }
 
@@ -280,7 +265,7 @@ cv::Mat ObjectiveVsErrorFigure(const std::vector<optim::EvaluationRecord>& runs,
             CandidateSeries(*c, optim::ValueOf(c->record, result.objectives.objectives()[k]), c->record.trans_mean_m));
       }
     }
-    PlotOptions o = PanelOptions(options);
+    PlotOptions o = options.panel.Plot();
     o.x_label = ObjectiveAt(result, k).title;
     o.y_label = "mean translational error (m)";
     const RankCorrelation* s = k < correlation.objectives.size() ? &correlation.objectives[k].spearman : nullptr;

@@ -37,9 +37,7 @@
 namespace slamtune::report {
 
 struct FigureOptions {
-  int panel_width = 520;               // px, width of one plot panel, >= 160
-  int panel_height = 420;              // px, height of one plot panel, >= 120
-  double font_scale = 0.45;            // tick labels; titles 1.25x; in (0, 4]
+  PanelSize panel;                     // every plot panel: 520 x 420 px, tick labels at 0.45
   MapPanelOptions maps = LargeMaps();  // the candidates' maps: 640 px high, labels readable at half size
 
   static MapPanelOptions LargeMaps() {
@@ -51,9 +49,6 @@ struct FigureOptions {
 
   void Validate() const;
 };
-
-// A plot panel of the figures' size and font (FigureOptions).
-PlotOptions PanelOptions(const FigureOptions& options);
 
 // Axis limits per objective (the result's objectives order), shared by every population
 // figure: from the best value of the non-dominated front of all snapshots' valid individuals

@@ -128,24 +128,24 @@ TEST(ParameterSpaceFigure, TwoParametersAPanelPerColouringWithTheCandidatesInEac
   const cv::Mat grid = ParameterSpaceFigure(r, f);
   ASSERT_FALSE(grid.empty());
   // Three objectives, loop closures and the shared legend: 3 + 2 cells.
-  EXPECT_EQ(grid.cols, 3 * f.panel_width + 4 * pad);
-  const int title_h = grid.rows - 2 * f.panel_height - 3 * pad;
+  EXPECT_EQ(grid.cols, 3 * f.panel.width + 4 * pad);
+  const int title_h = grid.rows - 2 * f.panel.height - 3 * pad;
   EXPECT_GT(title_h, 0);
   EXPECT_LT(title_h, 60);
   auto cell = [&](int i, int width) {
-    return cv::Rect(pad + (i % 3) * (f.panel_width + pad), title_h + pad + (i / 3) * (f.panel_height + pad), width,
-                    f.panel_height);
+    return cv::Rect(pad + (i % 3) * (f.panel.width + pad), title_h + pad + (i / 3) * (f.panel.height + pad), width,
+                    f.panel.height);
   };
   // The recommended star (vermillion) in the data area (left half) of every scatter panel.
-  for (int i = 0; i < 4; ++i) EXPECT_GT(CountColourIn(grid, cell(i, f.panel_width / 2), PaletteColour(1)), 10) << i;
-  EXPECT_GT(CountColourIn(grid, cell(4, f.panel_width), PaletteColour(1)), 0);  // and in the legend
+  for (int i = 0; i < 4; ++i) EXPECT_GT(CountColourIn(grid, cell(i, f.panel.width / 2), PaletteColour(1)), 10) << i;
+  EXPECT_GT(CountColourIn(grid, cell(4, f.panel.width), PaletteColour(1)), 0);  // and in the legend
   r.candidates.clear();
   const cv::Mat bare = ParameterSpaceFigure(r, f);
-  EXPECT_EQ(CountColourIn(bare, cell(0, f.panel_width / 2), PaletteColour(1)), 0);
+  EXPECT_EQ(CountColourIn(bare, cell(0, f.panel.width / 2), PaletteColour(1)), 0);
   // With ground truth, a fifth scatter panel fills the grid.
   const cv::Mat gt = ParameterSpaceFigure(testing::FakeOptimizeResult(true), f);
   EXPECT_EQ(gt.size(), grid.size());
-  EXPECT_GT(CountColourIn(gt, cell(4, f.panel_width / 2), PaletteColour(1)), 10);
+  EXPECT_GT(CountColourIn(gt, cell(4, f.panel.width / 2), PaletteColour(1)), 10);
 }
 
 TEST(ParameterSpaceFigure, ParallelCoordinatesForThreeParametersWithTheRecommendationDrawnThick) {
@@ -153,8 +153,8 @@ TEST(ParameterSpaceFigure, ParallelCoordinatesForThreeParametersWithTheRecommend
   optim::OptimizeResult r = WithThreeParameters();
   const cv::Mat figure = ParameterSpaceFigure(r, f);
   ASSERT_FALSE(figure.empty());
-  EXPECT_EQ(figure.cols, 3 * f.panel_width + 4 * GridOptions{}.padding);
-  EXPECT_EQ(figure.rows, f.panel_height + f.panel_height / 2);
+  EXPECT_EQ(figure.cols, 3 * f.panel.width + 4 * GridOptions{}.padding);
+  EXPECT_EQ(figure.rows, f.panel.height + f.panel.height / 2);
   const cv::Rect all(0, 0, figure.cols, figure.rows);
   const int with = CountColourIn(figure, all, PaletteColour(1));
   EXPECT_GT(with, 1000);  // a 4 px line across the figure
@@ -171,8 +171,8 @@ TEST(ObjectiveAgainstParameters, OnePanelPerParameterForEveryObjective) {
   const cv::Mat last = ObjectiveAgainstParameters(r, 2, FigureOptions{});
   ASSERT_FALSE(first.empty());
   ASSERT_FALSE(last.empty());
-  EXPECT_GT(first.cols, 2 * FigureOptions{}.panel_width);  // two panels in a row
-  EXPECT_LT(first.cols, 3 * FigureOptions{}.panel_width);
+  EXPECT_GT(first.cols, 2 * FigureOptions{}.panel.width);  // two panels in a row
+  EXPECT_LT(first.cols, 3 * FigureOptions{}.panel.width);
   EXPECT_EQ(first.size(), last.size());
   EXPECT_GT(cv::norm(first, last, cv::NORM_L1), 0.0);  // other values on the y axes
   EXPECT_TRUE(ObjectiveAgainstParameters(r, 3, FigureOptions{}).empty());
@@ -187,8 +187,8 @@ TEST(HistoryFigure, ObjectivePanelsAndTheHypervolume) {
   optim::OptimizeResult r = testing::FakeOptimizeResult(false);
   const cv::Mat figure = HistoryFigure(r, FigureOptions{});
   ASSERT_FALSE(figure.empty());
-  EXPECT_GT(figure.cols, 2 * FigureOptions{}.panel_width);  // 2 x 2 panels
-  EXPECT_GT(figure.rows, 2 * FigureOptions{}.panel_height);
+  EXPECT_GT(figure.cols, 2 * FigureOptions{}.panel.width);  // 2 x 2 panels
+  EXPECT_GT(figure.rows, 2 * FigureOptions{}.panel.height);
   r.history = {};
   EXPECT_TRUE(HistoryFigure(r, FigureOptions{}).empty());
   // A generation without any successful run leaves a gap, not an error.

@@ -161,9 +161,9 @@ cv::Mat ParallelCoordinates(const optim::OptimizeResult& result, const FigureOpt
   int above = 0;
   for (double v : values) above += v > axes.back().limits.upper ? 1 : 0;
   ParallelCoordinatesOptions o;
-  o.width = 3 * options.panel_width + 4 * GridOptions{}.padding;  // as wide as a row of three panels
-  o.height = options.panel_height + options.panel_height / 2;
-  o.font_scale = options.font_scale;
+  o.width = 3 * options.panel.width + 4 * GridOptions{}.padding;  // as wide as a row of three panels
+  o.height = options.panel.height + options.panel.height / 2;
+  o.font_scale = options.panel.font_scale;
   const std::size_t failed = result.evaluations.size() - ok.size();
   o.title = fmt::format(
       "The {} successful parameter sets across the {} searched parameters, coloured by quarters of {} "
@@ -217,7 +217,7 @@ cv::Mat ObjectiveAgainstParameters(const optim::OptimizeResult& result, std::siz
       if (!x || c.record.status != optim::RunStatus::kOk) return std::nullopt;
       return std::pair{*x, optim::ValueOf(c.record, objective_id)};
     });
-    PlotOptions o = PanelOptions(options);
+    PlotOptions o = options.panel.Plot();
     o.x_limits = SearchRangeAxis(d);
     o.y_limits = limits[k];
     o.x_label = DimensionTitle(d);

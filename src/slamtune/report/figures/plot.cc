@@ -140,6 +140,21 @@ void DrawLegend(cv::Mat& image, const std::vector<LegendEntry>& legend, cv::Poin
 
 }  // namespace
 
+void PanelSize::Validate(std::string_view owner) const {
+  RequireOption(width >= 160, fmt::format("{}.width", owner), width, "must be >= 160 px");
+  RequireOption(height >= 120, fmt::format("{}.height", owner), height, "must be >= 120 px");
+  RequireOption(font_scale > 0.0 && font_scale <= 4.0, fmt::format("{}.font_scale", owner), font_scale,
+                "must be in (0, 4]");
+}
+
+PlotOptions PanelSize::Plot() const {
+  PlotOptions o;
+  o.width = width;
+  o.height = height;
+  o.font_scale = font_scale;
+  return o;
+}
+
 void PlotOptions::Validate() const {
   RequireOption(width >= 160, "PlotOptions.width", width, "must be >= 160 px");
   RequireOption(height >= 120, "PlotOptions.height", height, "must be >= 120 px");

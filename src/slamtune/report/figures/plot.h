@@ -18,6 +18,7 @@
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "slamtune/report/figures/nice_ticks.h"
@@ -64,6 +65,18 @@ struct PlotOptions {
 
   // Throws InputError naming the field, its value and the rule.
   void Validate() const;
+};
+
+// The size and font of every plot panel of one figure grid; the title and labels differ per panel.
+struct PanelSize {
+  int width = 520;           // px, width of one plot panel, >= 160
+  int height = 420;          // px, height of one plot panel, >= 120
+  double font_scale = 0.45;  // tick labels; titles 1.25x; in (0, 4]
+
+  // Throws InputError naming `owner`.FIELD, its value and the rule.
+  void Validate(std::string_view owner) const;
+  // PlotOptions of this size and font, the rest at their defaults.
+  PlotOptions Plot() const;
 };
 
 // What RenderPlot drew, and where.

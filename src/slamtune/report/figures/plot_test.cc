@@ -1,11 +1,13 @@
 #include "slamtune/report/figures/plot.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 #include "slamtune/common/error.h"
+#include "slamtune/common/testing/error_message.h"
 
 namespace slamtune::report {
 namespace {
@@ -169,6 +171,21 @@ TEST(PlotOptions, ValidateNamesTheField) {
   PlotOptions limits;
   limits.y_limits = AxisLimits{2.0, 1.0};
   EXPECT_THROW(limits.Validate(), InputError);
+}
+
+TEST(PanelSize, ValidateNamesTheOwnersFieldAndPlotTakesSizeAndFont) {
+  PanelSize small{100, 340, 0.45};
+  EXPECT_EQ(slamtune::testing::ErrorMessageOf([&] { small.Validate("SweepReportOptions.panel"); }),
+            "SweepReportOptions.panel.width = 100: must be >= 160 px");
+  PanelSize tiny_font{460, 340, 0.0};
+  EXPECT_THAT(slamtune::testing::ErrorMessageOf([&] { tiny_font.Validate("FigureOptions.panel"); }),
+              ::testing::HasSubstr("FigureOptions.panel.font_scale = 0"));
+  const PlotOptions o = PanelSize{460, 340, 0.6}.Plot();
+  EXPECT_EQ(o.width, 460);
+  EXPECT_EQ(o.height, 340);
+  EXPECT_EQ(o.font_scale, 0.6);
+  EXPECT_TRUE(o.title.empty());
+  EXPECT_NO_THROW(PanelSize{}.Validate("FigureOptions.panel"));
 }
 
 TEST(ComposeGrid, PlacesPanelsInCells) {

@@ -311,7 +311,7 @@ cv::Mat ScatterPanel(const SpacePanel& panel, const optim::OptimizeResult& resul
     series.push_back(s);
     series.back().name.clear();
   }
-  PlotOptions o = PanelOptions(options);
+  PlotOptions o = options.panel.Plot();
   o.x_limits = pair.x_limits;
   o.y_limits = pair.y_limits;
   o.x_label = DimensionTitle(*pair.x) + UnitSuffix(ParamUnit(pair.x->name));
@@ -328,7 +328,7 @@ cv::Mat ScatterGridFigure(const optim::OptimizeResult& result, const FigureOptio
   const std::vector<SpacePanel> panels = ParameterSpacePanels(result);
   std::vector<cv::Mat> images;
   for (const SpacePanel& p : panels) images.push_back(ScatterPanel(p, result, pair, shared, options));
-  PlotOptions legend = PanelOptions(options);
+  PlotOptions legend = options.panel.Plot();
   legend.title = "In every panel";
   images.push_back(RenderLegend(shared, legend));
   GridOptions g;
