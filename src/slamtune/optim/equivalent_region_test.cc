@@ -18,13 +18,8 @@ SearchSpace Space() {
 
 // eta, n_c, n_e as given; `loops` loop closures.
 EvaluationRecord MakeRun(double r, int g, double eta, double nc, double ne, int loops) {
-  EvaluationRecord e;
-  e.key = std::to_string(r) + "/" + std::to_string(g);
+  EvaluationRecord e = testing::PaperRecord(std::to_string(r) + "/" + std::to_string(g), eta, nc, ne, loops);
   e.params = {{"loop_search_maximum_distance", r}, {"loop_match_minimum_chain_size", g}};
-  e.occupied_ratio = eta;
-  e.corner_pixels = nc;
-  e.enclosed_areas = ne;
-  e.loop_closures = loops;
   return e;
 }
 
