@@ -140,7 +140,7 @@ int RunWhole(const slamtune::optim::SlamEvaluationContext& plain, const std::str
     settings.default_assignment[d.name] = slam::GetNumeric(slam::MapperParams{}, d.name);
   }
   for (const auto& [name, value] : settings.space.fixed) settings.default_assignment[name] = value;
-  settings.log_path = label;
+  settings.source.log_label = label;
   settings.Validate();
 
   std::printf("%s: %zu scans; whole optimisation, population %zu, %u generations, %d jobs, seed %u\n", label.c_str(),

@@ -55,6 +55,16 @@ struct GenerationSnapshot {
   std::vector<std::vector<double>> objectives;  // per individual, in OptimizeResult::objectives order
 };
 
+// What the runs of one command map, as the report and results.json name it: the log (or the
+// built-in world) with what was read from it, and the ground truth.
+struct LogSource {
+  std::string log_label;               // the log's path, or "built-in world NAME (seed N)"
+  std::vector<std::string> log_input;  // what was read and chosen (io::DescribeLogInput); empty for a world
+  // The log's scans no run maps, by why: the kinds the recording decides (io/scan_losses.h).
+  io::ScanLosses scans_not_used;
+  std::string relations_label;  // the relations' path, "simulated (true trajectory)", or empty without
+};
+
 // The base configuration's run as the front end saw it, when `optimize` chose its space from it.
 struct BaseFrontEnd {
   slam::FrontEndEvidence evidence;
@@ -68,11 +78,7 @@ struct BaseFrontEnd {
 };
 
 struct OptimizeResult {
-  std::string log_path;
-  std::vector<std::string> log_input;  // what was read and chosen (recording topics, offset, beams)
-  // The log's scans no run maps, by why: the kinds the recording decides (io/scan_losses.h).
-  io::ScanLosses scans_not_used;
-  std::string relations_path;  // empty without --relations
+  LogSource source;
   SearchSpace space;
   ObjectiveSet objectives;  // what was minimised; snapshots' objective vectors follow its order
   nlohmann::json settings;  // population, generations, seed, jobs, ...

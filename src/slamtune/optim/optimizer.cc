@@ -101,8 +101,8 @@ void OptimizeSettings::Validate() const {
 }
 
 nlohmann::json OptimizeSettings::ToJson() const {
-  nlohmann::json j = {{"log", log_path},
-                      {"relations", relations_path},
+  nlohmann::json j = {{"log", source.log_label},
+                      {"relations", source.relations_label},
                       {"space", space.Fingerprint()},
                       {"default", default_assignment},
                       {"divisions", divisions},
@@ -451,10 +451,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   const auto started_at = Clock::now();
   Generations generations(settings, evaluator, store, hooks, started_at);
   OptimizeResult result;
-  result.log_path = settings.log_path;
-  result.log_input = settings.log_input;
-  result.scans_not_used = settings.scans_not_used;
-  result.relations_path = settings.relations_path;
+  result.source = settings.source;
   result.space = settings.space;
   result.objectives = settings.objectives;
   result.population = settings.population;
@@ -469,7 +466,7 @@ OptimizeResult RunOptimization(const OptimizeSettings& settings, BatchEvaluator&
   const std::vector<EvaluationRecord> final_records = RecordsOf(evaluator, settings.space, final_x);
   RequireAnySuccess(final_records, "the final population");
   ChooseAnswer(settings, final_records, evaluator, store, result);
-  if (!settings.relations_path.empty()) NameLowestError(result);
+  if (!settings.source.relations_label.empty()) NameLowestError(result);
   if (hooks.render_map) RenderCandidateMaps(hooks.render_map, result);
   result.history = StoredHistory(store, generations.done(), settings.objectives);
   const auto st = evaluator.stats();

@@ -13,8 +13,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "slamtune/io/map_image.h"
-#include "slamtune/io/scan_losses.h"
 #include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/evaluation_store.h"
 #include "slamtune/optim/objective_set.h"
@@ -26,10 +24,7 @@
 namespace slamtune::optim {
 
 struct OptimizeSettings {
-  std::string log_path;                // for the record and the --resume check
-  std::vector<std::string> log_input;  // what was read from the log and chosen, for the report
-  io::ScanLosses scans_not_used;       // the log's scans no run maps, by why (io/scan_losses.h)
-  std::string relations_path;          // empty without ground truth
+  LogSource source;  // the log and relations labels are stored for the --resume check
   SearchSpace space = SearchSpace::PaperDefault();
   ObjectiveSet objectives;        // what NSGA-III minimises and the candidates are ranked by
   Assignment default_assignment;  // the base configuration's values of the varied (and fixed) parameters

@@ -35,7 +35,7 @@ std::string FreshStore(const std::string& name) {
 
 OptimizeSettings SmallSettings() {
   OptimizeSettings s;
-  s.log_path = "fake.clf";
+  s.source.log_label = "fake.clf";
   s.population = 12;
   s.generations = 6;
   s.divisions = 4;

@@ -69,17 +69,18 @@ void FlattenSettings(const nlohmann::json& v, const std::string& prefix,
 void RunSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Run");
   std::vector<std::pair<std::string, std::string>> items = {
-      {"log", r.log_path},
+      {"log", r.source.log_label},
       {"node modelled", slam::LaunchOf(r.node_mode)},
   };
-  for (const auto& row : io::InputRows(r.log_input)) items.push_back(row);
-  items.insert(items.end(), {
-                                {"relations (ground truth)", r.relations_path.empty() ? "none" : r.relations_path},
-                                {"generations", r.settling.empty() ? std::to_string(r.generations_run) : r.settling},
-                                {"SLAM runs (evaluations)", std::to_string(r.evaluation_count)},
-                                {"requests served from the cache", std::to_string(r.cache_hits)},
-                                {"wall time", Seconds(r.wall_s)},
-                            });
+  for (const auto& row : io::InputRows(r.source.log_input)) items.push_back(row);
+  items.insert(items.end(),
+               {
+                   {"relations (ground truth)", r.source.relations_label.empty() ? "none" : r.source.relations_label},
+                   {"generations", r.settling.empty() ? std::to_string(r.generations_run) : r.settling},
+                   {"SLAM runs (evaluations)", std::to_string(r.evaluation_count)},
+                   {"requests served from the cache", std::to_string(r.cache_hits)},
+                   {"wall time", Seconds(r.wall_s)},
+               });
   if (r.population > 0) {
     items.push_back({"recommended share",
                      fmt::format("{} of {} individuals of the final population", r.recommended_share, r.population)});
@@ -418,7 +419,7 @@ void SettingsSection(HtmlPage& page, const optim::OptimizeResult& r) {
 std::string OptimizeHtml(const optim::OptimizeResult& r, const OptimizeFigures& f,
                          const std::optional<ErrorCorrelationSummary>& correlation,
                          const std::vector<std::string>& files) {
-  const std::string log_name = std::filesystem::path(r.log_path).filename().string();
+  const std::string log_name = std::filesystem::path(r.source.log_label).filename().string();
   HtmlPage page("slamtune optimize: " + log_name);
   page.Heading(1, "slamtune optimize: " + (log_name.empty() ? std::string("(no log named)") : log_name));
   FirstScreen(page, r, f);

@@ -406,7 +406,7 @@ TEST(WriteOptimizeReport, IsDeterministic) {
 
 TEST(WriteOptimizeReport, DegenerateResultStillWritesAReport) {
   optim::OptimizeResult empty;
-  empty.log_path = "x.clf";
+  empty.source.log_label = "x.clf";
   const fs::path dir = FreshDir("empty");
   const auto summary = WriteOptimizeReport(empty, dir.string());
   EXPECT_TRUE(fs::exists(dir / "report.html"));

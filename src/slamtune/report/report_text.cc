@@ -152,7 +152,7 @@ std::string ParamLegend(const std::vector<std::string>& ros_names) {
 }
 
 bool HasGroundTruth(const optim::OptimizeResult& result) {
-  if (!result.relations_path.empty()) return true;
+  if (!result.source.relations_label.empty()) return true;
   for (const auto& e : result.evaluations)
     if (e.has_gt) return true;
   for (const auto& c : result.candidates)

@@ -86,10 +86,11 @@ nlohmann::json ResultsJson(const optim::OptimizeResult& result,
       result.lowest_error_label.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.lowest_error_label);
   j["settings"] = result.settings.is_null() ? nlohmann::json::object() : result.settings;
   j["search_space"] = SearchSpaceJson(result.space);
-  j["log"] = result.log_path;
-  j["input"] = result.log_input;
-  j["scans_not_used"] = ScanLossesJson(result.scans_not_used);
-  j["relations"] = result.relations_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.relations_path);
+  j["log"] = result.source.log_label;
+  j["input"] = result.source.log_input;
+  j["scans_not_used"] = ScanLossesJson(result.source.scans_not_used);
+  j["relations"] =
+      result.source.relations_label.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.source.relations_label);
   if (result.base_front_end) {
     nlohmann::json front_end = FrontEndEvidenceJson(result.base_front_end->evidence);
     front_end["choice"] = result.base_front_end->choice;

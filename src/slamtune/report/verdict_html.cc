@@ -121,7 +121,7 @@ void EquivalentRegionSection(HtmlPage& page, const optim::OptimizeResult& r) {
 void VerdictSection(HtmlPage& page, const optim::OptimizeResult& r) {
   page.Heading(2, "Verdict");
   // Scans of the recording no run maps: the verdict holds for the rest only.
-  for (const std::string& line : r.scans_not_used.LossLines()) {
+  for (const std::string& line : r.source.scans_not_used.LossLines()) {
     const std::string what = "Not used" + line.substr(line.find(':'));
     page.Paragraph(what + ". Every map and the recommendation are made without them.", "warning");
   }

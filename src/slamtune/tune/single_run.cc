@@ -82,18 +82,18 @@ RunOutcome RunAndWrite(const RunOptions& options, Progress& progress) {
   optim::EvaluateSlam(*context, {}, &run, observers);
   if (observers.trace) observers.trace->Close();
   outcome.node_mode = input.base.node_mode;
-  outcome.relations_label = input.relations_label;
+  outcome.relations_label = input.source.relations_label;
 
   const auto write_start = std::chrono::steady_clock::now();
-  WriteMapFiles(run, input.log_label, options.out);
+  WriteMapFiles(run, input.source.log_label, options.out);
   const double map_wall_s =
       run.map_wall_s + std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
   WriteRunTables(run, options.out);
-  nlohmann::json json = RunJson(run.summary, *input.log, input.log_label, input.base, run.quality, map_wall_s);
+  nlohmann::json json = RunJson(run.summary, *input.log, input.source.log_label, input.base, run.quality, map_wall_s);
   json["lasers"] = LasersJson(run.lasers, run.summary);
-  if (!input.relations_label.empty()) {
+  if (!input.source.relations_label.empty()) {
     outcome.error = run.error;
-    json["gt_error"] = GtErrorJson(run.error, input.relations_label);
+    json["gt_error"] = GtErrorJson(run.error, input.source.relations_label);
   }
   json["front_end"] = report::FrontEndEvidenceJson(run.front_end);
   json["peak_memory_mb"] = PeakMemoryMb();

@@ -65,8 +65,8 @@ SweepOutcome RunSweep(const SweepOptions& options, TuningProcess& process, const
   CreateOutputFolder(options.out);
   process.SetupWorkers(options.inputs, {}, options.run, optim::WallDrawing::kSkip);
   if (hooks.started) {
-    hooks.started(fmt::format("sweeping {} over {} values on {} with {}", range.name, batch.size(), inputs.log_label,
-                              process.Parallelism(options.run.jobs)));
+    hooks.started(fmt::format("sweeping {} over {} values on {} with {}", range.name, batch.size(),
+                              inputs.source.log_label, process.Parallelism(options.run.jobs)));
   }
   optim::BatchEvaluator evaluator(EvaluateWith(context), nullptr, options.run.jobs);
   process.ShareWith(evaluator);
@@ -82,8 +82,8 @@ SweepOutcome RunSweep(const SweepOptions& options, TuningProcess& process, const
   for (std::size_t i = 0; i < batch.size(); ++i) out.points.push_back({batch[i].at(range.name), records[i]});
   out.with_errors = !inputs.relations.empty();
   report::SweepReportOptions report_options;
-  report_options.log_path = inputs.log_label;
-  report_options.log_input = inputs.log_input;
+  report_options.log_path = inputs.source.log_label;
+  report_options.log_input = inputs.source.log_input;
   out.report = report::WriteSweepReport(range.name, out.points, options.out, report_options);
   out.evaluations = evaluator.stats();
   out.shared_work = optim::SharedWorkReport(*context);

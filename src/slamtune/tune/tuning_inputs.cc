@@ -103,7 +103,7 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes note
   // The relations file is read before the log, which may take long; matched against it after.
   if (!options.relations.empty()) {
     in.relations = io::ReadRelations(options.relations);
-    in.relations_label = options.relations;
+    in.source.relations_label = options.relations;
   }
   if (before_log) before_log();
   if (options.log.empty()) {
@@ -112,19 +112,19 @@ TuningInputs LoadTuningInputs(const TuningInputOptions& options, InputNotes note
                    options.world_seed);
     sim::Simulation simulation = sim::Simulate(WorldOptions(options));
     in.log = std::make_shared<const io::LaserLog>(std::move(simulation.log));
-    in.log_label = fmt::format("built-in world {} (seed {})", options.world, options.world_seed);
+    in.source.log_label = fmt::format("built-in world {} (seed {})", options.world, options.world_seed);
     if (options.relations.empty()) {
       in.relations = std::move(simulation.relations);
-      in.relations_label = "simulated (true trajectory)";
+      in.source.relations_label = "simulated (true trajectory)";
     }
   } else {
     in.log = std::make_shared<const io::LaserLog>(ReadLog(options.log, options.input));
-    in.log_label = options.log;
-    in.log_input = io::DescribeLogInput(*in.log);
+    in.source.log_label = options.log;
+    in.source.log_input = io::DescribeLogInput(*in.log);
     if (notes != InputNotes::kNone) PrintLogInput(*in.log, quiet);
     io::RequireRanges(*in.log);
   }
-  in.scans_not_used = io::ReadingLosses(*in.log, slam::LaserRuleOf(in.base.node_mode));
+  in.source.scans_not_used = io::ReadingLosses(*in.log, slam::LaserRuleOf(in.base.node_mode));
   if (!options.relations.empty()) {
     const metrics::RelationMatch match = metrics::RequireMatchingRelations(*in.log, in.relations, options.relations);
     if (!quiet && !match.complete()) WarnPartialRelations(options.relations, match);

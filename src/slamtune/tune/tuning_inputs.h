@@ -16,10 +16,10 @@
 
 #include "slamtune/io/laser_log.h"
 #include "slamtune/io/relations.h"
-#include "slamtune/io/scan_losses.h"
 #include "slamtune/metrics/relation_match.h"
 #include "slamtune/optim/evaluation/batch_evaluator.h"
 #include "slamtune/optim/evaluation/slam_evaluation.h"
+#include "slamtune/optim/optimize_result.h"
 #include "slamtune/sim/simulation.h"
 #include "slamtune/slam/params/base_configuration.h"
 #include "slamtune/slam/params/mapper_params.h"
@@ -53,10 +53,9 @@ struct TuningInputs {
   std::string base_label;                               // "your configuration (FILE)", "slam_toolbox's defaults", ...
   std::string base_file_text;                           // the user's parameter file, "" without --params
   slam::RosNode base_node = slam::RosNode::kSlamKarto;  // the node the base is written for
-  std::string log_label;                                // path, or "built-in world NAME (seed N)"
-  std::string relations_label;                          // path, "simulated", or empty
-  std::vector<std::string> log_input;                   // what was read and chosen (io::DescribeLogInput)
-  io::ScanLosses scans_not_used;  // the log's scans no run maps (io::ReadingLosses for the base's node)
+  // The log's and relations' labels, what was read, and the scans no run maps (io::ReadingLosses
+  // for the base's node).
+  optim::LogSource source;
 };
 
 // "slamtune: warning: ..." on stderr for each warning of the parameter file's reading (values the

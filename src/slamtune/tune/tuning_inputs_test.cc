@@ -52,8 +52,8 @@ TEST_F(TuningInputsOnFiles, ALogItsRelationsAndAPresetLoadTogether) {
   const TuningInputs in = LoadTuningInputs(o, InputNotes::kNone);
   ASSERT_NE(in.log, nullptr);
   EXPECT_EQ(in.log->scans.size(), 300u);
-  EXPECT_EQ(in.log_label, o.log);
-  EXPECT_EQ(in.relations_label, o.relations);
+  EXPECT_EQ(in.source.log_label, o.log);
+  EXPECT_EQ(in.source.relations_label, o.relations);
   EXPECT_EQ(in.relations.size(), relations_);
   EXPECT_EQ(in.base.node_mode, slam::NodeMode::kSlamToolboxSync);
   EXPECT_EQ(in.base.loop_search_maximum_distance, 6.0);
@@ -100,8 +100,8 @@ TEST(TuningInputs, WithoutALogTheWorldIsSimulatedWithItsTrueRelations) {
   o.world = "office";
   o.world_seed = 2;
   const TuningInputs in = LoadTuningInputs(o, InputNotes::kNone);
-  EXPECT_EQ(in.log_label, "built-in world office (seed 2)");
-  EXPECT_EQ(in.relations_label, "simulated (true trajectory)");
+  EXPECT_EQ(in.source.log_label, "built-in world office (seed 2)");
+  EXPECT_EQ(in.source.relations_label, "simulated (true trajectory)");
   EXPECT_FALSE(in.relations.empty());
   EXPECT_EQ(in.base_label, "slam_karto's defaults");
   EXPECT_EQ(in.base.node_mode, slam::NodeMode::kSlamKarto);

@@ -53,8 +53,8 @@ optim::EvaluationRecord FakeRecord(double r, int g, double quality, bool with_gr
 
 optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth) {
   optim::OptimizeResult res;
-  res.log_path = "/data/logs/intel.clf.gz";
-  res.relations_path = with_ground_truth ? "/data/logs/intel.relations" : "";
+  res.source.log_label = "/data/logs/intel.clf.gz";
+  res.source.relations_label = with_ground_truth ? "/data/logs/intel.relations" : "";
   res.space = optim::SearchSpace::PaperDefault();
   res.objectives = optim::ObjectiveSet(optim::ObjectiveSetKind::kPaper);
   res.settings = {{"population", 8}, {"generations", 5}, {"seed", 42}, {"jobs", 2}};

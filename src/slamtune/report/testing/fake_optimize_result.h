@@ -7,7 +7,7 @@
 
 namespace slamtune::report::testing {
 
-// `with_ground_truth`: fill relations_path and every record's errors.
+// `with_ground_truth`: fill the relations label and every record's errors.
 optim::OptimizeResult FakeOptimizeResult(bool with_ground_truth);
 
 // A record for r, g with objectives derived from `quality` (0 best .. 1 worst).

@@ -83,7 +83,7 @@ std::string OptimizeHeadline(const optim::OptimizeSettings& settings, const Tuni
   return fmt::format(
       "optimising {} on {}: population {}, {} generations (<= {} SLAM runs), {}, "
       "seed {}; maps judged by {}; results in {}",
-      settings.space.size() == 2 ? "r and g" : "the search space", inputs.log_label, settings.population,
+      settings.space.size() == 2 ? "r and g" : "the search space", inputs.source.log_label, settings.population,
       settings.generations, total, parallelism, settings.seed, settings.objectives.Describe(), dir);
 }
 

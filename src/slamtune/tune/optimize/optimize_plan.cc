@@ -109,10 +109,7 @@ void DescribeBase(const TuningInputs& inputs, const TuningInputOptions& input_op
   }
   settings.base_label = inputs.base_label;
   settings.node_mode = inputs.base.node_mode;
-  settings.log_path = inputs.log_label;
-  settings.log_input = inputs.log_input;
-  settings.scans_not_used = inputs.scans_not_used;
-  settings.relations_path = inputs.relations_label;
+  settings.source = inputs.source;
   settings.engine = {{"inputs", input_options.ToJson()}, {"base", nlohmann::json::object()}};
   for (const auto& p : slam::ToNamedValues(inputs.base)) {
     std::visit([&](const auto& v) { settings.engine["base"][p.name] = v; }, p.value);

@@ -59,7 +59,7 @@ std::vector<std::string> Header(const Target& target, const TuningInputs& inputs
                                             slam::LaunchOf(inputs.base.node_mode));
   if (result.verdict_kind == optim::VerdictKind::kBetter) {
     lines.push_back(fmt::format("{}: the recommendation ({}) gives a cleaner map than {} on {}", tuned_for,
-                                recommended_summary, inputs.base_label, inputs.log_label));
+                                recommended_summary, inputs.base_label, inputs.source.log_label));
   } else {
     lines.push_back(
         fmt::format("{}: NOT better than {} ({}: {}); keep your values — this file is {} "
