@@ -169,6 +169,14 @@ MapImage ReadYaml(const std::string& path) {
 
 }  // namespace
 
+MapImage UniformMap(int width, int height, std::uint8_t grey) {
+  MapImage map;
+  map.width = width;
+  map.height = height;
+  map.pixels.assign(static_cast<std::size_t>(width) * height, grey);
+  return map;
+}
+
 CellClass ClassifyGrey(std::uint8_t v, bool negate, double occupied_thresh, double free_thresh) {
   // map_server: p = (255 - v) / 255 (or v / 255 with negate); occupied tested first.
   const double p = negate ? v / 255.0 : (255.0 - v) / 255.0;

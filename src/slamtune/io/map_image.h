@@ -47,6 +47,10 @@ struct MapImage {
   std::uint8_t at(int col, int row) const { return pixels[static_cast<std::size_t>(row) * width + col]; }
 };
 
+// A width x height map of one grey value (e.g. kMapUnknown, to draw the known cells on), at the
+// default resolution with its lower-left cell at the world origin.
+MapImage UniformMap(int width, int height, std::uint8_t grey);
+
 // The three classes of map_server's trinary rule.
 enum class CellClass { kOccupied, kFree, kUnknown };
 

@@ -56,6 +56,17 @@ class MapImageFileTest : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST(UniformMap, EveryCellHasTheGreyValueAtTheDefaultGeometry) {
+  const MapImage map = UniformMap(7, 3, kMapUnknown);
+  EXPECT_EQ(map.width, 7);
+  EXPECT_EQ(map.height, 3);
+  EXPECT_EQ(map.pixels, std::vector<std::uint8_t>(21, kMapUnknown));
+  EXPECT_EQ(map.resolution, kDefaultResolution);
+  EXPECT_EQ(map.origin.x, 0.0);
+  EXPECT_EQ(map.origin.y, 0.0);
+  EXPECT_NO_THROW(ValidateMapImage(map, "map"));
+}
+
 TEST(ClassifyGreyTest, FollowsMapServerRule) {
   EXPECT_EQ(ClassifyGrey(0, false, 0.65, 0.196), CellClass::kOccupied);
   EXPECT_EQ(ClassifyGrey(254, false, 0.65, 0.196), CellClass::kFree);

@@ -42,10 +42,7 @@ io::MapImage DrawSyntheticRooms(int width, int height, const std::vector<Synthet
                       room.width, room.height));
     }
   }
-  io::MapImage map;
-  map.width = width;
-  map.height = height;
-  map.pixels.assign(static_cast<std::size_t>(width) * height, io::kMapUnknown);
+  io::MapImage map = io::UniformMap(width, height, io::kMapUnknown);
   cv::Mat image(height, width, CV_8UC1, map.pixels.data());  // draws straight into the map
   for (const SyntheticRoom& room : rooms) {
     const auto corners = Corners(room);

@@ -11,13 +11,8 @@ TEST(FrontEndEvidenceJson, CarriesBothKindsOfStretchAndTheVerdict) {
   e.median_response = 0.8;
   e.breaks = 0;
   e.degenerate = 70;
-  slam::DegenerateStretch d;
-  d.first_log_index = 10;
-  d.last_log_index = 150;
-  d.matches = 70;
-  d.length_m = 34.5;
-  d.max_anisotropy = 7.5;
-  e.degenerate_stretches.push_back(d);
+  e.degenerate_stretches.push_back(
+      {.first_log_index = 10, .last_log_index = 150, .matches = 70, .length_m = 34.5, .max_anisotropy = 7.5});
   const nlohmann::json j = FrontEndEvidenceJson(e);
   EXPECT_EQ(j["sequential_matches"], 100);
   EXPECT_EQ(j["points_at_front_end"], true);

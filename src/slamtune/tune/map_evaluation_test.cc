@@ -14,10 +14,7 @@ namespace {
 
 // A 60 x 40 free room with a one-cell wall around it.
 io::MapImage Room() {
-  io::MapImage m;
-  m.width = 60;
-  m.height = 40;
-  m.pixels.assign(60 * 40, 254);
+  io::MapImage m = io::UniformMap(60, 40, io::kMapFree);
   for (int c = 0; c < 60; ++c) m.pixels[c] = m.pixels[39 * 60 + c] = 0;
   for (int r = 0; r < 40; ++r) m.pixels[r * 60] = m.pixels[r * 60 + 59] = 0;
   return m;

@@ -9,11 +9,7 @@ namespace {
 
 // A 20 x 10 m map (5 cm cells) of free space with a wall along its south side, origin (0, 0).
 io::MapImage Room() {
-  io::MapImage map;
-  map.width = 400;
-  map.height = 200;
-  map.resolution = 0.05;
-  map.pixels.assign(static_cast<std::size_t>(map.width) * map.height, 254);
+  io::MapImage map = io::UniformMap(400, 200, io::kMapFree);
   for (int col = 0; col < map.width; ++col) map.pixels[static_cast<std::size_t>(map.height - 1) * map.width + col] = 0;
   return map;
 }

@@ -9,13 +9,7 @@
 namespace slamtune::report {
 namespace {
 
-io::MapImage UnknownMap(int w, int h) {
-  io::MapImage m;
-  m.width = w;
-  m.height = h;
-  m.pixels.assign(static_cast<std::size_t>(w) * h, io::kMapUnknown);
-  return m;
-}
+io::MapImage UnknownMap(int w, int h) { return io::UniformMap(w, h, io::kMapUnknown); }
 
 TEST(KnownBounds, BoxesTheKnownCellsWithMargin) {
   io::MapImage m = UnknownMap(100, 50);

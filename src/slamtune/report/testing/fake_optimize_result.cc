@@ -5,12 +5,8 @@
 namespace slamtune::report::testing {
 
 io::MapImage FakeMap(int width, int height) {
-  io::MapImage m;
-  m.width = width;
-  m.height = height;
-  m.resolution = 0.05;
+  io::MapImage m = io::UniformMap(width, height, io::kMapUnknown);
   m.origin = {-1.0, -2.0, 0.0};
-  m.pixels.assign(static_cast<std::size_t>(width) * height, io::kMapUnknown);
   for (int r = 3; r < height - 3; ++r) {
     for (int c = 3; c < width - 3; ++c) {
       const bool wall = r == 3 || r == height - 4 || c == 3 || c == width - 4;
