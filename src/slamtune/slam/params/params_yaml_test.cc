@@ -13,8 +13,6 @@ namespace {
 using slamtune::testing::ErrorMessageOf;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using ::testing::Not;
-using ::testing::StartsWith;
 using ::testing::ThrowsMessage;
 
 TEST(ParamsYaml, ReadsRos2Nesting) {
