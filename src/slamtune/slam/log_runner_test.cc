@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <limits>
+#include <utility>
 
 #include "slamtune/common/error.h"
 #include "slamtune/io/beam_geometry.h"
@@ -23,6 +24,13 @@ io::LaserScanRecord Record(const Pose2& pose, double time, double max_range = 50
   r.laser_pose = r.robot_pose = pose;
   r.ipc_time = time;
   return r;
+}
+
+// The run of `log` with scan matching off: its nodes, skips and trajectory follow from odometry
+// alone.
+RunResult RunWithoutMatching(std::shared_ptr<const io::LaserLog> log, MapperParams params) {
+  params.use_scan_matching = false;
+  return RunLog(std::move(log), params);
 }
 
 TEST(GeometryForRecord, CapsMaxRangeAndAppliesTheThresholdRule) {
@@ -124,15 +132,12 @@ TEST(LogRunner, TrajectoryComposesOdometryOfSkippedScans) {
   // Scan 1 moves 5 cm (not enough), scan 2 moves 30 cm from scan 0 (processed), scan 3 turns a little.
   log->scans = {Record({0, 0, 0}, 1.0), Record({0.05, 0, 0}, 2.0), Record({0.3, 0, 0}, 3.0),
                 Record({0.32, 0.01, 0.05}, 4.0)};
-  MapperParams p;
-  p.use_scan_matching = false;
-  LogRunner runner(log, p);
-  runner.RunToEnd();
-  const RunSummary s = runner.Summary();
+  const RunResult run = RunWithoutMatching(log, MapperParams{});
+  const RunSummary& s = run.summary;
   EXPECT_EQ(s.nodes, 2);
   EXPECT_EQ(s.scans_not_moved, 2);
   EXPECT_EQ(s.log_duration_s, 3.0);
-  const auto t = runner.Trajectory();
+  const auto& t = run.trajectory;
   ASSERT_EQ(t.size(), 4u);
   EXPECT_EQ(t[1].time, 2.0);
   EXPECT_NEAR(t[1].pose.x, 0.05, 1e-12);
@@ -144,16 +149,14 @@ TEST(LogRunner, ThrottleKeepsEveryNthScanAsSlamKarto) {
   auto log = std::make_shared<io::LaserLog>();
   for (int i = 0; i < 9; ++i) log->scans.push_back(Record({0.5 * i, 0, 0}, i));
   MapperParams p;
-  p.use_scan_matching = false;
   p.throttle_scans = 3;
-  LogRunner runner(log, p);
-  runner.RunToEnd();
-  EXPECT_EQ(runner.Summary().scans_offered, 3);
-  EXPECT_EQ(runner.Summary().scans_refused_by_node[static_cast<int>(NodeVerdict::kThrottled)], 6);
-  EXPECT_EQ(runner.Summary().nodes, 3);
-  EXPECT_EQ(runner.Summary().loop_closures.size(), 0u);
+  const RunResult run = RunWithoutMatching(log, p);
+  EXPECT_EQ(run.summary.scans_offered, 3);
+  EXPECT_EQ(run.summary.scans_refused_by_node[static_cast<int>(NodeVerdict::kThrottled)], 6);
+  EXPECT_EQ(run.summary.nodes, 3);
+  EXPECT_EQ(run.summary.loop_closures.size(), 0u);
   // slam_karto keeps the 3rd, 6th and 9th message.
-  const std::vector<io::TimedPose> t = runner.Trajectory();
+  const std::vector<io::TimedPose>& t = run.trajectory;
   EXPECT_NEAR(t[4].pose.x, 2.0, 1e-12);
 }
 
@@ -163,23 +166,16 @@ TEST(LogRunner, SynchronousNodeKeepsRotationsFromKarto) {
   auto log = std::make_shared<io::LaserLog>();
   for (int i = 0; i < 5; ++i) log->scans.push_back(Record({1.0 * i, 0, 0}, i));
   for (int i = 5; i < 15; ++i) log->scans.push_back(Record({4.0, 0, 0.3 * (i - 4)}, i));
-  MapperParams sync = MapperParams::Preset("slam_toolbox_sync");
-  sync.use_scan_matching = false;
-  LogRunner filtered(log, sync);
-  filtered.RunToEnd();
-  const RunSummary s = filtered.Summary();
+  const RunSummary s = RunWithoutMatching(log, MapperParams::Preset("slam_toolbox_sync")).summary;
   EXPECT_EQ(s.scans_offered, 2);
   EXPECT_EQ(s.nodes, 2);
   EXPECT_EQ(s.scans_refused_by_node[static_cast<int>(NodeVerdict::kWarmingUp)], 3);
   EXPECT_EQ(s.scans_refused_by_node[static_cast<int>(NodeVerdict::kNotMoved)], 10);
   EXPECT_EQ(s.scans_refused_by_node_total(), 13);
-  MapperParams async = MapperParams::Preset("slam_toolbox");
-  async.use_scan_matching = false;
-  LogRunner every(log, async);
-  every.RunToEnd();
-  EXPECT_EQ(every.Summary().scans_offered, 15);
-  EXPECT_EQ(every.Summary().scans_refused_by_node_total(), 0);
-  EXPECT_GT(every.Summary().nodes, s.nodes);  // Karto's own heading test accepts the turns
+  const RunSummary every = RunWithoutMatching(log, MapperParams::Preset("slam_toolbox")).summary;
+  EXPECT_EQ(every.scans_offered, 15);
+  EXPECT_EQ(every.scans_refused_by_node_total(), 0);
+  EXPECT_GT(every.nodes, s.nodes);  // Karto's own heading test accepts the turns
 }
 
 // Every scan the run did not map, by why: the node's filter by verdict, Karto's travel gate, the
@@ -192,21 +188,15 @@ TEST(RunLosses, CountEveryScanNotMappedByWhy) {
   log->recording.emplace();
   log->recording->scans_unplaced = 2;
   MapperParams async = MapperParams::Preset("slam_toolbox");
-  async.use_scan_matching = false;
   async.minimum_travel_heading = 10.0;  // Karto keeps no turn on the spot
-  LogRunner runner(log, async);
-  runner.RunToEnd();
-  const io::ScanLosses losses = RunLosses(*log, runner.Summary(), async.node_mode);
+  const io::ScanLosses losses = RunLosses(*log, RunWithoutMatching(log, async).summary, async.node_mode);
   EXPECT_EQ(losses.Find(io::ScanLossKind::kNoOdometry)->count, 2u);
   EXPECT_EQ(losses.Find(io::ScanLossKind::kWrongReadingCount)->count, 1u);
   EXPECT_EQ(losses.Find(io::ScanLossKind::kFilteredByNode)->count, 0u);
   EXPECT_EQ(losses.Find(io::ScanLossKind::kNotMoved)->count, 9u);
   EXPECT_EQ(losses.kinds.size(), static_cast<std::size_t>(io::kNumScanLossKinds));
-  MapperParams sync = MapperParams::Preset("slam_toolbox_sync");
-  sync.use_scan_matching = false;
-  LogRunner filtered(log, sync);
-  filtered.RunToEnd();
-  const io::ScanLosses node = RunLosses(*log, filtered.Summary(), sync.node_mode);
+  const MapperParams sync = MapperParams::Preset("slam_toolbox_sync");
+  const io::ScanLosses node = RunLosses(*log, RunWithoutMatching(log, sync).summary, sync.node_mode);
   const io::ScanLoss& by_node = *node.Find(io::ScanLossKind::kFilteredByNode);
   EXPECT_EQ(by_node.count, 13u);
   EXPECT_EQ(by_node.by.at("warming_up"), 3u);
@@ -228,13 +218,10 @@ TEST(LogRunner, MitCsailNodeCountMatchesReferenceKarto) {
   const std::string path = std::string(SLAMTUNE_DATASETS_DIR) + "/mit-csail.clf.gz";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "dataset not available: " << path;
   auto log = std::make_shared<const io::LaserLog>(io::ReadCarmenLog(path));
-  MapperParams p;
-  p.use_scan_matching = false;
-  LogRunner runner(log, p);
-  runner.RunToEnd();
-  EXPECT_EQ(runner.Summary().scans_read, 1988);
-  EXPECT_EQ(runner.Summary().nodes, 1469);
-  EXPECT_EQ(runner.Summary().laser_max_range, 80.0);
+  const RunSummary s = RunWithoutMatching(log, MapperParams{}).summary;
+  EXPECT_EQ(s.scans_read, 1988);
+  EXPECT_EQ(s.nodes, 1469);
+  EXPECT_EQ(s.laser_max_range, 80.0);
 }
 
 // The back end's arithmetic decides loops on mit-killian (backend/spa_system.h): with r = 5.90, g = 8,

@@ -181,10 +181,8 @@ TEST(CorrelationGrid, InsertionCellIsKartoRoundOfTheWorldPoint) {
 // The grid is reused and only the written region cleared: building B after A must give the
 // bytes of a fresh grid built from B alone.
 TEST(CorrelationGrid, RebuildAfterClearEqualsFreshGrid) {
-  const auto room = testing::AsymmetricRoom();
-  const auto laser = testing::CarmenLikeLaser();
-  const LaserScan a = testing::CastScan(room, laser, {2.0, 2.0, 0.3});
-  const LaserScan b = testing::CastScan(room, laser, {8.5, 4.5, 2.5});
+  const LaserScan a = testing::AsymmetricRoomScan({2.0, 2.0, 0.3});
+  const LaserScan b = testing::AsymmetricRoomScan({8.5, 4.5, 2.5});
   const LaserScan* list_a[] = {&a};
   const LaserScan* list_b[] = {&b};
 
@@ -209,11 +207,9 @@ TEST(CorrelationGrid, RebuildAfterClearEqualsFreshGrid) {
 // beam order otherwise (§4.3 [QUIRK]): either way the bytes must be those of inserting every
 // back-face-filtered point in scan and beam order, overlapping scans and repeated cells included.
 TEST(CorrelationGrid, AddScansEqualsInsertingEveryPointInBeamOrder) {
-  const auto room = testing::AsymmetricRoom();
-  const auto laser = testing::CarmenLikeLaser();
   std::vector<LaserScan> scans;
   for (int i = 0; i < 6; ++i) {
-    scans.push_back(testing::CastScan(room, laser, {2.0 + 0.37 * i, 2.0 + 0.11 * i, 0.2 * i}));
+    scans.push_back(testing::AsymmetricRoomScan({2.0 + 0.37 * i, 2.0 + 0.11 * i, 0.2 * i}));
   }
   scans.push_back(scans.front());  // every cell of a scan repeated
   std::vector<const LaserScan*> bases;

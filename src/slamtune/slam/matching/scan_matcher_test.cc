@@ -20,23 +20,19 @@ using ::testing::ThrowsMessage;
 
 ScanMatcherOptions SequentialOptions() { return {}; }  // slam_karto defaults (§4.1 first row)
 
+// slam_karto's loop matcher (§4.1 second row).
 ScanMatcherOptions LoopOptions() {
-  ScanMatcherOptions o;
-  o.search_dimension = 8.0;
-  o.search_resolution = 0.05;
-  o.smear_deviation = 0.03;
-  return o;
+  return {.search_dimension = 8.0, .search_resolution = 0.05, .smear_deviation = 0.03};
 }
 
+// slam_toolbox's sequential matcher (§4.1 third row), with its penalties and response expansion.
 ScanMatcherOptions ToolboxOptions() {
-  ScanMatcherOptions o;
-  o.search_dimension = 0.5;
-  o.smear_deviation = 0.1;
-  o.range_threshold = 20.0;
-  o.distance_variance_penalty = 0.25;
-  o.angle_variance_penalty = 1.0;
-  o.use_response_expansion = true;
-  return o;
+  return {.search_dimension = 0.5,
+          .smear_deviation = 0.1,
+          .range_threshold = 20.0,
+          .distance_variance_penalty = 0.25,
+          .angle_variance_penalty = 1.0,
+          .use_response_expansion = true};
 }
 
 // Base scans along a short path ending 0.2 m before `truth`, and the scan taken at `truth`

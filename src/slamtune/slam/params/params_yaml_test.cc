@@ -3,6 +3,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
 #include "slamtune/slam/params/ros_node_files.h"
@@ -13,8 +17,6 @@ namespace {
 using slamtune::testing::ErrorMessageOf;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using ::testing::Not;
-using ::testing::StartsWith;
 using ::testing::ThrowsMessage;
 
 TEST(ParamsYaml, ReadsRos2Nesting) {
@@ -112,7 +114,12 @@ TEST(ParamsYaml, AConsistentMatcherSetIsTakenInAnyOrder) {
   EXPECT_EQ(p.correlation_search_space_resolution, 0.1);
 }
 
-std::string ToolboxYaml(const std::string& body) { return "slam_toolbox:\n  ros__parameters:\n" + body; }
+// A slam_toolbox parameter file holding `lines` ("key: value"), one a line.
+std::string ToolboxYaml(std::initializer_list<std::string_view> lines) {
+  std::string yaml = "slam_toolbox:\n  ros__parameters:\n";
+  for (const std::string_view line : lines) yaml.append("    ").append(line).append("\n");
+  return yaml;
+}
 
 const KeyReport& KeyOf(const ParamsYamlReport& report, const std::string& key) {
   for (const KeyReport& k : report.keys) {
@@ -124,11 +131,13 @@ const KeyReport& KeyOf(const ParamsYamlReport& report, const std::string& key) {
 TEST(ParamsYaml, CeresKeysAreReadAsTheNodeMapsThem) {
   MapperParams p = NodeDefaults(RosNode::kSlamToolbox);
   const ParamsYamlReport r = ApplyParamsYaml(p,
-                                             ToolboxYaml("    ceres_linear_solver: SPARSE_SCHUR\n"
-                                                         "    ceres_preconditioner: IDENTITY\n"
-                                                         "    ceres_trust_strategy: DOGLEG\n"
-                                                         "    ceres_dogleg_type: SUBSPACE_DOGLEG\n"
-                                                         "    ceres_loss_function: HuberLoss\n"),
+                                             ToolboxYaml({
+                                                 "ceres_linear_solver: SPARSE_SCHUR",
+                                                 "ceres_preconditioner: IDENTITY",
+                                                 "ceres_trust_strategy: DOGLEG",
+                                                 "ceres_dogleg_type: SUBSPACE_DOGLEG",
+                                                 "ceres_loss_function: HuberLoss",
+                                             }),
                                              "toolbox.yaml");
   EXPECT_EQ(p.ceres_linear_solver, CeresLinearSolver::kSparseSchur);
   EXPECT_EQ(p.ceres_preconditioner, CeresPreconditioner::kIdentity);
@@ -141,11 +150,9 @@ TEST(ParamsYaml, CeresKeysAreReadAsTheNodeMapsThem) {
   // A text the node does not know is its default, said in a warning naming file and line.
   MapperParams q = NodeDefaults(RosNode::kSlamToolbox);
   q.ceres_trust_strategy = CeresTrustStrategy::kDogleg;
-  const ParamsYamlReport unknown = ApplyParamsYaml(q,
-                                                   ToolboxYaml("    ceres_linear_solver: DENSE_QR\n"
-                                                               "    ceres_trust_strategy: LM\n"
-                                                               "    ceres_loss_function: SoftL1\n"),
-                                                   "toolbox.yaml");
+  const ParamsYamlReport unknown = ApplyParamsYaml(
+      q, ToolboxYaml({"ceres_linear_solver: DENSE_QR", "ceres_trust_strategy: LM", "ceres_loss_function: SoftL1"}),
+      "toolbox.yaml");
   EXPECT_EQ(q.ceres_linear_solver, CeresLinearSolver::kSparseNormalCholesky);
   EXPECT_EQ(q.ceres_trust_strategy, CeresTrustStrategy::kLevenbergMarquardt);  // "LM", its declared default
   EXPECT_EQ(q.ceres_loss_function, CeresLoss::kNone);
@@ -163,7 +170,7 @@ TEST(ParamsYaml, MinimumTimeIntervalIsTheSynchronousNodesFilter) {
   // Asynchronous node: read, but node-only; Karto's own interval stays 3600.
   MapperParams async = NodeDefaults(RosNode::kSlamToolbox);
   const ParamsYamlReport a =
-      ApplyParamsYaml(async, ToolboxYaml("    minimum_time_interval: 1.5\n    throttle_scans: 2\n"), "a.yaml");
+      ApplyParamsYaml(async, ToolboxYaml({"minimum_time_interval: 1.5", "throttle_scans: 2"}), "a.yaml");
   EXPECT_EQ(async.minimum_time_interval, 3600);
   EXPECT_EQ(async.sync_minimum_time_interval, 1.5);
   EXPECT_EQ(KeyOf(a, "minimum_time_interval").use, KeyUse::kNodeOnly);
@@ -172,18 +179,18 @@ TEST(ParamsYaml, MinimumTimeIntervalIsTheSynchronousNodesFilter) {
   MapperParams sync = NodeDefaults(RosNode::kSlamToolbox);
   sync.node_mode = NodeMode::kSlamToolboxSync;
   const ParamsYamlReport s =
-      ApplyParamsYaml(sync, ToolboxYaml("    minimum_time_interval: 1.5\n    throttle_scans: 2\n"), "s.yaml");
+      ApplyParamsYaml(sync, ToolboxYaml({"minimum_time_interval: 1.5", "throttle_scans: 2"}), "s.yaml");
   EXPECT_EQ(sync.sync_minimum_time_interval, 1.5);
   EXPECT_EQ(sync.throttle_scans, 2);
   EXPECT_EQ(KeyOf(s, "minimum_time_interval").use, KeyUse::kEngine);
   EXPECT_EQ(KeyOf(s, "throttle_scans").use, KeyUse::kEngine);
   // Left out, it takes transform_timeout's value, as slam_toolbox_common.cpp declares it.
   MapperParams timeout = sync;
-  const ParamsYamlReport t = ApplyParamsYaml(timeout, ToolboxYaml("    transform_timeout: 0.2\n"), "t.yaml");
+  const ParamsYamlReport t = ApplyParamsYaml(timeout, ToolboxYaml({"transform_timeout: 0.2"}), "t.yaml");
   EXPECT_EQ(timeout.sync_minimum_time_interval, 0.2);
   EXPECT_EQ(KeyOf(t, "transform_timeout").use, KeyUse::kEngine);
   MapperParams both = sync;
-  ApplyParamsYaml(both, ToolboxYaml("    transform_timeout: 0.2\n    minimum_time_interval: 0.7\n"), "b.yaml");
+  ApplyParamsYaml(both, ToolboxYaml({"transform_timeout: 0.2", "minimum_time_interval: 0.7"}), "b.yaml");
   EXPECT_EQ(both.sync_minimum_time_interval, 0.7);
 }
 
@@ -201,11 +208,13 @@ TEST(ParamsYaml, SlamKartosMinimumTimeIntervalIsNotKartos) {
 TEST(ParamsYaml, EveryKeyIsClassified) {
   MapperParams p = NodeDefaults(RosNode::kSlamToolbox);
   const ParamsYamlReport r = ApplyParamsYaml(p,
-                                             ToolboxYaml("    odom_frame: odom\n"
-                                                         "    loop_search_maximum_distance: 4.0\n"
-                                                         "    mode: localization\n"
-                                                         "    map_start_pose: [0.0, 0.0, 0.0]\n"
-                                                         "    map_update_interval: 5.0\n"),
+                                             ToolboxYaml({
+                                                 "odom_frame: odom",
+                                                 "loop_search_maximum_distance: 4.0",
+                                                 "mode: localization",
+                                                 "map_start_pose: [0.0, 0.0, 0.0]",
+                                                 "map_update_interval: 5.0",
+                                             }),
                                              "all.yaml");
   ASSERT_EQ(r.keys.size(), 5u);
   EXPECT_EQ(r.keys[0].use, KeyUse::kNodeOnly);

@@ -13,13 +13,12 @@
 namespace slamtune::slam {
 namespace {
 
-using slamtune::testing::FixturePath;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
 
 std::string ReadFixture(const std::string& name) {
-  std::ifstream in(FixturePath("params/" + name));
+  std::ifstream in(slamtune::testing::FixturePath("params/" + name));
   EXPECT_TRUE(in) << name;
   std::ostringstream text;
   text << in.rdbuf();

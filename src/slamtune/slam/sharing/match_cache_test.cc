@@ -59,6 +59,18 @@ struct ScanAndBases {
   std::vector<LaserScan> bases = {RoomScan({0, 0, 0}, 0), RoomScan({0.2, 0, 0}, 1), RoomScan({0.4, 0.1, 0}, 2)};
   std::vector<const LaserScan*> base_ptrs = {&bases[0], &bases[1], &bases[2]};
   ScanMatcherOptions options;
+
+  // The sequential match of the scan against the bases through `cache`; `matcher` computes it on
+  // a miss.
+  MatchResult CachedMatch(MatchCache& cache, ScanMatcher& matcher, Penalize penalize, Refine refine) const {
+    return cache.Match(MatchRole::kSequential, matcher, scan, base_ptrs, penalize, refine);
+  }
+
+  // The same match by a matcher of its own, without a cache: what every cached call must equal.
+  MatchResult FreshMatch(Penalize penalize, Refine refine) const {
+    ScanMatcher matcher(options);
+    return matcher.Match(scan, base_ptrs, penalize, refine);
+  }
 };
 
 TEST(MatchCacheOptions, RejectsAZeroBudget) {
@@ -85,14 +97,11 @@ TEST(MatchCache, MatchAboveStoresProofsAndMatchesPerThreshold) {
   EXPECT_EQ(asked, 1);  // the second call was served the stored proof
   const MatchResult real = cache.MatchAbove(matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes, 0.5, can);
   EXPECT_EQ(asked, 2);  // another threshold: another entry
-  ScanMatcher fresh(f.options);
-  EXPECT_TRUE(SameBits(real, fresh.Match(f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes)));
+  EXPECT_TRUE(SameBits(real, f.FreshMatch(Penalize::kNo, Refine::kYes)));
   EXPECT_TRUE(SameBits(real, cache.MatchAbove(matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes, 0.5, cannot)));
   EXPECT_EQ(asked, 2);
   // Near-chain entries are apart from plain sequential ones with the same inputs.
-  const MatchResult plain =
-      cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes);
-  EXPECT_TRUE(SameBits(plain, real));
+  EXPECT_TRUE(SameBits(f.CachedMatch(cache, matcher, Penalize::kNo, Refine::kYes), real));
   EXPECT_EQ(cache.counters().misses, 3u);
   EXPECT_EQ(cache.counters().hits, 2u);
 }
@@ -245,19 +254,14 @@ TEST(MatchCache, ReusedIdsNeverServeAnotherScansResult) {
 
 TEST(MatchCache, HitReturnsTheMatchersResult) {
   ScanAndBases f;
-  ScanMatcher reference(f.options);
-  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
+  const MatchResult expected = f.FreshMatch(Penalize::kYes, Refine::kYes);
   MatchCache cache;
   ScanMatcher a(f.options);
   ScanMatcher b(f.options);
-  EXPECT_TRUE(
-      SameBits(cache.Match(MatchRole::kSequential, a, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes), expected));
-  EXPECT_TRUE(
-      SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes), expected));
+  EXPECT_TRUE(SameBits(f.CachedMatch(cache, a, Penalize::kYes, Refine::kYes), expected));
+  EXPECT_TRUE(SameBits(f.CachedMatch(cache, b, Penalize::kYes, Refine::kYes), expected));
   // Another flag combination is another entry.
-  const MatchResult coarse = reference.Match(f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);
-  EXPECT_TRUE(
-      SameBits(cache.Match(MatchRole::kSequential, b, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo), coarse));
+  EXPECT_TRUE(SameBits(f.CachedMatch(cache, b, Penalize::kNo, Refine::kNo), f.FreshMatch(Penalize::kNo, Refine::kNo)));
   const MatchCacheCounters c = cache.counters();
   EXPECT_EQ(c.misses, 2u);
   EXPECT_EQ(c.hits, 1u);
@@ -268,8 +272,7 @@ TEST(MatchCache, HitReturnsTheMatchersResult) {
 
 TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
   ScanAndBases f;
-  ScanMatcher reference(f.options);
-  const MatchResult expected = reference.Match(f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
+  const MatchResult expected = f.FreshMatch(Penalize::kYes, Refine::kYes);
   MatchCache cache;
   constexpr int kThreads = 4;
   std::vector<MatchResult> results(kThreads);
@@ -277,7 +280,7 @@ TEST(MatchCache, ConcurrentRequestsForOneKeyComputeOnce) {
   for (int t = 0; t < kThreads; ++t) {
     threads.emplace_back([&, t] {
       ScanMatcher matcher(f.options);
-      results[t] = cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kYes);
+      results[t] = f.CachedMatch(cache, matcher, Penalize::kYes, Refine::kYes);
     });
   }
   for (std::thread& t : threads) t.join();
@@ -292,13 +295,11 @@ TEST(MatchCache, EvictionNeverChangesResults) {
   MatchCacheOptions o;
   o.byte_budget = 1;  // every insertion evicts
   MatchCache cache(o);
-  ScanMatcher reference(f.options);
   ScanMatcher matcher(f.options);
   for (int round = 0; round < 2; ++round) {
     for (Penalize penalize : {Penalize::kNo, Penalize::kYes}) {
-      const MatchResult expected = reference.Match(f.scan, f.base_ptrs, penalize, Refine::kYes);
-      EXPECT_TRUE(SameBits(cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, penalize, Refine::kYes),
-                           expected));
+      EXPECT_TRUE(
+          SameBits(f.CachedMatch(cache, matcher, penalize, Refine::kYes), f.FreshMatch(penalize, Refine::kYes)));
     }
   }
   const MatchCacheCounters c = cache.counters();
@@ -316,24 +317,24 @@ TEST(MatchCache, EvictionKeepsRecentlyUsedEntries) {
   std::size_t two_entries = 0;
   {
     MatchCache probe;
-    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);
-    probe.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo);
+    f.CachedMatch(probe, matcher, Penalize::kNo, Refine::kNo);
+    f.CachedMatch(probe, matcher, Penalize::kYes, Refine::kNo);
     two_entries = probe.counters().bytes;
   }
   MatchCacheOptions o;
   o.byte_budget = two_entries + 8;  // a third entry evicts
   MatchCache cache(o);
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);   // A
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo);  // B
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);   // A used again
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kYes);  // C: evicts B
+  f.CachedMatch(cache, matcher, Penalize::kNo, Refine::kNo);   // A
+  f.CachedMatch(cache, matcher, Penalize::kYes, Refine::kNo);  // B
+  f.CachedMatch(cache, matcher, Penalize::kNo, Refine::kNo);   // A used again
+  f.CachedMatch(cache, matcher, Penalize::kNo, Refine::kYes);  // C: evicts B
   MatchCacheCounters c = cache.counters();
   EXPECT_EQ(c.misses, 3u);
   EXPECT_EQ(c.hits, 1u);
   EXPECT_GE(c.evictions, 1u);
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kNo, Refine::kNo);  // A: still there
+  f.CachedMatch(cache, matcher, Penalize::kNo, Refine::kNo);  // A: still there
   EXPECT_EQ(cache.counters().hits, 2u);
-  cache.Match(MatchRole::kSequential, matcher, f.scan, f.base_ptrs, Penalize::kYes, Refine::kNo);  // B: gone
+  f.CachedMatch(cache, matcher, Penalize::kYes, Refine::kNo);  // B: gone
   EXPECT_EQ(cache.counters().misses, 4u);
 }
 

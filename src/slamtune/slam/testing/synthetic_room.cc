@@ -63,4 +63,10 @@ LaserScan CastScan(const std::vector<WallSegment>& walls, const std::shared_ptr<
   return LaserScan(laser, std::move(ranges), sensor_pose, 0.0);
 }
 
+LaserScan AsymmetricRoomScan(const Pose2& sensor_pose) {
+  static const std::vector<WallSegment> room = AsymmetricRoom();
+  static const std::shared_ptr<const LaserGeometry> laser = CarmenLikeLaser();
+  return CastScan(room, laser, sensor_pose);
+}
+
 }  // namespace slamtune::slam::testing

@@ -29,4 +29,8 @@ std::shared_ptr<const LaserGeometry> CarmenLikeLaser(int beams = 180);
 LaserScan CastScan(const std::vector<WallSegment>& walls, const std::shared_ptr<const LaserGeometry>& laser,
                    const Pose2& sensor_pose, double no_return = 81.83);
 
+// CastScan() in AsymmetricRoom() with CarmenLikeLaser(), the scene most matcher tests use. All
+// these scans share one geometry object, as the scans of one laser do.
+LaserScan AsymmetricRoomScan(const Pose2& sensor_pose);
+
 }  // namespace slamtune::slam::testing

@@ -20,14 +20,11 @@ struct LoopPass {
   std::vector<double> response;  // sum -> response, as the matcher's table
 
   explicit LoopPass(const Pose2& query_pose) {
-    const auto room = testing::AsymmetricRoom();
-    const auto laser = testing::CarmenLikeLaser();
     std::vector<LaserScan> base;
-    for (int i = 0; i < 10; ++i)
-      base.push_back(testing::CastScan(room, laser, {2.0 + 0.5 * i, 1.5 + 0.3 * i, 0.4 * i}));
+    for (int i = 0; i < 10; ++i) base.push_back(testing::AsymmetricRoomScan({2.0 + 0.5 * i, 1.5 + 0.3 * i, 0.4 * i}));
     std::vector<const LaserScan*> ptrs;
     for (const LaserScan& s : base) ptrs.push_back(&s);
-    const LaserScan query = testing::CastScan(room, laser, query_pose);
+    const LaserScan query = testing::AsymmetricRoomScan(query_pose);
     grid.SetRoiOrigin({query_pose.x - 320 * 0.05, query_pose.y - 320 * 0.05});
     grid.AddScans(ptrs, {query_pose.x, query_pose.y});
     table.Compute(query, query_pose.theta, 0.349066, 0.0349066, grid.roi_origin(), grid.scale(),

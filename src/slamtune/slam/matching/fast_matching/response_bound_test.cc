@@ -42,8 +42,6 @@ double CheckCase(ScanMatcher& matcher, ResponseBound& bound, const LaserScan& sc
 }
 
 TEST(ResponseBound, NeverBelowTheBestResponseInTheSyntheticRoom) {
-  const auto walls = testing::AsymmetricRoom();
-  const auto laser = testing::CarmenLikeLaser();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> x(1.0, 9.0), y(1.0, 7.0), heading(-3.1, 3.1);
   std::uniform_real_distribution<double> jitter(-0.12, 0.12), turn(-0.3, 0.3);
@@ -55,13 +53,12 @@ TEST(ResponseBound, NeverBelowTheBestResponseInTheSyntheticRoom) {
       const Pose2 truth{x(rng), y(rng), heading(rng)};
       // The scan at a perturbed pose; a chain of 3 scans taken elsewhere in the room, so
       // that the overlap ranges from none to most of the view.
-      LaserScan scan = testing::CastScan(walls, laser, truth);
+      LaserScan scan = testing::AsymmetricRoomScan(truth);
       scan.SetSensorPose({truth.x + jitter(rng), truth.y + jitter(rng), truth.theta + turn(rng)});
       const Pose2 elsewhere{x(rng), y(rng), heading(rng)};
       std::vector<LaserScan> chain;
       for (int k = 0; k < 3; ++k) {
-        chain.push_back(
-            testing::CastScan(walls, laser, {elsewhere.x + 0.2 * k, elsewhere.y, elsewhere.theta + 0.1 * k}));
+        chain.push_back(testing::AsymmetricRoomScan({elsewhere.x + 0.2 * k, elsewhere.y, elsewhere.theta + 0.1 * k}));
       }
       std::vector<const LaserScan*> base;
       for (const LaserScan& c : chain) base.push_back(&c);
@@ -97,11 +94,9 @@ TEST(ResponseBound, NeverBelowTheBestResponseOnAnIntelSlice) {
 }
 
 TEST(ResponseBound, AChainOutOfReachProvesRejection) {
-  const auto walls = testing::AsymmetricRoom();
-  const auto laser = testing::CarmenLikeLaser();
-  const LaserScan scan = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
+  const LaserScan scan = testing::AsymmetricRoomScan({5.0, 4.0, 0.3});
   // The same room seen from a pose 30 m away: no chain point lies in the grid.
-  LaserScan far = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
+  LaserScan far = testing::AsymmetricRoomScan({5.0, 4.0, 0.3});
   far.SetSensorPose({35.0, 4.0, 0.3});
   ScanMatcher matcher(KartoSequential());
   ResponseBound bound(KartoSequential());
@@ -109,7 +104,7 @@ TEST(ResponseBound, AChainOutOfReachProvesRejection) {
   EXPECT_FALSE(bound.MayExceed(scan, base, 0.1));
   EXPECT_EQ(matcher.Match(scan, base, Penalize::kNo, Refine::kYes).response, 0.0);
   // Seen from its own pose, the chain matches perfectly and the bound cannot rule it out.
-  const LaserScan same = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
+  const LaserScan same = testing::AsymmetricRoomScan({5.0, 4.0, 0.3});
   const std::vector<const LaserScan*> near{&same};
   EXPECT_TRUE(bound.MayExceed(scan, near, 0.8 - 1e-6));
   EXPECT_GT(matcher.Match(scan, near, Penalize::kNo, Refine::kYes).response, 0.8);
@@ -141,10 +136,8 @@ TEST(ResponseBound, AHeadingRangeOfHalfATurnOrMoreIsNotBounded) {
   ScanMatcherOptions o = KartoSequential();
   o.coarse_angle_offset = 1.6;  // +-1.6 rad: the coarse mean heading is no longer confined
   ResponseBound bound(o);
-  const auto walls = testing::AsymmetricRoom();
-  const auto laser = testing::CarmenLikeLaser();
-  const LaserScan scan = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
-  LaserScan far = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
+  const LaserScan scan = testing::AsymmetricRoomScan({5.0, 4.0, 0.3});
+  LaserScan far = testing::AsymmetricRoomScan({5.0, 4.0, 0.3});
   far.SetSensorPose({35.0, 4.0, 0.3});
   const std::vector<const LaserScan*> base{&far};
   EXPECT_TRUE(bound.MayExceed(scan, base, 0.5));
@@ -152,9 +145,7 @@ TEST(ResponseBound, AHeadingRangeOfHalfATurnOrMoreIsNotBounded) {
 }
 
 TEST(ResponseBound, AThresholdOfOneOrMoreIsNeverReached) {
-  const auto walls = testing::AsymmetricRoom();
-  const auto laser = testing::CarmenLikeLaser();
-  const LaserScan scan = testing::CastScan(walls, laser, {5.0, 4.0, 0.3});
+  const LaserScan scan = testing::AsymmetricRoomScan({5.0, 4.0, 0.3});
   const std::vector<const LaserScan*> base{&scan};
   ResponseBound bound(KartoSequential());
   EXPECT_TRUE(bound.MayExceed(scan, base, 0.99));
