@@ -19,7 +19,6 @@ namespace slamtune::io {
 namespace {
 
 namespace fs = std::filesystem;
-using slamtune::testing::ErrorMessageOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
@@ -286,11 +285,11 @@ TEST_F(MapImageFileTest, TruncatedImagesAreOneErrorWithNothingPrinted) {
     const std::string bytes((std::istreambuf_iterator<char>(in)), {});
     WriteText("cut_" + name, bytes.substr(0, bytes.size() - 10));
     ::testing::internal::CaptureStderr();
-    const std::string error = ErrorMessageOf([&] { ReadMap(Path("cut_" + name)); });
+    const std::string error = slamtune::testing::ErrorMessageOf([&] { ReadMap(Path("cut_" + name)); });
     EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << name;
     EXPECT_THAT(error, HasSubstr(Path("cut_" + name) + ": ")) << name;
   }
-  EXPECT_EQ(ErrorMessageOf([&] { ReadMap(WriteText("huge.pgm", "P5\n70000 70000\n255\n\x01")); }),
+  EXPECT_EQ(slamtune::testing::ErrorMessageOf([&] { ReadMap(WriteText("huge.pgm", "P5\n70000 70000\n255\n\x01")); }),
             Path("huge.pgm") + ": declares 70000 x 70000 pixels, more than the 1073741824 an image may have");
 }
 

@@ -3,18 +3,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <source_location>
+
 #include "slamtune/common/error.h"
-#include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/io/testing/read_error.h"
 
 namespace slamtune::io {
 namespace {
 
-using slamtune::testing::ErrorMessageOf;
-using slamtune::testing::TempFilePath;
 using slamtune::testing::WriteTempFile;
 using ::testing::HasSubstr;
-using ::testing::ThrowsMessage;
 
 TEST(RelationsTest, ReadsFreiburgLinesAndComments) {
   const std::string path = WriteTempFile("relations_test", "ok",
@@ -42,7 +41,7 @@ TEST(RelationsTest, ByteOrderMarkDoesNotHideTheFirstRelation) {
 TEST(RelationsTest, RoundTripIsExact) {
   std::vector<Relation> relations = {{1134864643.12418, 1134864650.5, {0.1 + 0.2, -1.0 / 3.0, 2.0 / 7.0}, 0},
                                      {5.0, 6.0, {1e-17, 123456.789, -kPi}, 0}};
-  const std::string path = TempFilePath("relations_test", "roundtrip");
+  const std::string path = slamtune::testing::TempFilePath("relations_test", "roundtrip");
   WriteRelations(path, relations);
   const auto back = ReadRelations(path);
   ASSERT_EQ(back.size(), relations.size());
@@ -58,34 +57,35 @@ TEST(RelationsTest, EmptyFileGivesEmptyList) {
   EXPECT_TRUE(ReadRelations(WriteTempFile("relations_test", "empty", "")).empty());
 }
 
+// The error for a file holding `text`, after the file's path.
+std::string ErrorFor(const std::string& name, const std::string& text,
+                     std::source_location where = std::source_location::current()) {
+  return testing::ErrorAfterPath(ReadRelations, "relations_test", name, text, where);
+}
+
 TEST(RelationsTest, WrongColumnCountNamesFileAndLine) {
-  const std::string path = WriteTempFile("relations_test", "cols", "1 2 0 0 0 0 0 0\n1 2 3\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }),
-            path + ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
+  EXPECT_EQ(ErrorFor("cols", "1 2 0 0 0 0 0 0\n1 2 3\n"),
+            ":2: expected 8 columns (t1 t2 x y z roll pitch yaw), found 3");
 }
 
 TEST(RelationsTest, NonNumberIsRejected) {
-  const std::string path = WriteTempFile("relations_test", "nonnum", "1 2 abc 0 0 0 0 0\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(path); }), path + ":1: column 3 (x) is not a number: 'abc'");
+  EXPECT_EQ(ErrorFor("nonnum", "1 2 abc 0 0 0 0 0\n"), ":1: column 3 (x) is not a number: 'abc'");
 }
 
 TEST(RelationsTest, NanAndInfAreRejected) {
-  const std::string nan_path = WriteTempFile("relations_test", "nan", "1 2 0 0 0 0 0 nan\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(nan_path); }), nan_path + ":1: column 8 (yaw) is not finite: nan");
-  const std::string inf_path = WriteTempFile("relations_test", "inf", "# c\ninf 2 0 0 0 0 0 0\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadRelations(inf_path); }), inf_path + ":2: column 1 (t1) is not finite: inf");
+  EXPECT_EQ(ErrorFor("nan", "1 2 0 0 0 0 0 nan\n"), ":1: column 8 (yaw) is not finite: nan");
+  EXPECT_EQ(ErrorFor("inf", "# c\ninf 2 0 0 0 0 0 0\n"), ":2: column 1 (t1) is not finite: inf");
 }
 
 TEST(RelationsTest, TruncatedLastLineIsReported) {
-  const std::string path = WriteTempFile("relations_test", "trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
-  const std::string error = ErrorMessageOf([&] { ReadRelations(path); });
+  const std::string error = ErrorFor("trunc", "1 2 0 0 0 0 0 0\n3 4 0.5");
   EXPECT_THAT(error, HasSubstr(":2: expected 8 columns"));
   EXPECT_THAT(error, HasSubstr("truncated last line"));
 }
 
 TEST(RelationsTest, UnreadableAndUnwritablePathsThrow) {
   EXPECT_THAT([] { ReadRelations("/nonexistent/dir/x.relations"); },
-              ThrowsMessage<InputError>(HasSubstr("/nonexistent/dir/x.relations: cannot open")));
+              ::testing::ThrowsMessage<InputError>(HasSubstr("/nonexistent/dir/x.relations: cannot open")));
   EXPECT_THROW(WriteRelations("/nonexistent/dir/x.relations", {}), InputError);
 }
 

@@ -3,18 +3,16 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <source_location>
+
 #include "slamtune/common/error.h"
-#include "slamtune/common/testing/error_message.h"
 #include "slamtune/common/testing/temp_dir.h"
+#include "slamtune/io/testing/read_error.h"
 
 namespace slamtune::io {
 namespace {
 
-using slamtune::testing::ErrorMessageOf;
-using slamtune::testing::TempFilePath;
 using slamtune::testing::WriteTempFile;
-using ::testing::HasSubstr;
-using ::testing::ThrowsMessage;
 
 TEST(TrajectoryTest, ReadsPosesAndSkipsComments) {
   const auto poses = ReadTrajectory(
@@ -28,7 +26,7 @@ TEST(TrajectoryTest, ReadsPosesAndSkipsComments) {
 TEST(TrajectoryTest, RoundTripKeepsMicrosecondsAndNineDigits) {
   const std::vector<TimedPose> poses = {{976052857.337284, {12.3456789, -0.000123456789, 3.14159265}},
                                         {1134864629.895182, {-45.6789012, 7.0, -1.23456789}}};
-  const std::string path = TempFilePath("trajectory_test", "roundtrip");
+  const std::string path = slamtune::testing::TempFilePath("trajectory_test", "roundtrip");
   WriteTrajectory(path, poses);
   const auto back = ReadTrajectory(path);
   ASSERT_EQ(back.size(), poses.size());
@@ -40,33 +38,28 @@ TEST(TrajectoryTest, RoundTripKeepsMicrosecondsAndNineDigits) {
   }
 }
 
+// The error for a file holding `text`, after the file's path.
+std::string ErrorFor(const std::string& name, const std::string& text,
+                     std::source_location where = std::source_location::current()) {
+  return testing::ErrorAfterPath(ReadTrajectory, "trajectory_test", name, text, where);
+}
+
 TEST(TrajectoryTest, ErrorsNameFileLineAndProblem) {
-  const std::string cols = WriteTempFile("trajectory_test", "cols", "1 0 0 0\n2 0 0\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(cols); }),
-            cols + ":2: expected 4 columns (timestamp x y theta), found 3");
-  const std::string text = WriteTempFile("trajectory_test", "text", "1 0 zero 0\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(text); }), text + ":1: column 3 (y) is not a number: 'zero'");
-  const std::string nan = WriteTempFile("trajectory_test", "nan", "1 0 0 0\n2 0 0 -nan\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(nan); }), nan + ":2: column 4 (theta) is not finite: -nan");
-  const std::string inf = WriteTempFile("trajectory_test", "inf", "-inf 0 0 0\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(inf); }), inf + ":1: column 1 (timestamp) is not finite: -inf");
+  EXPECT_EQ(ErrorFor("cols", "1 0 0 0\n2 0 0\n"), ":2: expected 4 columns (timestamp x y theta), found 3");
+  EXPECT_EQ(ErrorFor("text", "1 0 zero 0\n"), ":1: column 3 (y) is not a number: 'zero'");
+  EXPECT_EQ(ErrorFor("nan", "1 0 0 0\n2 0 0 -nan\n"), ":2: column 4 (theta) is not finite: -nan");
+  EXPECT_EQ(ErrorFor("inf", "-inf 0 0 0\n"), ":1: column 1 (timestamp) is not finite: -inf");
   EXPECT_THAT([] { ReadTrajectory("/nonexistent/t.txt"); },
-              ThrowsMessage<InputError>(HasSubstr("/nonexistent/t.txt: cannot open")));
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("/nonexistent/t.txt: cannot open")));
 }
 
 TEST(TrajectoryTest, TwoDifferentPosesWithOneTimestampNameTheSecondLine) {
-  const std::string two =
-      WriteTempFile("trajectory_test", "two", "# t x y theta\n10.5 1 2 0.5\n11 0 0 0\n10.5 1 2.5 0.5\n");
-  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(two); }),
-            two +
-                ":4: second pose for timestamp 10.5 (line 2 has 1 2 0.5, this line 1 2.5 0.5): a "
-                "trajectory needs one pose per timestamp");
-  const std::string spelled =
-      WriteTempFile("trajectory_test", "spelled", "7.000000 0 0 0\n7 0 0 0.25\n");  // same time, other text
-  EXPECT_EQ(ErrorMessageOf([&] { ReadTrajectory(spelled); }),
-            spelled +
-                ":2: second pose for timestamp 7 (line 1 has 0 0 0, this line 0 0 0.25): a "
-                "trajectory needs one pose per timestamp");
+  EXPECT_EQ(ErrorFor("two", "# t x y theta\n10.5 1 2 0.5\n11 0 0 0\n10.5 1 2.5 0.5\n"),
+            ":4: second pose for timestamp 10.5 (line 2 has 1 2 0.5, this line 1 2.5 0.5): a "
+            "trajectory needs one pose per timestamp");
+  EXPECT_EQ(ErrorFor("spelled", "7.000000 0 0 0\n7 0 0 0.25\n"),  // same time, other text
+            ":2: second pose for timestamp 7 (line 1 has 0 0 0, this line 0 0 0.25): a "
+            "trajectory needs one pose per timestamp");
 }
 
 TEST(TrajectoryTest, AnExactlyRepeatedPoseIsReadOnce) {

@@ -17,7 +17,6 @@
 namespace slamtune::io {
 namespace {
 
-using slamtune::testing::ErrorMessageOf;
 using slamtune::testing::TempFilePath;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
@@ -42,7 +41,7 @@ LaserLog ReadText(const std::string& text, const LogReadOptions& options = {}) {
 
 // The message of the InputError reading `text` as a log throws.
 std::string ReadError(const std::string& text, const LogReadOptions& options = {}) {
-  return ErrorMessageOf([&] { ReadText(text, options); });
+  return slamtune::testing::ErrorMessageOf([&] { ReadText(text, options); });
 }
 
 std::string WriteGzip(const std::string& name, const std::string& text) {

@@ -21,7 +21,6 @@ namespace slamtune::io {
 namespace {
 
 using slamtune::testing::ErrorMessageOf;
-using slamtune::testing::FixturePath;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 using Payload = std::vector<std::uint8_t>;
@@ -36,7 +35,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // tfCase formulas; golden.json there lists the same values.
 
 Payload Golden(const std::string& name) {
-  const std::string path = FixturePath("ros_messages/" + name);
+  const std::string path = slamtune::testing::FixturePath("ros_messages/" + name);
   std::ifstream in(path, std::ios::binary);
   EXPECT_TRUE(in) << "cannot open " << path;
   return Payload(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -14,11 +14,8 @@
 namespace slamtune::io {
 namespace {
 
-using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using namespace testing;  // NOLINT: the recording builders
-using slamtune::testing::ErrorMessageOf;
 
 struct RecordingRead {
   ContainerSummary summary;
@@ -89,9 +86,9 @@ TEST(RosRecordingTest, DetectsEachKindByContentNeverByName) {
   EXPECT_EQ(DetectRecordingKind(dir + "/e.clf"), RecordingKind::kCarmenLog);
   EXPECT_EQ(DetectRecordingKind(dir + "/empty"), RecordingKind::kCarmenLog);
   EXPECT_EQ(DetectRecordingKind(dir + "/f.mcap"), RecordingKind::kCarmenLog);  // gzip: a CARMEN log
-  EXPECT_EQ(ErrorMessageOf([&] { DetectRecordingKind(dir + "/nothing"); }),
+  EXPECT_EQ(slamtune::testing::ErrorMessageOf([&] { DetectRecordingKind(dir + "/nothing"); }),
             dir + "/nothing: cannot open (No such file or directory)");
-  EXPECT_EQ(ErrorMessageOf([&] { DetectRecordingKind(dir); }),
+  EXPECT_EQ(slamtune::testing::ErrorMessageOf([&] { DetectRecordingKind(dir); }),
             dir + ": a folder but not a rosbag2 bag (no metadata.yaml)");
   WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"a.bag"}));
   EXPECT_EQ(DetectRecordingKind(dir), RecordingKind::kRosbag2Folder);
@@ -124,7 +121,7 @@ TEST(RosRecordingTest, ReadsEverySingleFileKindAndRefusesACarmenLog) {
     EXPECT_EQ(read.summary.format, e.format);
     EXPECT_EQ(read.messages.size(), e.messages);
     EXPECT_EQ(read.summary.file_compression, e.file_compression);
-    EXPECT_THAT(read.summary.files, ElementsAre(dir + "/" + e.file));
+    EXPECT_THAT(read.summary.files, ::testing::ElementsAre(dir + "/" + e.file));
   }
   WriteTextFile(dir + "/intel.clf", "ODOM 0 0 0 0 0 0 1.0 host 1.0\n");
   EXPECT_EQ(ReadRecording(dir + "/intel.clf").error,
@@ -137,7 +134,7 @@ TEST(RosRecordingTest, ReadsEverySingleFileKindAndRefusesACarmenLog) {
   cut.resize(cut.size() / 2);
   WriteFile(dir + "/cut.mcap.zstd", cut);
   EXPECT_THAT(ReadRecording(dir + "/cut.mcap.zstd").error,
-              StartsWith(dir + "/cut.mcap.zstd: zstd-compressed file: zstd: "));
+              ::testing::StartsWith(dir + "/cut.mcap.zstd: zstd-compressed file: zstd: "));
 }
 
 TEST(RosRecordingTest, ABagFolderReadsItsSplitsInOrderWithTopicsMergedByName) {
@@ -156,7 +153,7 @@ TEST(RosRecordingTest, ABagFolderReadsItsSplitsInOrderWithTopicsMergedByName) {
   EXPECT_EQ(s.topics[0].messages, 2u);
   EXPECT_EQ(s.topics[1].messages, 2u);
   EXPECT_EQ(s.messages, 4u);
-  EXPECT_THAT(s.files, ElementsAre(dir + "/two_splits_0.mcap", dir + "/two_splits_1.mcap"));
+  EXPECT_THAT(s.files, ::testing::ElementsAre(dir + "/two_splits_0.mcap", dir + "/two_splits_1.mcap"));
   EXPECT_EQ(s.format, ContainerFormat::kMcap);
   EXPECT_TRUE(s.complete);
 }
@@ -211,7 +208,7 @@ TEST(RosRecordingTest, AMissingSplitOrAnUnusableMetadataFileIsNamed) {
   WriteTextFile(dir + "/metadata.yaml", MetadataYaml("mcap", {"missing_split_0.mcap"}, "file", "lz4"));
   EXPECT_EQ(ReadRecording(dir).error, dir + "/metadata.yaml: compression_format \"lz4\" is not supported (only zstd)");
   WriteTextFile(dir + "/metadata.yaml", "rosbag2_bagfile_information: [unclosed\n");
-  EXPECT_THAT(ReadRecording(dir).error, StartsWith(dir + "/metadata.yaml:"));
+  EXPECT_THAT(ReadRecording(dir).error, ::testing::StartsWith(dir + "/metadata.yaml:"));
   WriteTextFile(dir + "/metadata.yaml", "something_else: 1\n");
   EXPECT_EQ(ReadRecording(dir).error, dir + "/metadata.yaml: no rosbag2_bagfile_information map");
 }

@@ -10,8 +10,6 @@
 namespace slamtune::io {
 namespace {
 
-using ::testing::ElementsAre;
-using ::testing::HasSubstr;
 using ::testing::StartsWith;
 using namespace testing;  // NOLINT: the record builders
 
@@ -145,7 +143,7 @@ TEST(Rosbag1ReaderTest, ReadsAFileByPath) {
   WriteFile(path, SmallRos1Bag("lz4"));
   std::vector<Delivered> messages;
   const ContainerSummary summary = ReadContainerFile(ContainerFormat::kRosbag1, path, {}, Collect(&messages));
-  EXPECT_THAT(summary.files, ElementsAre(path));
+  EXPECT_THAT(summary.files, ::testing::ElementsAre(path));
   EXPECT_EQ(summary.format, ContainerFormat::kRosbag1);
   ASSERT_EQ(messages.size(), 3u);
   EXPECT_EQ(messages[0].file, path);
