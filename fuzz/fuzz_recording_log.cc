@@ -67,10 +67,10 @@ io::LaserScanMessage Scan(FuzzInput& in, std::int64_t stamp_ns) {
 io::RecordingContents Contents(FuzzInput& in) {
   io::RecordingContents c;
   c.path = "fuzz.mcap";
-  c.container.complete = in.Bool();
-  if (!c.container.complete && in.Bool()) {
-    c.container.dropped_tail_bytes = in.U16();
-    c.container.dropped_tail_reason = "cut";
+  c.container.data_end.complete = in.Bool();
+  if (!c.container.data_end.complete && in.Bool()) {
+    c.container.data_end.dropped_bytes = in.U16();
+    c.container.data_end.dropped_reason = "cut";
   }
   c.container.topics = {{"/tf", "tf2_msgs/msg/TFMessage", io::MessageSerialization::kCdr, false, 0},
                         {"/tf_static", "tf2_msgs/msg/TFMessage", io::MessageSerialization::kCdr, true, 0}};

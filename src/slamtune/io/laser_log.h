@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "slamtune/common/pose2.h"
+#include "slamtune/io/data_end.h"
 
 namespace slamtune::io {
 
@@ -122,10 +123,7 @@ inline constexpr const char* kBadRangeMaxRule =
 struct RecordingInfo {
   std::string format;  // "MCAP", "rosbag2 SQLite3", "ROS 1 bag v2.0"
   std::vector<std::string> files;
-  bool complete = true;                  // the container's end marker was found
-  std::string ending;                    // how the data ended
-  std::uint64_t dropped_tail_bytes = 0;  // a tail cut off inside a record (or corrupt, --lenient), not read
-  std::string dropped_tail_reason;
+  DataEnd data_end;  // how the container's data ended
   struct Topic {
     std::string name, type;
     std::size_t messages = 0;

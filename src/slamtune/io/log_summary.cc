@@ -145,7 +145,8 @@ std::vector<InputLine> InputLines(const LaserLog& log) {
   const ScanLosses losses = ReadingLosses(log);
   if (log.recording) {
     const RecordingInfo& r = *log.recording;
-    const std::string ending = r.ending.empty() ? (r.complete ? "complete" : "no end marker") : r.ending;
+    const std::string ending =
+        r.data_end.how.empty() ? (r.data_end.complete ? "complete" : "no end marker") : r.data_end.how;
     add(fmt::format("recording: {}, {} file{}; {}", r.format, r.files.size(), r.files.size() == 1 ? "" : "s", ending));
     add(fmt::format("scans: {} ({}), {} messages, {} used", r.scan_topic, r.scan_topic_rule, r.scan_messages,
                     log.scans.size()));

@@ -102,17 +102,17 @@ ScanLosses ReadingLosses(const LaserLog& log, std::optional<KartoLaserRule> rule
   }
 
   ScanLoss& cut = out.Get(ScanLossKind::kCutOff);
-  if (r != nullptr && r->dropped_tail_bytes > 0) {
+  if (r != nullptr && r->data_end.dropped_bytes > 0) {
     cut.count.reset();
-    cut.bytes = r->dropped_tail_bytes;
+    cut.bytes = r->data_end.dropped_bytes;
     cut.why = fmt::format("the scans in the last {} bytes of the recording (how many is not known): {}",
-                          r->dropped_tail_bytes, r->ending);
-  } else if (r != nullptr && !r->complete) {
+                          r->data_end.dropped_bytes, r->data_end.how);
+  } else if (r != nullptr && !r->data_end.complete) {
     cut.count.reset();
     cut.why = fmt::format(
         "whatever was recorded after the file's end: it ends without its end marker ({}), "
         "read up to there",
-        r->ending);
+        r->data_end.how);
   }
 
   ScanLoss& readings = out.Get(ScanLossKind::kWrongReadingCount);

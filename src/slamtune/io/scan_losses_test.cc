@@ -33,13 +33,13 @@ TEST(ScanLosses, EachReadingKindSaysHowManyAndTheFirst) {
   r.tf_bad_rotations = 21;
   r.scans_malformed = 2;
   r.malformed_examples = {"drive.bag: byte 9000: /scan: LaserScan has 6 ranges but its angles give 5 beams"};
-  r.dropped_tail_bytes = 5785;
-  r.dropped_tail_reason = "drive.bag: byte 94215 (Chunk record): content length 42853 runs past the end";
-  r.complete = false;
-  r.ending =
+  r.data_end.dropped_bytes = 5785;
+  r.data_end.dropped_reason = "drive.bag: byte 94215 (Chunk record): content length 42853 runs past the end";
+  r.data_end.complete = false;
+  r.data_end.how =
       "cut off inside a record: read up to its last whole record, the last 5785 bytes (5.8 % of the file) "
       "not read (" +
-      r.dropped_tail_reason + ")";
+      r.data_end.dropped_reason + ")";
   log.beams.slam_karto = {181, 7};
   log.beams.slam_toolbox = {181, 5};
   log.beams.policy = "node";
@@ -73,8 +73,8 @@ TEST(ScanLosses, EachReadingKindSaysHowManyAndTheFirst) {
 // A recording without its end marker: the count is not known, and the line says so.
 TEST(ScanLosses, ARecordingWithoutItsEndMarkerMayHaveLostItsEnd) {
   LaserLog log = RecordingLog();
-  log.recording->complete = false;
-  log.recording->ending = "no data end record: the file ends after a complete record (recording cut off?)";
+  log.recording->data_end.complete = false;
+  log.recording->data_end.how = "no data end record: the file ends after a complete record (recording cut off?)";
   const ScanLosses losses = ReadingLosses(log);
   EXPECT_TRUE(losses.Find(ScanLossKind::kCutOff)->happened());
   EXPECT_THAT(losses.LossLines(), ::testing::ElementsAre(::testing::HasSubstr("it ends without its end marker")));

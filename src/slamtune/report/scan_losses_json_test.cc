@@ -11,8 +11,8 @@ TEST(ScanLossesJson, EveryKindUnderItsNameWithItsCount) {
   log.recording.emplace();
   log.recording->scans_unplaced = 3;
   log.recording->unplaced_examples = {"scan 4 at 1.000000 s: outside its samples"};
-  log.recording->dropped_tail_bytes = 120;
-  log.recording->dropped_tail_reason = "byte 900 (Chunk record): content length 500 runs past the end";
+  log.recording->data_end.dropped_bytes = 120;
+  log.recording->data_end.dropped_reason = "byte 900 (Chunk record): content length 500 runs past the end";
   const nlohmann::json j = ScanLossesJson(io::ReadingLosses(log, io::KartoLaserRule::kSlamKarto));
   std::vector<std::string> names;
   for (const auto& [name, value] : j.items()) names.push_back(name);

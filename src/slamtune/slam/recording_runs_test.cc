@@ -115,7 +115,7 @@ TEST(RecordingSlices, EveryVariantGivesTheFirstScansOfTheDrive) {
     ExpectSameScans(bag, WorldLog(), 120);
   }
   const io::LaserLog cut = io::ReadLaserLog(FixturePath("recordings/office_slice_unindexed.mcap"));
-  EXPECT_FALSE(cut.recording->complete);
+  EXPECT_FALSE(cut.recording->data_end.complete);
 }
 
 }  // namespace

@@ -179,10 +179,10 @@ void CheckRecordingInfo(const LaserLog& log, CheckReport* report) {
                         r.messages_undecodable, r.malformed_examples.empty() ? "-" : r.malformed_examples.front()),
             r.scans_malformed + r.messages_undecodable);
   }
-  if (r.dropped_tail_bytes > 0) {
+  if (r.data_end.dropped_bytes > 0) {
     Problem(report, ProblemKind::kTruncatedRecording,
             fmt::format("the recording ends in a corrupt or truncated part: {} bytes not read ({})",
-                        r.dropped_tail_bytes, r.dropped_tail_reason));
+                        r.data_end.dropped_bytes, r.data_end.dropped_reason));
   }
   for (const std::string& loop : r.tf_loops) {
     Problem(report, ProblemKind::kTfLoop,

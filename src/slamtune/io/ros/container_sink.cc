@@ -46,17 +46,17 @@ void ContainerSink::Deliver(RecordedMessage& message) {
 }
 
 void ContainerSink::DropTail(std::uint64_t bytes, std::uint64_t file_bytes, const std::string& reason, TailKind kind) {
-  summary_->dropped_tail_bytes += bytes;
-  if (summary_->dropped_tail_reason.empty()) summary_->dropped_tail_reason = reason;
-  summary_->complete = false;
+  summary_->data_end.dropped_bytes += bytes;
+  if (summary_->data_end.dropped_reason.empty()) summary_->data_end.dropped_reason = reason;
+  summary_->data_end.complete = false;
   const double share = file_bytes > 0 ? 100.0 * static_cast<double>(bytes) / static_cast<double>(file_bytes) : 0.0;
   if (file_bytes == 0) {  // a database's rows
-    summary_->ending = "a corrupt row: read up to it (--lenient) (" + reason + ")";
+    summary_->data_end.how = "a corrupt row: read up to it (--lenient) (" + reason + ")";
     return;
   }
   const char* what = kind == TailKind::kCutOff ? "cut off inside a record: read up to its last whole record"
                                                : "a corrupt record: read up to it (--lenient)";
-  summary_->ending =
+  summary_->data_end.how =
       fmt::format("{}, the last {} bytes ({:.1f} % of the file) not read ({})", what, bytes, share, reason);
 }
 

@@ -246,14 +246,14 @@ void McapReader::CheckClosingMagic(ByteCursor& cursor) const {
 void McapReader::SetEnding() {
   ContainerSummary& summary = sink_->summary();
   if (data_end_seen_ && footer_seen_) {
-    summary.ending = "data end record and footer";
+    summary.data_end.how = "data end record and footer";
   } else if (data_end_seen_) {
-    summary.ending = "data end record, no footer (the file ends after the summary section)";
+    summary.data_end.how = "data end record, no footer (the file ends after the summary section)";
   } else if (footer_seen_) {
-    summary.ending = "footer without a data end record";
+    summary.data_end.how = "footer without a data end record";
   } else {
-    summary.ending = "no data end record: the file ends after a complete record (recording cut off?)";
-    summary.complete = false;
+    summary.data_end.how = "no data end record: the file ends after a complete record (recording cut off?)";
+    summary.data_end.complete = false;
   }
 }
 

@@ -65,8 +65,8 @@ TEST(McapReaderTest, ReadsChunksOfEachCompressionWithSchemasAndChannelsKeptAcros
     EXPECT_EQ(s.unknown_records, 0u);
     EXPECT_EQ(s.profile, "ros2");
     EXPECT_EQ(s.ros_distro, "jazzy");
-    EXPECT_TRUE(s.complete);
-    EXPECT_EQ(s.ending, "data end record and footer");
+    EXPECT_TRUE(s.data_end.complete);
+    EXPECT_EQ(s.data_end.how, "data end record and footer");
     EXPECT_THAT(s.files, ElementsAre("m.mcap"));
   }
 }
@@ -89,9 +89,10 @@ TEST(McapReaderTest, AFileCutAfterACompleteChunkReadsAsIncomplete) {
   const ContainerRead read = ReadAsMcap(Prefix(full, RecordEnd(full, chunk2)));
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(read.messages.size(), 4u);
-  EXPECT_FALSE(read.summary.complete);
-  EXPECT_EQ(read.summary.ending, "no data end record: the file ends after a complete record (recording cut off?)");
-  EXPECT_EQ(read.summary.dropped_tail_bytes, 0u);
+  EXPECT_FALSE(read.summary.data_end.complete);
+  EXPECT_EQ(read.summary.data_end.how,
+            "no data end record: the file ends after a complete record (recording cut off?)");
+  EXPECT_EQ(read.summary.data_end.dropped_bytes, 0u);
 }
 
 // A file that ends inside a record (a power loss while recording) reads up to its last whole
@@ -104,15 +105,16 @@ TEST(McapReaderTest, AFileCutInsideAChunkReadsUpToItsLastWholeRecord) {
     const ContainerRead read = ReadAsMcap(cut, {.lenient = lenient});
     ASSERT_EQ(read.error, "");
     EXPECT_EQ(read.messages.size(), 2u);  // chunk 1's
-    EXPECT_EQ(read.summary.dropped_tail_bytes, cut.size() - chunk2);
-    EXPECT_THAT(read.summary.dropped_tail_reason, StartsWith("m.mcap: " + Byte(chunk2) + " (Chunk record): content "));
-    EXPECT_FALSE(read.summary.complete);
-    EXPECT_THAT(read.summary.ending, StartsWith(fmt::format("cut off inside a record: read up to its last whole "
-                                                            "record, the last {} bytes (",
-                                                            cut.size() - chunk2)));
+    EXPECT_EQ(read.summary.data_end.dropped_bytes, cut.size() - chunk2);
+    EXPECT_THAT(read.summary.data_end.dropped_reason,
+                StartsWith("m.mcap: " + Byte(chunk2) + " (Chunk record): content "));
+    EXPECT_FALSE(read.summary.data_end.complete);
+    EXPECT_THAT(read.summary.data_end.how, StartsWith(fmt::format("cut off inside a record: read up to its last whole "
+                                                                  "record, the last {} bytes (",
+                                                                  cut.size() - chunk2)));
   }
   // Cut inside the opcode and length of a record: the same.
-  EXPECT_EQ(ReadAsMcap(Prefix(full, chunk2 + 4)).summary.dropped_tail_bytes, 4u);
+  EXPECT_EQ(ReadAsMcap(Prefix(full, chunk2 + 4)).summary.data_end.dropped_bytes, 4u);
 }
 
 // A corrupt record inside the file is an error that says what --lenient does.
@@ -128,7 +130,7 @@ TEST(McapReaderTest, ACorruptRecordIsAnErrorNamingLenient) {
   EXPECT_THAT(strict.error, EndsWith(" (--lenient reads the recording up to this record)"));
   const ContainerRead lenient = ReadAsMcap(bad, {.lenient = true});
   ASSERT_EQ(lenient.error, "");
-  EXPECT_THAT(lenient.summary.ending, StartsWith("a corrupt record: read up to it (--lenient)"));
+  EXPECT_THAT(lenient.summary.data_end.how, StartsWith("a corrupt record: read up to it (--lenient)"));
 }
 
 TEST(McapReaderTest, ABadChunkCrcIsAnErrorUnlessCrcsAreNotVerified) {
@@ -227,7 +229,7 @@ TEST(McapReaderTest, NotMcapAndAHeaderThatIsNotFirstAreErrors) {
             "m.mcap: byte 8 (DataEnd record): the first record is not the Header");
   const ContainerRead magic_only = ReadAsMcap(McapMagic());
   EXPECT_EQ(magic_only.error, "");
-  EXPECT_FALSE(magic_only.summary.complete);
+  EXPECT_FALSE(magic_only.summary.data_end.complete);
 }
 
 TEST(McapReaderTest, ReadsAFileByPathAndNamesAMissingOne) {

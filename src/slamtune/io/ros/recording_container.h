@@ -25,7 +25,7 @@
 // record's length runs past the end) is read up to its last whole record, lenient or not; with
 // ContainerReadOptions::lenient a corrupt record ends the read there too. Either way everything
 // before it is delivered and the summary says what was not read (ContainerSummary::
-// dropped_tail_bytes, ending). Never a crash, whatever the bytes.
+// data_end). Never a crash, whatever the bytes.
 //
 // The readers of ROS recordings sit in io/ros/, this file at their base: they are part of the io
 // library and, like the rest of it, of namespace slamtune::io.
@@ -38,6 +38,8 @@
 #include <span>
 #include <string>
 #include <vector>
+
+#include "slamtune/io/data_end.h"
 
 namespace slamtune::io {
 
@@ -87,14 +89,9 @@ struct ContainerSummary {
   std::string file_compression;                          // rosbag2 per-file compression ("" or "zstd")
   std::size_t skipped_records = 0;                       // records a linear reader skips (indexes, attachments, ...)
   std::size_t unknown_records = 0;                       // records of unknown opcode / op, skipped
-  // How the data ended: "data end record and footer", "no data end record: the file ends after
-  // a complete record (recording cut off?)", "index", "truncated tail dropped (--lenient)", ...
-  std::string ending;
-  bool complete = true;                  // false when the format's end marker is missing
-  std::uint64_t dropped_tail_bytes = 0;  // bytes from the record cut off (or corrupt, lenient) on, not read
-  std::string dropped_tail_reason;       // what was wrong there
-  std::string profile;                   // MCAP header profile ("ros2"), ROS 1: "ros1"
-  std::string ros_distro;                // when the file says (MCAP metadata, db3 schema table)
+  DataEnd data_end;                                      // how the data ended, and the tail not read
+  std::string profile;                                   // MCAP header profile ("ros2"), ROS 1: "ros1"
+  std::string ros_distro;                                // when the file says (MCAP metadata, db3 schema table)
 };
 
 struct ContainerReadOptions {

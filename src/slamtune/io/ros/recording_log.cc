@@ -344,10 +344,7 @@ void DescribeRecording(const RecordingContents& contents, LaserLog* log) {
   const ContainerSummary& c = contents.container;
   info.format = ContainerFormatName(c.format);
   info.files = c.files;
-  info.complete = c.complete;
-  info.ending = c.ending;
-  info.dropped_tail_bytes = c.dropped_tail_bytes;
-  info.dropped_tail_reason = c.dropped_tail_reason;
+  info.data_end = c.data_end;
   info.messages_undecodable = contents.messages_undecodable;
   info.scans_malformed = contents.scans_undecodable;
   for (const std::string& e : contents.undecodable_examples) Example(&info.malformed_examples, e);

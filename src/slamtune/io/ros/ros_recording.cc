@@ -202,13 +202,13 @@ void ReadBagFolderInto(const std::string& folder, const ContainerReadOptions& op
   for (const std::string& path : paths) {
     const RecordingFormat& format = DetectFormat(path);
     if (format.folder_file != nullptr) throw InputError(path, 0, "a folder, not a recording file");
-    const bool complete_before = summary.complete;
-    summary.complete = true;
+    const bool complete_before = summary.data_end.complete;
+    summary.data_end.complete = true;
     ReadInto(format, path, options, sink);
-    if (!summary.complete) incomplete += (incomplete.empty() ? "" : "; ") + path + ": " + summary.ending;
-    summary.complete = summary.complete && complete_before;
+    if (!summary.data_end.complete) incomplete += (incomplete.empty() ? "" : "; ") + path + ": " + summary.data_end.how;
+    summary.data_end.complete = summary.data_end.complete && complete_before;
   }
-  if (!incomplete.empty()) summary.ending = incomplete;
+  if (!incomplete.empty()) summary.data_end.how = incomplete;
 }
 
 }  // namespace

@@ -155,7 +155,7 @@ TEST(RosRecordingTest, ABagFolderReadsItsSplitsInOrderWithTopicsMergedByName) {
   EXPECT_EQ(s.messages, 4u);
   EXPECT_THAT(s.files, ::testing::ElementsAre(dir + "/two_splits_0.mcap", dir + "/two_splits_1.mcap"));
   EXPECT_EQ(s.format, ContainerFormat::kMcap);
-  EXPECT_TRUE(s.complete);
+  EXPECT_TRUE(s.data_end.complete);
 }
 
 TEST(RosRecordingTest, FileCompressedSplitsAreDecompressedWhole) {
@@ -240,10 +240,11 @@ TEST(RosRecordingTest, AnIncompleteSplitMakesTheBagIncompleteAndSaysWhich) {
   const RecordingRead read = ReadRecording(dir);
   ASSERT_EQ(read.error, "");
   EXPECT_EQ(read.messages.size(), 4u);
-  EXPECT_FALSE(read.summary.complete);
-  EXPECT_EQ(read.summary.ending, dir +
-                                     "/incomplete_split_0.mcap: no data end record: the file ends after a complete "
-                                     "record (recording cut off?)");
+  EXPECT_FALSE(read.summary.data_end.complete);
+  EXPECT_EQ(read.summary.data_end.how,
+            dir +
+                "/incomplete_split_0.mcap: no data end record: the file ends after a complete "
+                "record (recording cut off?)");
 }
 
 TEST(RosRecordingTest, AZstdCompressedFileSurvivesEveryTruncationAndRandomCorruption) {

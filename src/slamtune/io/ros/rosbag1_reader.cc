@@ -135,15 +135,15 @@ void Rosbag1Reader::Apply(const std::vector<Item>& items, const ByteCursor& curs
 void Rosbag1Reader::SetEnding() {
   ContainerSummary& summary = sink_->summary();
   if (index_reached_) {
-    summary.ending = "index (connection and chunk info records at index_pos)";
+    summary.data_end.how = "index (connection and chunk info records at index_pos)";
     return;
   }
-  summary.complete = false;
-  summary.ending = index_pos_ == 0
-                       ? "no index (the bag header's index_pos is 0): the file ends after a complete record "
-                         "(recording cut off?)"
-                       : "no index at index_pos " + std::to_string(index_pos_) +
-                             ": the file ends after a complete record (recording cut off?)";
+  summary.data_end.complete = false;
+  summary.data_end.how = index_pos_ == 0
+                             ? "no index (the bag header's index_pos is 0): the file ends after a complete record "
+                               "(recording cut off?)"
+                             : "no index at index_pos " + std::to_string(index_pos_) +
+                                   ": the file ends after a complete record (recording cut off?)";
 }
 
 }  // namespace

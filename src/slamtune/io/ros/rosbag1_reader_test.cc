@@ -53,8 +53,8 @@ TEST(Rosbag1ReaderTest, ReadsChunksOfEachCompressionAndIgnoresTheIndexsRepeatedC
     EXPECT_EQ(s.chunk_compression.at(compression), 2u);
     EXPECT_EQ(s.skipped_records, 5u);  // 3 index data, 2 chunk info
     EXPECT_EQ(s.unknown_records, 0u);
-    EXPECT_TRUE(s.complete);
-    EXPECT_THAT(s.ending, StartsWith("index"));
+    EXPECT_TRUE(s.data_end.complete);
+    EXPECT_THAT(s.data_end.how, StartsWith("index"));
     EXPECT_EQ(s.profile, "ros1");
   }
 }
@@ -63,8 +63,8 @@ TEST(Rosbag1ReaderTest, AnUnindexedBagOrOneCutBeforeItsIndexReadsAsIncomplete) {
   const ContainerRead unindexed = ReadAsBag(SmallRos1Bag("lz4", /*indexed=*/false));
   ASSERT_EQ(unindexed.error, "");
   EXPECT_EQ(unindexed.messages.size(), 3u);
-  EXPECT_FALSE(unindexed.summary.complete);
-  EXPECT_EQ(unindexed.summary.ending,
+  EXPECT_FALSE(unindexed.summary.data_end.complete);
+  EXPECT_EQ(unindexed.summary.data_end.how,
             "no index (the bag header's index_pos is 0): the file ends after a complete "
             "record (recording cut off?)");
   const Bytes indexed = SmallRos1Bag("none");
@@ -74,9 +74,9 @@ TEST(Rosbag1ReaderTest, AnUnindexedBagOrOneCutBeforeItsIndexReadsAsIncomplete) {
   const Bytes cut(indexed.begin(), indexed.end() - static_cast<std::ptrdiff_t>(index_size));
   const ContainerRead before_index = ReadAsBag(cut);
   ASSERT_EQ(before_index.error, "");
-  EXPECT_FALSE(before_index.summary.complete);
-  EXPECT_EQ(before_index.summary.ending, "no index at index_pos " + std::to_string(cut.size()) +
-                                             ": the file ends after a complete record (recording cut off?)");
+  EXPECT_FALSE(before_index.summary.data_end.complete);
+  EXPECT_EQ(before_index.summary.data_end.how, "no index at index_pos " + std::to_string(cut.size()) +
+                                                   ": the file ends after a complete record (recording cut off?)");
 }
 
 // A bag that ends inside a record (a power loss while recording) reads up to its last whole
@@ -90,9 +90,9 @@ TEST(Rosbag1ReaderTest, ABagCutInsideAChunkReadsUpToItsLastWholeRecord) {
       const ContainerRead read = ReadAsBag(cut, {.lenient = lenient});
       ASSERT_EQ(read.error, "");
       EXPECT_EQ(read.messages.size(), 2u);
-      EXPECT_EQ(read.summary.dropped_tail_bytes, kept);
-      EXPECT_FALSE(read.summary.complete);
-      EXPECT_THAT(read.summary.ending, StartsWith("cut off inside a record: read up to its last whole record"));
+      EXPECT_EQ(read.summary.data_end.dropped_bytes, kept);
+      EXPECT_FALSE(read.summary.data_end.complete);
+      EXPECT_THAT(read.summary.data_end.how, StartsWith("cut off inside a record: read up to its last whole record"));
     }
   }
 }

@@ -222,7 +222,7 @@ void SqliteBagReader::ReadMessages() {
     sink_->DropTail(0, 0, e.what(), ContainerSink::TailKind::kCorrupt);
     return;
   }
-  summary.ending = "end of the messages table";
+  summary.data_end.how = "end of the messages table";
 }
 
 void ReadDatabase(sqlite3* db, const std::string& name, const ContainerReadOptions& options, ContainerSink* sink) {

@@ -13,7 +13,7 @@
 // is not a database, a corrupt one (SQLITE_NOTADB, SQLITE_CORRUPT, ...) or a database without the
 // rosbag2 tables throws InputError "FILE: ..." naming the SQLite error or the missing table, a
 // message on an unknown topic id "FILE: row N: ...". Lenient reading ends at a corrupt row
-// (ContainerSummary::dropped_tail_bytes stays 0: a database has rows, not a byte tail).
+// (ContainerSummary::data_end.dropped_bytes stays 0: a database has rows, not a byte tail).
 #pragma once
 
 #include <cstdint>

@@ -99,8 +99,8 @@ TEST(Rosbag2SqliteReaderTest, ReadsEachSchemaVariantInTimestampThenIdOrder) {
     EXPECT_EQ(s.topics[1].latched, variant.latched);
     EXPECT_EQ(s.ros_distro, variant.distro);
     EXPECT_EQ(s.messages, 4u);
-    EXPECT_TRUE(s.complete);
-    EXPECT_EQ(s.ending, "end of the messages table");
+    EXPECT_TRUE(s.data_end.complete);
+    EXPECT_EQ(s.data_end.how, "end of the messages table");
     EXPECT_THAT(s.files, ElementsAre(path));
   }
 }
@@ -146,8 +146,8 @@ TEST(Rosbag2SqliteReaderTest, AMessageOnAnUnknownTopicIdNamesItsRow) {
   const ContainerRead lenient = ReadDb(path, {.lenient = true});
   ASSERT_EQ(lenient.error, "");
   EXPECT_EQ(lenient.messages.size(), 3u);  // up to timestamp 200
-  EXPECT_FALSE(lenient.summary.complete);
-  EXPECT_THAT(lenient.summary.dropped_tail_reason, HasSubstr("row 5"));
+  EXPECT_FALSE(lenient.summary.data_end.complete);
+  EXPECT_THAT(lenient.summary.data_end.dropped_reason, HasSubstr("row 5"));
 }
 
 TEST(Rosbag2SqliteReaderTest, OtherSerializationFormatsAreMarkedInTheType) {
