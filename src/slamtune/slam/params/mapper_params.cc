@@ -186,21 +186,19 @@ const ParamInfo* FindParam(std::string_view name) {
 }
 
 ScanMatcherOptions MapperParams::SequentialMatcherOptions(double range_threshold) const {
-  ScanMatcherOptions o;
-  o.search_dimension = correlation_search_space_dimension;
-  o.search_resolution = correlation_search_space_resolution;
-  o.smear_deviation = correlation_search_space_smear_deviation;
-  o.range_threshold = range_threshold;
-  o.coarse_angle_offset = coarse_search_angle_offset;
-  o.coarse_angle_resolution = coarse_angle_resolution;
-  o.fine_angle_step = fine_search_angle_offset;
-  o.distance_variance_penalty = DistanceVariancePenaltyInternal();
-  o.angle_variance_penalty = AngleVariancePenaltyInternal();
-  o.minimum_distance_penalty = minimum_distance_penalty;
-  o.minimum_angle_penalty = minimum_angle_penalty;
-  o.use_response_expansion = use_response_expansion;
-  o.threads = matcher_threads;
-  return o;
+  return {.search_dimension = correlation_search_space_dimension,
+          .search_resolution = correlation_search_space_resolution,
+          .smear_deviation = correlation_search_space_smear_deviation,
+          .range_threshold = range_threshold,
+          .coarse_angle_offset = coarse_search_angle_offset,
+          .coarse_angle_resolution = coarse_angle_resolution,
+          .fine_angle_step = fine_search_angle_offset,
+          .distance_variance_penalty = DistanceVariancePenaltyInternal(),
+          .angle_variance_penalty = AngleVariancePenaltyInternal(),
+          .minimum_distance_penalty = minimum_distance_penalty,
+          .minimum_angle_penalty = minimum_angle_penalty,
+          .use_response_expansion = use_response_expansion,
+          .threads = matcher_threads};
 }
 
 ScanMatcherOptions MapperParams::LoopMatcherOptions(double range_threshold) const {
@@ -212,11 +210,9 @@ ScanMatcherOptions MapperParams::LoopMatcherOptions(double range_threshold) cons
 }
 
 OccupancyGridOptions GridOptionsOf(const MapperParams& params) {
-  OccupancyGridOptions grid;
-  grid.resolution = params.resolution;
-  grid.min_pass_through = params.min_pass_through;
-  grid.occupancy_threshold = params.occupancy_threshold;
-  return grid;
+  return {.resolution = params.resolution,
+          .min_pass_through = params.min_pass_through,
+          .occupancy_threshold = params.occupancy_threshold};
 }
 
 // §9.2 and §2.1: slam_karto never sets the threshold, so Karto's 12 m is clipped into the
