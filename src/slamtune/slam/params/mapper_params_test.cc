@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "slamtune/common/error.h"
 #include "slamtune/common/testing/error_message.h"
@@ -18,19 +19,21 @@ using ::testing::ThrowsMessage;
 
 TEST(MapperParams, DefaultsAreSlamKartoYaml) {
   const MapperParams p;
-  EXPECT_EQ(p.loop_search_maximum_distance, 4.0);
-  EXPECT_EQ(p.loop_match_minimum_chain_size, 10);
-  EXPECT_EQ(p.loop_match_minimum_response_coarse, 0.8);
-  EXPECT_EQ(p.loop_match_maximum_variance_coarse, 0.4);
+  // A few rows of slam_karto's YAML (§9.1), by ROS name.
+  const std::pair<const char*, double> yaml[] = {{"loop_search_maximum_distance", 4.0},
+                                                 {"loop_match_minimum_chain_size", 10},
+                                                 {"loop_match_minimum_response_coarse", 0.8},
+                                                 {"loop_match_maximum_variance_coarse", 0.4},
+                                                 {"minimum_travel_distance", 0.2},
+                                                 {"scan_buffer_size", 70},
+                                                 {"link_scan_maximum_distance", 10.0},
+                                                 {"resolution", 0.05},
+                                                 {"min_pass_through", 2},
+                                                 {"occupancy_threshold", 0.1}};
+  for (const auto& [name, value] : yaml) EXPECT_EQ(GetNumeric(p, name), value) << name;
   EXPECT_DOUBLE_EQ(p.LoopMatchMaximumVarianceCoarseInternal(), 0.16);
   EXPECT_DOUBLE_EQ(p.DistanceVariancePenaltyInternal(), 0.09);
   EXPECT_NEAR(p.AngleVariancePenaltyInternal(), 0.121801, 1e-9);
-  EXPECT_EQ(p.minimum_travel_distance, 0.2);
-  EXPECT_EQ(p.scan_buffer_size, 70);
-  EXPECT_EQ(p.link_scan_maximum_distance, 10.0);
-  EXPECT_EQ(p.resolution, 0.05);
-  EXPECT_EQ(p.min_pass_through, 2);
-  EXPECT_EQ(p.occupancy_threshold, 0.1);
   EXPECT_EQ(p.solver, SolverKind::kSpa);
   EXPECT_NO_THROW(p.Validate());
 }
